@@ -1,0 +1,56 @@
+#pragma once
+// A cubic multigraph in flat arrays: the foundation every matching algorithm works on.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace petersen {
+
+using NodeId = std::uint32_t;
+using EdgeId = std::uint32_t;
+inline constexpr NodeId kNoNode = 0xFFFFFFFFu;
+inline constexpr EdgeId kNoEdge = 0xFFFFFFFFu;
+
+/// Raised when a graph is not what an algorithm needs; the message names the node or edge.
+struct GraphError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// A cubic multigraph: nodes 0..n-1, edges 0..3n/2-1, parallel edges allowed, no loops.
+/// Endpoints of edge e are at edge_ends[2e], edge_ends[2e+1]; the three edges of node v are at
+/// node_edges[3v..3v+2], in the order the edge list named them. Construction is O(n).
+class CubicGraph {
+ public:
+  CubicGraph() = default;
+
+  /// Builds the graph from an edge list; throws GraphError naming the first node whose degree is
+  /// not 3, the first loop, or the first endpoint out of range. Does not test connectivity or
+  /// bridges (see validate_connected_bridgeless).
+  static CubicGraph from_edges(std::uint32_t node_count,
+                               std::span<const std::array<NodeId, 2>> edges);
+
+  std::uint32_t node_count() const { return static_cast<std::uint32_t>(node_edges_.size() / 3); }
+  std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends_.size() / 2); }
+
+  std::array<NodeId, 2> endpoints(EdgeId e) const { return {edge_ends_[2 * e], edge_ends_[2 * e + 1]}; }
+  /// The endpoint of e that is not v (v must be an endpoint of e).
+  NodeId other_end(EdgeId e, NodeId v) const { return edge_ends_[2 * e] ^ edge_ends_[2 * e + 1] ^ v; }
+  /// The three edges at v; a parallel edge appears once per copy.
+  std::span<const EdgeId, 3> incident_edges(NodeId v) const {
+    return std::span<const EdgeId, 3>(node_edges_.data() + 3 * std::size_t{v}, 3);
+  }
+  EdgeId incident_edge(NodeId v, int k) const { return node_edges_[3 * std::size_t{v} + k]; }
+
+  std::span<const NodeId> edge_ends() const { return edge_ends_; }
+  std::span<const EdgeId> node_edges() const { return node_edges_; }
+
+ private:
+  std::vector<NodeId> edge_ends_;
+  std::vector<EdgeId> node_edges_;
+};
+
+}  // namespace petersen

@@ -1,0 +1,45 @@
+#pragma once
+// A matching of a cubic graph, and the verifier every algorithm's answer goes through.
+
+#include <string>
+
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+/// The matched edge of each node, or kNoEdge. Both ends of a matched edge name it.
+struct Matching {
+  std::vector<EdgeId> mate_edge;
+
+  Matching() = default;
+  explicit Matching(std::uint32_t node_count) : mate_edge(node_count, kNoEdge) {}
+
+  bool is_matched(NodeId v) const { return mate_edge[v] != kNoEdge; }
+  /// Matches edge e = {a, b}; both ends must be free.
+  void match(const CubicGraph& graph, EdgeId e) {
+    auto [a, b] = graph.endpoints(e);
+    mate_edge[a] = mate_edge[b] = e;
+  }
+  std::uint32_t unmatched_count() const;
+};
+
+/// What the verifier found; `ok` is true exactly when the matching is perfect and consistent.
+struct MatchingCheck {
+  enum class Problem { none, wrong_size, edge_out_of_range, not_incident, inconsistent, unmatched };
+  Problem problem = Problem::none;
+  NodeId node = kNoNode;
+  EdgeId edge = kNoEdge;
+  std::string message;
+  bool ok() const { return problem == Problem::none; }
+};
+
+/// Checks that `matching` is a perfect matching of `graph`: every node names an incident edge in
+/// range whose other end names the same edge. Reports the first problem with its node and edge.
+/// O(n).
+MatchingCheck verify_perfect_matching(const CubicGraph& graph, const Matching& matching);
+
+/// Like verify_perfect_matching but unmatched nodes are allowed (a valid, possibly partial,
+/// matching). O(n).
+MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching);
+
+}  // namespace petersen

@@ -1,0 +1,21 @@
+#pragma once
+// LEMON's maximum matching behind a plain interface. Debian's LEMON 1.3.1 headers do not compile
+// as C++20, so this target alone is built as C++17 and no LEMON type crosses this header.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace petersen::lemon_adapter {
+
+inline constexpr std::uint32_t kUnmatched = 0xFFFFFFFFu;
+
+/// (The interface is C++17: no std::span.)
+/// Maximum-cardinality matching of a general (multi)graph by LEMON's MaxMatching (Edmonds,
+/// O(nm log n)). Returns, for each node, the index in `edges` of its matched edge or kUnmatched.
+/// `greedy_start` runs LEMON's greedyInit() first, as MaxMatching::run() does.
+std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
+                                            const std::vector<std::array<std::uint32_t, 2>>& edges,
+                                            bool greedy_start = true);
+
+}  // namespace petersen::lemon_adapter

@@ -1,0 +1,34 @@
+#include "petersen/lemon_adapter/lemon_matching.hpp"
+
+#include <lemon/matching.h>
+#include <lemon/smart_graph.h>
+
+namespace petersen::lemon_adapter {
+
+std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
+                                            const std::vector<std::array<std::uint32_t, 2>>& edges,
+                                            bool greedy_start) {
+  lemon::SmartGraph graph;
+  graph.reserveNode(static_cast<int>(node_count));
+  graph.reserveEdge(static_cast<int>(edges.size()));
+  for (std::uint32_t v = 0; v < node_count; ++v) graph.addNode();
+  // SmartGraph numbers nodes and edges in insertion order, so ids are our indices.
+  for (auto [a, b] : edges) {
+    graph.addEdge(graph.nodeFromId(static_cast<int>(a)), graph.nodeFromId(static_cast<int>(b)));
+  }
+  lemon::MaxMatching<lemon::SmartGraph> matcher(graph);
+  if (greedy_start) {
+    matcher.greedyInit();
+  } else {
+    matcher.init();
+  }
+  matcher.startSparse();
+  std::vector<std::uint32_t> mate_edge(node_count, kUnmatched);
+  for (std::uint32_t v = 0; v < node_count; ++v) {
+    auto arc = matcher.matching(graph.nodeFromId(static_cast<int>(v)));
+    if (arc != lemon::INVALID) mate_edge[v] = static_cast<std::uint32_t>(graph.id(lemon::SmartGraph::Edge(arc)));
+  }
+  return mate_edge;
+}
+
+}  // namespace petersen::lemon_adapter

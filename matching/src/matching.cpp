@@ -1,0 +1,66 @@
+#include "petersen/matching/matching.hpp"
+
+#include <algorithm>
+
+namespace petersen {
+
+std::uint32_t Matching::unmatched_count() const {
+  return static_cast<std::uint32_t>(std::count(mate_edge.begin(), mate_edge.end(), kNoEdge));
+}
+
+namespace {
+
+MatchingCheck check(const CubicGraph& graph, const Matching& matching, bool require_perfect) {
+  using Problem = MatchingCheck::Problem;
+  auto fail = [](Problem p, NodeId v, EdgeId e, std::string message) {
+    return MatchingCheck{p, v, e, std::move(message)};
+  };
+  const std::uint32_t n = graph.node_count();
+  if (matching.mate_edge.size() != n) {
+    return fail(Problem::wrong_size, kNoNode, kNoEdge,
+                "matching has " + std::to_string(matching.mate_edge.size()) + " entries for " +
+                    std::to_string(n) + " nodes");
+  }
+  for (NodeId v = 0; v < n; ++v) {
+    EdgeId e = matching.mate_edge[v];
+    if (e == kNoEdge) {
+      if (require_perfect) {
+        return fail(Problem::unmatched, v, e, "node " + std::to_string(v) + " is unmatched");
+      }
+      continue;
+    }
+    if (e >= graph.edge_count()) {
+      return fail(Problem::edge_out_of_range, v, e,
+                  "node " + std::to_string(v) + " names edge " + std::to_string(e) +
+                      ", out of range (" + std::to_string(graph.edge_count()) + " edges)");
+    }
+    auto [a, b] = graph.endpoints(e);
+    if (a != v && b != v) {
+      return fail(Problem::not_incident, v, e,
+                  "node " + std::to_string(v) + " names edge " + std::to_string(e) +
+                      ", which joins " + std::to_string(a) + " and " + std::to_string(b));
+    }
+    NodeId w = graph.other_end(e, v);
+    if (matching.mate_edge[w] != e) {
+      return fail(Problem::inconsistent, v, e,
+                  "node " + std::to_string(v) + " is matched by edge " + std::to_string(e) +
+                      " but its other end " + std::to_string(w) + " names edge " +
+                      (matching.mate_edge[w] == kNoEdge ? std::string("none")
+                                                        : std::to_string(matching.mate_edge[w])) +
+                      " (matched twice or not at all)");
+    }
+  }
+  return {};
+}
+
+}  // namespace
+
+MatchingCheck verify_perfect_matching(const CubicGraph& graph, const Matching& matching) {
+  return check(graph, matching, true);
+}
+
+MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching) {
+  return check(graph, matching, false);
+}
+
+}  // namespace petersen

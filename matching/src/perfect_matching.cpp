@@ -1,0 +1,74 @@
+#include "petersen/matching/perfect_matching.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "petersen/graph/connectivity.hpp"
+#include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "stopwatch.hpp"
+
+namespace petersen {
+
+namespace {
+
+constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
+    {Algorithm::sg, "sg"}, {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
+    {Algorithm::gw, "gw"}, {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
+};
+constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {
+    {Augment::local, "local"}, {Augment::faithful, "faithful"}};
+
+// LEMON's MaxMatching on a copy of the graph: a one-step algorithm, so all of it is "initial".
+void match_with_lemon(const CubicGraph& graph, Result& result) {
+  Stopwatch clock;
+  std::vector<std::array<std::uint32_t, 2>> edges(graph.edge_count());
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
+  result.matching.mate_edge = lemon_adapter::maximum_matching(graph.node_count(), edges);
+  result.stats.initial_seconds = clock.seconds();
+}
+
+}  // namespace
+
+std::string_view to_string(Algorithm algorithm) {
+  for (auto [a, name] : kAlgorithmNames)
+    if (a == algorithm) return name;
+  return "?";
+}
+
+std::optional<Algorithm> parse_algorithm(std::string_view name) {
+  for (auto [a, n] : kAlgorithmNames)
+    if (n == name) return a;
+  return std::nullopt;
+}
+
+std::string_view to_string(Augment augment) {
+  for (auto [a, name] : kAugmentNames)
+    if (a == augment) return name;
+  return "?";
+}
+
+std::optional<Augment> parse_augment(std::string_view name) {
+  for (auto [a, n] : kAugmentNames)
+    if (n == name) return a;
+  return std::nullopt;
+}
+
+Result perfect_matching(const CubicGraph& graph, const Options& options) {
+  Result result{Matching(graph.node_count()), {}};
+  if (options.validate) {
+    Stopwatch clock;
+    validate_bridgeless(graph);
+    result.stats.validate_seconds = clock.seconds();
+  }
+  switch (options.algorithm) {
+    case Algorithm::lemon:
+      match_with_lemon(graph, result);
+      break;
+    default:
+      throw std::invalid_argument("algorithm '" + std::string(to_string(options.algorithm)) +
+                                  "' is not built yet");
+  }
+  return result;
+}
+
+}  // namespace petersen

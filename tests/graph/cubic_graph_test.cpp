@@ -1,0 +1,58 @@
+#include "petersen/graph/cubic_graph.hpp"
+
+#include <gtest/gtest.h>
+
+namespace petersen {
+namespace {
+
+using EdgeList = std::vector<std::array<NodeId, 2>>;
+
+TEST(CubicGraph, BuildsThetaWithParallelEdges) {
+  EdgeList edges = {{0, 1}, {0, 1}, {1, 0}};
+  CubicGraph g = CubicGraph::from_edges(2, edges);
+  EXPECT_EQ(g.node_count(), 2u);
+  EXPECT_EQ(g.edge_count(), 3u);
+  for (EdgeId e = 0; e < 3; ++e) {
+    EXPECT_EQ(g.other_end(e, 0), 1u);
+    EXPECT_EQ(g.other_end(e, 1), 0u);
+  }
+  EXPECT_EQ(g.incident_edge(1, 2), 2u);
+}
+
+TEST(CubicGraph, IncidentEdgesKeepEdgeListOrder) {
+  EdgeList edges = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+  CubicGraph g = CubicGraph::from_edges(4, edges);
+  auto at0 = g.incident_edges(0);
+  EXPECT_EQ((std::vector<EdgeId>(at0.begin(), at0.end())), (std::vector<EdgeId>{0, 1, 2}));
+  EXPECT_EQ(g.endpoints(5), (std::array<NodeId, 2>{2, 3}));
+}
+
+TEST(CubicGraph, RejectsLoopNamingTheEdge) {
+  EdgeList edges = {{0, 1}, {0, 1}, {0, 0}};
+  try {
+    CubicGraph::from_edges(2, edges);
+    FAIL() << "a loop was accepted";
+  } catch (const GraphError& e) {
+    EXPECT_NE(std::string(e.what()).find("edge 2 is a loop"), std::string::npos) << e.what();
+  }
+}
+
+TEST(CubicGraph, RejectsWrongDegreeNamingTheNode) {
+  EdgeList edges = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}};
+  try {
+    CubicGraph::from_edges(4, edges);
+    FAIL() << "a non-cubic graph was accepted";
+  } catch (const GraphError& e) {
+    EXPECT_NE(std::string(e.what()).find("node 2 has degree 2"), std::string::npos) << e.what();
+  }
+  EdgeList too_many = {{0, 1}, {0, 1}, {0, 1}, {0, 1}};
+  EXPECT_THROW(CubicGraph::from_edges(2, too_many), GraphError);
+}
+
+TEST(CubicGraph, RejectsEndpointOutOfRange) {
+  EdgeList edges = {{0, 1}, {0, 1}, {0, 7}};
+  EXPECT_THROW(CubicGraph::from_edges(2, edges), GraphError);
+}
+
+}  // namespace
+}  // namespace petersen

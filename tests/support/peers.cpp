@@ -1,0 +1,28 @@
+#include "peers.hpp"
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+
+#include "petersen/lemon_adapter/lemon_matching.hpp"
+
+namespace petersen::testing {
+
+std::uint32_t boost_matching_size(std::uint32_t node_count,
+                                  std::span<const std::array<std::uint32_t, 2>> edges) {
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  Graph graph(node_count);
+  for (auto [a, b] : edges) boost::add_edge(a, b, graph);
+  std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(node_count);
+  boost::edmonds_maximum_cardinality_matching(graph, &mate[0]);
+  return static_cast<std::uint32_t>(boost::matching_size(graph, &mate[0]));
+}
+
+std::uint32_t lemon_matching_size(std::uint32_t node_count,
+                                  std::span<const std::array<std::uint32_t, 2>> edges) {
+  std::uint32_t matched = 0;
+  for (std::uint32_t e : lemon_adapter::maximum_matching(node_count, {edges.begin(), edges.end()}))
+    matched += e != lemon_adapter::kUnmatched;
+  return matched / 2;
+}
+
+}  // namespace petersen::testing
