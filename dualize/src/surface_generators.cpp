@@ -77,9 +77,8 @@ TriangleMesh voxel_plate(const PlateSpec& spec) {
   return mesh;
 }
 
-TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
-                                   std::uint64_t seed) {
-  TriangleMesh mesh = voxel_plate({genus, genus == 0 ? 0u : 1u, 1, false});
+TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
+                                     std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   auto& tris = mesh.triangles;
   for (std::uint32_t k = 0; k < splits; ++k) {
@@ -135,6 +134,12 @@ TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, st
     ++degree[z];
   }
   return mesh;
+}
+
+TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
+                                   std::uint64_t seed) {
+  return randomize_triangulation(voxel_plate({genus, genus == 0 ? 0u : 1u, 1, false}), splits,
+                                 flips, seed);
 }
 
 }  // namespace petersen

@@ -18,6 +18,12 @@ struct PlateSpec {
 };
 TriangleMesh voxel_plate(const PlateSpec& spec);
 
+/// Makes a closed triangulation irregular: `splits` random 1-to-3 triangle splits (new vertex at
+/// the centroid), then about `flips` random edge flips that keep it simplicial (a flip is skipped
+/// when the new edge exists already or an end would drop to degree 2). Genus is unchanged.
+TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
+                                     std::uint64_t seed);
+
 /// An irregular closed triangulation of genus `genus`: a thin plate with `genus` holes (a cube for
 /// genus 0), then `splits` random 1-to-3 triangle splits, then about `flips` random edge flips
 /// that keep it a simplicial triangulation. Positions of new vertices are triangle centroids.

@@ -1,0 +1,45 @@
+#pragma once
+// The dual graph of a closed triangle mesh: one node per triangle, one edge per mesh edge.
+
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+/// A halfedge is edge k of triangle t, numbered 3t + k; it runs from corner k to corner (k+1)%3.
+using HalfedgeId = std::uint32_t;
+
+/// The dual graph together with its correspondence to the mesh edges.
+///
+/// Why the correspondence is stored rather than implied by `graph.incident_edge(t, k)`:
+/// CubicGraph::from_edges orders a node's edges by edge id, and no single edge numbering puts
+/// every triangle's three dual edges in the order of its three edges (three triangles around a
+/// vertex of degree 3, each starting at that vertex, already form a cycle of constraints). So
+/// `across` gives the dual edge of each halfedge and `sides` the two halfedges of each dual edge.
+struct Dual {
+  CubicGraph graph;
+  /// across[3t + k]: the dual edge crossing edge k of triangle t.
+  std::vector<EdgeId> across;
+  /// sides[2e], sides[2e + 1]: the halfedges dual edge e crosses, the first in triangle
+  /// graph.endpoints(e)[0], the second in graph.endpoints(e)[1]. They run in opposite directions.
+  std::vector<HalfedgeId> sides;
+
+  EdgeId dual_edge(FaceId t, int k) const { return across[3 * std::size_t{t} + k]; }
+};
+
+/// Builds the dual of a closed, edge-manifold, consistently oriented triangle mesh: triangle i is
+/// node i; dual edges are numbered in order of their first halfedge 3t + k, so they follow the
+/// triangle order. Pinched vertices and several components are allowed (the dual stays cubic; it
+/// is then disconnected). Throws MeshError naming the triangle or edge (a, b) when a corner is out
+/// of range, a triangle repeats a corner, an edge has one triangle (boundary) or more than two,
+/// or its two triangles run along it in the same direction (inconsistent orientation).
+/// O(F log d) for maximum vertex degree d, no hashing: directed edges are bucketed by their
+/// smaller vertex and each bucket is sorted by the larger one.
+Dual build_dual(const TriangleMesh& mesh);
+
+/// The dual graph alone (see build_dual for the numbering and the errors).
+CubicGraph dual_graph(const TriangleMesh& mesh);
+
+}  // namespace petersen

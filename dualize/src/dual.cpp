@@ -1,0 +1,119 @@
+#include "petersen/dualize/dual.hpp"
+
+#include <algorithm>
+#include <string>
+
+namespace petersen {
+
+namespace {
+
+std::string edge_name(VertexId a, VertexId b) {
+  return "edge (" + std::to_string(a) + ", " + std::to_string(b) + ")";
+}
+
+void check_corners(const TriangleMesh& mesh) {
+  const std::size_t vertex_count = mesh.positions.size();
+  // 3F halfedges and 3F/2 dual edges must fit in 32-bit ids.
+  if (mesh.triangles.size() > 0x55555555u) {
+    throw MeshError("mesh has " + std::to_string(mesh.triangles.size()) +
+                    " triangles; at most 1431655765 are supported");
+  }
+  for (FaceId t = 0; t < mesh.triangles.size(); ++t) {
+    const auto& tri = mesh.triangles[t];
+    for (VertexId v : tri) {
+      if (v >= vertex_count) {
+        throw MeshError("triangle " + std::to_string(t) + " has corner " + std::to_string(v) +
+                        " out of range (" + std::to_string(vertex_count) + " vertices)");
+      }
+    }
+    if (tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0]) {
+      throw MeshError("triangle " + std::to_string(t) + " is degenerate (corners " +
+                      std::to_string(tri[0]) + ", " + std::to_string(tri[1]) + ", " +
+                      std::to_string(tri[2]) + ")");
+    }
+  }
+}
+
+}  // namespace
+
+Dual build_dual(const TriangleMesh& mesh) {
+  check_corners(mesh);
+  const auto& tris = mesh.triangles;
+  const std::uint32_t face_count = static_cast<std::uint32_t>(tris.size());
+  const std::uint32_t halfedge_count = 3 * face_count;
+  auto from = [&](HalfedgeId h) { return tris[h / 3][h % 3]; };
+  auto to = [&](HalfedgeId h) { return tris[h / 3][(h % 3 + 1) % 3]; };
+
+  // CSR of halfedges bucketed by their smaller vertex: a halfedge and its twin share a bucket.
+  const std::size_t vertex_count = mesh.positions.size();
+  std::vector<std::uint32_t> start(vertex_count + 1, 0);
+  for (HalfedgeId h = 0; h < halfedge_count; ++h) ++start[std::min(from(h), to(h)) + 1];
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  // Each entry packs (larger vertex, halfedge) so one integer sort groups the copies of an edge.
+  std::vector<std::uint64_t> bucket(halfedge_count);
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (HalfedgeId h = 0; h < halfedge_count; ++h) {
+      const VertexId a = from(h), b = to(h);
+      bucket[fill[std::min(a, b)]++] = (std::uint64_t{std::max(a, b)} << 32) | h;
+    }
+  }
+
+  std::vector<HalfedgeId> twin(halfedge_count);
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
+    std::sort(first, last);
+    for (auto group = first; group != last;) {
+      auto end = group + 1;
+      while (end != last && (*end >> 32) == (*group >> 32)) ++end;
+      const HalfedgeId h1 = static_cast<HalfedgeId>(*group);
+      const VertexId a = from(h1), b = to(h1);
+      const FaceId t1 = h1 / 3;
+      if (end - group == 1) {
+        throw MeshError("boundary " + edge_name(a, b) + ": only triangle " + std::to_string(t1) +
+                        " has it");
+      }
+      if (end - group > 2) {
+        throw MeshError("non-manifold " + edge_name(a, b) + ": in " + std::to_string(end - group) +
+                        " triangles (" + std::to_string(t1) + ", " +
+                        std::to_string(static_cast<HalfedgeId>(group[1]) / 3) + ", " +
+                        std::to_string(static_cast<HalfedgeId>(group[2]) / 3) +
+                        (end - group > 3 ? ", ...)" : ")"));
+      }
+      const HalfedgeId h2 = static_cast<HalfedgeId>(group[1]);
+      if (from(h2) == a) {
+        throw MeshError("inconsistent orientation at " + edge_name(a, b) + ": triangles " +
+                        std::to_string(t1) + " and " + std::to_string(h2 / 3) + " both run from " +
+                        std::to_string(a) + " to " + std::to_string(b));
+      }
+      twin[h1] = h2;
+      twin[h2] = h1;
+      group = end;
+    }
+  }
+  bucket = {};
+
+  Dual dual;
+  dual.across.resize(halfedge_count);
+  dual.sides.reserve(halfedge_count);
+  std::vector<std::array<NodeId, 2>> edges;
+  edges.reserve(halfedge_count / 2);
+  for (HalfedgeId h = 0; h < halfedge_count; ++h) {
+    if (twin[h] < h) continue;
+    const EdgeId e = static_cast<EdgeId>(edges.size());
+    edges.push_back({h / 3, twin[h] / 3});
+    dual.sides.push_back(h);
+    dual.sides.push_back(twin[h]);
+    dual.across[h] = dual.across[twin[h]] = e;
+  }
+  // Every halfedge has exactly one twin in another triangle, so every node has degree 3 and
+  // there are no loops: from_edges cannot fail here.
+  dual.graph = CubicGraph::from_edges(face_count, edges);
+  return dual;
+}
+
+CubicGraph dual_graph(const TriangleMesh& mesh) {
+  return build_dual(mesh).graph;
+}
+
+}  // namespace petersen
