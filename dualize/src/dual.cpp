@@ -45,28 +45,33 @@ Dual build_dual(const TriangleMesh& mesh) {
   auto to = [&](HalfedgeId h) { return tris[h / 3][(h % 3 + 1) % 3]; };
 
   // CSR of halfedges bucketed by their smaller vertex: a halfedge and its twin share a bucket.
+  // After the placement loop start[v] has moved to the end of bucket v; the shift restores it.
   const std::size_t vertex_count = mesh.positions.size();
   std::vector<std::uint32_t> start(vertex_count + 1, 0);
   for (HalfedgeId h = 0; h < halfedge_count; ++h) ++start[std::min(from(h), to(h)) + 1];
   for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  // Each entry packs (larger vertex, halfedge) so one integer sort groups the copies of an edge.
-  std::vector<std::uint64_t> bucket(halfedge_count);
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (HalfedgeId h = 0; h < halfedge_count; ++h) {
-      const VertexId a = from(h), b = to(h);
-      bucket[fill[std::min(a, b)]++] = (std::uint64_t{std::max(a, b)} << 32) | h;
-    }
+  // Each entry is {larger vertex, halfedge}: sorting a bucket groups the copies of an edge.
+  std::vector<std::array<std::uint32_t, 2>> bucket(halfedge_count);
+  for (HalfedgeId h = 0; h < halfedge_count; ++h) {
+    const VertexId a = from(h), b = to(h);
+    bucket[start[std::min(a, b)]++] = {std::max(a, b), h};
   }
+  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
+  start[0] = 0;
 
-  std::vector<HalfedgeId> twin(halfedge_count);
+  // Dual edge e is written over bucket[e]: by then the 2e + 2 entries its edges consumed lie
+  // behind the read position, so the bucket's memory doubles as the edge list.
+  Dual dual;
+  dual.across.resize(halfedge_count);
+  auto& edges = bucket;
+  EdgeId edge_count = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) {
     const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
     std::sort(first, last);
     for (auto group = first; group != last;) {
       auto end = group + 1;
-      while (end != last && (*end >> 32) == (*group >> 32)) ++end;
-      const HalfedgeId h1 = static_cast<HalfedgeId>(*group);
+      while (end != last && (*end)[0] == (*group)[0]) ++end;
+      const HalfedgeId h1 = (*group)[1];
       const VertexId a = from(h1), b = to(h1);
       const FaceId t1 = h1 / 3;
       if (end - group == 1) {
@@ -76,36 +81,21 @@ Dual build_dual(const TriangleMesh& mesh) {
       if (end - group > 2) {
         throw MeshError("non-manifold " + edge_name(a, b) + ": in " + std::to_string(end - group) +
                         " triangles (" + std::to_string(t1) + ", " +
-                        std::to_string(static_cast<HalfedgeId>(group[1]) / 3) + ", " +
-                        std::to_string(static_cast<HalfedgeId>(group[2]) / 3) +
+                        std::to_string(group[1][1] / 3) + ", " + std::to_string(group[2][1] / 3) +
                         (end - group > 3 ? ", ...)" : ")"));
       }
-      const HalfedgeId h2 = static_cast<HalfedgeId>(group[1]);
+      const HalfedgeId h2 = group[1][1];
       if (from(h2) == a) {
         throw MeshError("inconsistent orientation at " + edge_name(a, b) + ": triangles " +
                         std::to_string(t1) + " and " + std::to_string(h2 / 3) + " both run from " +
                         std::to_string(a) + " to " + std::to_string(b));
       }
-      twin[h1] = h2;
-      twin[h2] = h1;
+      dual.across[h1] = dual.across[h2] = edge_count;
+      edges[edge_count++] = {h1 / 3, h2 / 3};
       group = end;
     }
   }
-  bucket = {};
-
-  Dual dual;
-  dual.across.resize(halfedge_count);
-  dual.sides.reserve(halfedge_count);
-  std::vector<std::array<NodeId, 2>> edges;
-  edges.reserve(halfedge_count / 2);
-  for (HalfedgeId h = 0; h < halfedge_count; ++h) {
-    if (twin[h] < h) continue;
-    const EdgeId e = static_cast<EdgeId>(edges.size());
-    edges.push_back({h / 3, twin[h] / 3});
-    dual.sides.push_back(h);
-    dual.sides.push_back(twin[h]);
-    dual.across[h] = dual.across[twin[h]] = e;
-  }
+  edges.resize(edge_count);
   // Every halfedge has exactly one twin in another triangle, so every node has degree 3 and
   // there are no loops: from_edges cannot fail here.
   dual.graph = CubicGraph::from_edges(face_count, edges);

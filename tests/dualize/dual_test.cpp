@@ -35,7 +35,7 @@ TEST(Dual, TetrahedronIsK4WithMatchingSides) {
     for (int k = 0; k < 3; ++k) {
       const EdgeId e = dual.dual_edge(t, k);
       const HalfedgeId h = 3 * t + k;
-      const HalfedgeId first = dual.sides[2 * e], second = dual.sides[2 * e + 1];
+      const HalfedgeId first = dual.side(e, 0), second = dual.side(e, 1);
       ASSERT_TRUE(h == first || h == second);
       // The two sides are the same mesh edge, run in opposite directions.
       const auto& t1 = mesh.triangles[first / 3];

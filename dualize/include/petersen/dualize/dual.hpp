@@ -17,26 +17,31 @@ using HalfedgeId = std::uint32_t;
 /// CubicGraph::from_edges orders a node's edges by edge id, and no single edge numbering puts
 /// every triangle's three dual edges in the order of its three edges (three triangles around a
 /// vertex of degree 3, each starting at that vertex, already form a cycle of constraints). So
-/// `across` gives the dual edge of each halfedge and `sides` the two halfedges of each dual edge.
+/// `across` gives the dual edge of each halfedge, and side() the halfedge of each dual edge end.
 struct Dual {
   CubicGraph graph;
   /// across[3t + k]: the dual edge crossing edge k of triangle t.
   std::vector<EdgeId> across;
-  /// sides[2e], sides[2e + 1]: the halfedges dual edge e crosses, the first in triangle
-  /// graph.endpoints(e)[0], the second in graph.endpoints(e)[1]. They run in opposite directions.
-  std::vector<HalfedgeId> sides;
 
   EdgeId dual_edge(FaceId t, int k) const { return across[3 * std::size_t{t} + k]; }
+  /// The halfedge that dual edge e crosses in triangle graph.endpoints(e)[end]; the halfedges of
+  /// the two ends run along the same mesh edge in opposite directions. O(1).
+  HalfedgeId side(EdgeId e, int end) const {
+    const FaceId t = graph.endpoints(e)[end];
+    const int k = across[3 * std::size_t{t}] == e ? 0 : across[3 * std::size_t{t} + 1] == e ? 1 : 2;
+    return 3 * t + static_cast<HalfedgeId>(k);
+  }
 };
 
 /// Builds the dual of a closed, edge-manifold, consistently oriented triangle mesh: triangle i is
-/// node i; dual edges are numbered in order of their first halfedge 3t + k, so they follow the
-/// triangle order. Pinched vertices and several components are allowed (the dual stays cubic; it
-/// is then disconnected). Throws MeshError naming the triangle or edge (a, b) when a corner is out
-/// of range, a triangle repeats a corner, an edge has one triangle (boundary) or more than two,
-/// or its two triangles run along it in the same direction (inconsistent orientation).
-/// O(F log d) for maximum vertex degree d, no hashing: directed edges are bucketed by their
-/// smaller vertex and each bucket is sorted by the larger one.
+/// node i. Dual edges are numbered by their mesh edge {a, b} in order of (min(a, b), max(a, b)),
+/// and the first endpoint of each is the triangle with the smaller halfedge id. Pinched vertices
+/// and several components are allowed (the dual stays cubic; it is then disconnected). Throws
+/// MeshError naming the triangle or edge (a, b) when a corner is out of range, a triangle repeats
+/// a corner, an edge has one triangle (boundary) or more than two, or its two triangles run
+/// along it in the same direction (inconsistent orientation).
+/// O(F log d) for maximum vertex degree d, no hashing: halfedges are bucketed by their smaller
+/// vertex and each bucket is sorted by the larger one.
 Dual build_dual(const TriangleMesh& mesh);
 
 /// The dual graph alone (see build_dual for the numbering and the errors).

@@ -1,0 +1,74 @@
+// OBJ: only "v x y z" and "f a b c" lines matter. A corner is written v, v/vt, v//vn or v/vt/vn;
+// a negative v counts back from the last vertex read so far (-1 is the latest), per the OBJ spec.
+
+#include <vector>
+
+#include "parsers.hpp"
+#include "text_scan.hpp"
+
+namespace petersen {
+
+TriangleMesh parse_obj(std::string_view bytes, const std::string& source) {
+  text::Lines lines{bytes};
+  const text::Located at{source, lines};
+  TriangleMesh mesh;
+  // Reserving by a guess from the size keeps the large files from re-growing many times: a "v"
+  // line is about 30 bytes and there are about two faces per vertex.
+  mesh.positions.reserve(bytes.size() / 90);
+  mesh.triangles.reserve(bytes.size() / 45);
+  std::string_view line, token;
+  bool any_content = false;
+  while (lines.next(line)) {
+    text::Tokens tokens{text::strip_comment(line)};
+    if (!tokens.next(token)) continue;
+    any_content = true;
+    if (token == "v") {
+      std::array<double, 3> p;
+      for (double& x : p) {
+        if (!tokens.next(token)) {
+          at.fail("vertex " + std::to_string(mesh.positions.size()) + ": expected 3 coordinates");
+        }
+        if (!text::parse_real(token, x)) {
+          at.fail("vertex " + std::to_string(mesh.positions.size()) + ": bad coordinate " +
+                  text::Located::quote(token));
+        }
+      }
+      if (mesh.positions.size() == 0xFFFFFFFFu) at.fail("more than 2^32 - 1 vertices");
+      mesh.positions.push_back(p);
+    } else if (token == "f") {
+      const std::string face = "face " + std::to_string(mesh.triangles.size());
+      std::array<VertexId, 3> tri;
+      int corners = 0;
+      while (tokens.next(token)) {
+        if (corners == 3) {
+          int total = corners + 1;
+          while (tokens.next(token)) ++total;
+          at.fail(face + " has " + std::to_string(total) +
+                  " corners; only triangles are supported");
+        }
+        // Only the vertex index, before the first '/', matters.
+        const std::string_view index_text = token.substr(0, token.find('/'));
+        std::int64_t index = 0;
+        if (!text::parse_integer(index_text, index) || index == 0) {
+          at.fail(face + ": bad vertex index " + text::Located::quote(token));
+        }
+        const std::int64_t count = static_cast<std::int64_t>(mesh.positions.size());
+        const std::int64_t zero_based = index > 0 ? index - 1 : count + index;
+        if (zero_based < 0 || zero_based >= count) {
+          at.fail(face + ": vertex index " + std::to_string(index) + " out of range (" +
+                  std::to_string(count) + " vertices read so far)");
+        }
+        tri[corners++] = static_cast<VertexId>(zero_based);
+      }
+      if (corners < 3) {
+        at.fail(face + " has " + std::to_string(corners) + " corners; a triangle needs 3");
+      }
+      if (mesh.triangles.size() == 0xFFFFFFFFu) at.fail("more than 2^32 - 1 faces");
+      mesh.triangles.push_back(tri);
+    }
+  }
+  if (!any_content) throw MeshError(source + ": empty file");
+  return mesh;
+}
+
+}  // namespace petersen

@@ -1,0 +1,441 @@
+// PLY: a text header declaring elements and their properties, then the data in ascii (one record
+// per line) or binary (little or big endian). Only vertex x, y, z and the face index list are
+// kept; every other property and element is read past according to its declared type.
+
+#include <bit>
+#include <cstring>
+#include <vector>
+
+#include "parsers.hpp"
+#include "text_scan.hpp"
+
+namespace petersen {
+
+namespace {
+
+enum class Type : std::uint8_t { i8, u8, i16, u16, i32, u32, f32, f64 };
+
+bool parse_type(std::string_view name, Type& type) {
+  static constexpr std::pair<std::string_view, Type> names[] = {
+      {"char", Type::i8},   {"int8", Type::i8},     {"uchar", Type::u8},   {"uint8", Type::u8},
+      {"short", Type::i16}, {"int16", Type::i16},   {"ushort", Type::u16}, {"uint16", Type::u16},
+      {"int", Type::i32},   {"int32", Type::i32},   {"uint", Type::u32},   {"uint32", Type::u32},
+      {"float", Type::f32}, {"float32", Type::f32}, {"double", Type::f64}, {"float64", Type::f64},
+  };
+  for (const auto& [n, t] : names) {
+    if (n == name) {
+      type = t;
+      return true;
+    }
+  }
+  return false;
+}
+
+std::size_t size_of(Type type) {
+  switch (type) {
+    case Type::i8:
+    case Type::u8:
+      return 1;
+    case Type::i16:
+    case Type::u16:
+      return 2;
+    case Type::i32:
+    case Type::u32:
+    case Type::f32:
+      return 4;
+    case Type::f64:
+      return 8;
+  }
+  return 0;
+}
+
+bool is_integer(Type type) {
+  return type != Type::f32 && type != Type::f64;
+}
+
+struct Property {
+  std::string name;
+  Type type = Type::f32;  // the item type for a list
+  bool is_list = false;
+  Type count_type = Type::u8;
+};
+
+struct Element {
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Property> properties;
+  std::size_t line = 0;  // where the header declared it
+};
+
+enum class Encoding { ascii, little, big };
+
+// What the reader keeps: the slots of x, y, z in the vertex element and of the face list.
+struct Layout {
+  int xyz[3] = {-1, -1, -1};
+  int face_list = -1;
+};
+
+// Reads binary scalars with a bounds check on every read, so truncation is always caught.
+struct BinaryCursor {
+  std::string_view bytes;
+  std::size_t pos;
+  bool big_endian;
+
+  bool has(std::size_t n) const { return bytes.size() - pos >= n; }
+
+  template <typename T>
+  T load() {
+    T value;
+    if constexpr (sizeof(T) == 1) {
+      std::memcpy(&value, bytes.data() + pos, 1);
+    } else {
+      using U =
+          std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                             std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>;
+      U raw;
+      std::memcpy(&raw, bytes.data() + pos, sizeof(T));
+      if (big_endian != (std::endian::native == std::endian::big)) raw = byteswap(raw);
+      std::memcpy(&value, &raw, sizeof(T));
+    }
+    pos += sizeof(T);
+    return value;
+  }
+  template <typename U>
+  static U byteswap(U raw) {
+    U out = 0;
+    for (std::size_t i = 0; i < sizeof(U); ++i) out = U((out << 8) | ((raw >> (8 * i)) & 0xFF));
+    return out;
+  }
+  // The caller has checked has(size_of(type)).
+  double real(Type type) {
+    switch (type) {
+      case Type::f32:
+        return load<float>();
+      case Type::f64:
+        return load<double>();
+      default:
+        return static_cast<double>(integer(type));
+    }
+  }
+  std::int64_t integer(Type type) {
+    switch (type) {
+      case Type::i8:
+        return load<std::int8_t>();
+      case Type::u8:
+        return load<std::uint8_t>();
+      case Type::i16:
+        return load<std::int16_t>();
+      case Type::u16:
+        return load<std::uint16_t>();
+      case Type::i32:
+        return load<std::int32_t>();
+      case Type::u32:
+        return load<std::uint32_t>();
+      default:
+        return 0;  // float types are refused for counts and indices in the header
+    }
+  }
+};
+
+class PlyParser {
+ public:
+  PlyParser(std::string_view bytes, const std::string& source)
+      : bytes_(bytes), source_(source), lines_{bytes}, at_{source, lines_} {}
+
+  TriangleMesh parse() {
+    read_header();
+    for (const Element& element : elements_) {
+      check_fits(element);
+      if (encoding_ == Encoding::ascii) {
+        read_ascii(element);
+      } else {
+        read_binary(element);
+      }
+    }
+    return std::move(mesh_);
+  }
+
+ private:
+  void read_header() {
+    std::string_view line, token;
+    if (!lines_.next(line)) throw MeshError(source_ + ": empty file");
+    if (line != "ply") at_.fail("not a PLY file: the first line is not 'ply'");
+    bool have_format = false;
+    for (;;) {
+      if (!lines_.next(line)) at_.fail("truncated header: no end_header");
+      text::Tokens tokens{line};
+      if (!tokens.next(token) || token == "comment" || token == "obj_info") continue;
+      if (token == "end_header") break;
+      if (token == "format") {
+        tokens.next(token);
+        if (token == "ascii") {
+          encoding_ = Encoding::ascii;
+        } else if (token == "binary_little_endian") {
+          encoding_ = Encoding::little;
+        } else if (token == "binary_big_endian") {
+          encoding_ = Encoding::big;
+        } else {
+          at_.fail("unknown PLY format " + text::Located::quote(token));
+        }
+        have_format = true;
+      } else if (token == "element") {
+        Element element;
+        std::string_view count_text;
+        tokens.next(token);
+        tokens.next(count_text);
+        std::int64_t count = 0;
+        if (token.empty() || !text::parse_integer(count_text, count) || count < 0) {
+          at_.fail("expected 'element NAME COUNT'");
+        }
+        element.name = std::string(token);
+        element.count = static_cast<std::uint64_t>(count);
+        element.line = lines_.line;
+        elements_.push_back(std::move(element));
+      } else if (token == "property") {
+        if (elements_.empty()) at_.fail("property before any element");
+        elements_.back().properties.push_back(read_property(tokens));
+      } else {
+        at_.fail("unknown header keyword " + text::Located::quote(token));
+      }
+    }
+    if (!have_format) at_.fail("header has no format line");
+    find_layout();
+  }
+
+  Property read_property(text::Tokens& tokens) {
+    Property property;
+    std::string_view token;
+    tokens.next(token);
+    if (token == "list") {
+      property.is_list = true;
+      tokens.next(token);
+      if (!parse_type(token, property.count_type) || !is_integer(property.count_type)) {
+        at_.fail("bad list count type " + text::Located::quote(token));
+      }
+      tokens.next(token);
+    }
+    if (!parse_type(token, property.type)) at_.fail("unknown type " + text::Located::quote(token));
+    if (!tokens.next(token)) at_.fail("property without a name");
+    property.name = std::string(token);
+    return property;
+  }
+
+  void find_layout() {
+    const Element* vertex = nullptr;
+    const Element* face = nullptr;
+    for (const Element& element : elements_) {
+      const Element*& slot = element.name == "vertex" ? vertex : face;
+      if (element.name != "vertex" && element.name != "face") continue;
+      if (slot) fail_header(element, "second '" + element.name + "' element");
+      slot = &element;
+    }
+    if (!vertex) at_.fail("header declares no vertex element");
+    if (!face) at_.fail("header declares no face element");
+    if (vertex->count > 0xFFFFFFFFu) fail_header(*vertex, "more than 2^32 - 1 vertices");
+    if (face->count > 0xFFFFFFFFu) fail_header(*face, "more than 2^32 - 1 faces");
+    vertex_count_ = vertex->count;
+    static constexpr const char* axes[3] = {"x", "y", "z"};
+    for (int axis = 0; axis < 3; ++axis) {
+      for (std::size_t i = 0; i < vertex->properties.size(); ++i) {
+        if (vertex->properties[i].name == axes[axis] && !vertex->properties[i].is_list) {
+          layout_.xyz[axis] = static_cast<int>(i);
+        }
+      }
+      if (layout_.xyz[axis] < 0) {
+        fail_header(*vertex, std::string("vertex element has no scalar property ") + axes[axis]);
+      }
+    }
+    for (std::size_t i = 0; i < face->properties.size(); ++i) {
+      const Property& p = face->properties[i];
+      if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
+        if (!is_integer(p.type)) fail_header(*face, "face indices must have an integer type");
+        layout_.face_list = static_cast<int>(i);
+      }
+    }
+    if (layout_.face_list < 0) fail_header(*face, "face element has no vertex_indices list");
+  }
+
+  [[noreturn]] void fail_header(const Element& element, const std::string& what) const {
+    throw MeshError(source_ + ":" + std::to_string(element.line) + ": " + what);
+  }
+
+  // Refuses counts the rest of the file cannot hold before anything is reserved: a binary record
+  // takes at least its scalars and list counts, an ascii one at least two bytes per property.
+  void check_fits(const Element& element) {
+    std::size_t min_bytes = 0;
+    for (const Property& p : element.properties) {
+      min_bytes += encoding_ == Encoding::ascii ? 2 : size_of(p.is_list ? p.count_type : p.type);
+    }
+    if (encoding_ == Encoding::ascii) min_bytes = std::max<std::size_t>(min_bytes, 1);
+    const std::size_t remaining = bytes_.size() - lines_.pos;
+    if (min_bytes > 0 && element.count > (remaining + 1) / min_bytes) {
+      fail_header(element, "element '" + element.name + "' declares " +
+                               std::to_string(element.count) +
+                               " records, more than the remaining " + std::to_string(remaining) +
+                               " bytes can hold");
+    }
+    if (element.name == "vertex") mesh_.positions.reserve(element.count);
+    if (element.name == "face") mesh_.triangles.reserve(element.count);
+  }
+
+  std::string record_name(const Element& element, std::uint64_t i) const {
+    return element.name + " " + std::to_string(i);
+  }
+
+  // The face's corner count and corners are checked the same way in both encodings.
+  void check_corner_count(const Element& element, std::uint64_t i, std::int64_t corners,
+                          const auto& fail) const {
+    if (corners != 3) {
+      fail(record_name(element, i) + " has " + std::to_string(corners) +
+           " corners; only triangles are supported");
+    }
+  }
+  VertexId checked_index(const Element& element, std::uint64_t i, std::int64_t index,
+                         const auto& fail) const {
+    if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count_) {
+      fail(record_name(element, i) + ": vertex index " + std::to_string(index) + " out of range (" +
+           std::to_string(vertex_count_) + " vertices)");
+    }
+    return static_cast<VertexId>(index);
+  }
+
+  void read_ascii(const Element& element) {
+    const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
+    auto fail = [&](const std::string& what) { at_.fail(what); };
+    std::string_view line, token;
+    for (std::uint64_t i = 0; i < element.count; ++i) {
+      // One record per line; blank lines between records are skipped.
+      text::Tokens tokens;
+      for (;;) {
+        if (!lines_.next(line)) {
+          at_.fail("truncated: expected " + std::to_string(element.count) + " " + element.name +
+                   " records, found " + std::to_string(i));
+        }
+        tokens.rest = line;
+        if (text::Tokens{line}.next(token)) break;
+      }
+      std::array<double, 3> p{};
+      std::array<VertexId, 3> tri{};
+      for (std::size_t k = 0; k < element.properties.size(); ++k) {
+        const Property& property = element.properties[k];
+        auto next = [&] {
+          if (!tokens.next(token)) fail(record_name(element, i) + ": too few values");
+        };
+        if (!property.is_list) {
+          next();
+          double value = 0;
+          std::int64_t unused = 0;
+          if (!(is_integer(property.type) ? text::parse_integer(token, unused)
+                                          : text::parse_real(token, value))) {
+            fail(record_name(element, i) + ": bad value " + text::Located::quote(token) +
+                 " for property " + property.name);
+          }
+          if (is_vertex) {
+            for (int axis = 0; axis < 3; ++axis) {
+              if (layout_.xyz[axis] == int(k)) {
+                if (is_integer(property.type)) value = static_cast<double>(unused);
+                p[axis] = value;
+              }
+            }
+          }
+          continue;
+        }
+        next();
+        std::int64_t items = 0;
+        if (!text::parse_integer(token, items) || items < 0) {
+          fail(record_name(element, i) + ": bad list length " + text::Located::quote(token));
+        }
+        const bool corners = is_face && layout_.face_list == int(k);
+        if (corners) check_corner_count(element, i, items, fail);
+        for (std::int64_t j = 0; j < items; ++j) {
+          next();
+          std::int64_t index = 0;
+          double value = 0;
+          if (!(is_integer(property.type) ? text::parse_integer(token, index)
+                                          : text::parse_real(token, value))) {
+            fail(record_name(element, i) + ": bad list value " + text::Located::quote(token));
+          }
+          if (corners) tri[j] = checked_index(element, i, index, fail);
+        }
+      }
+      if (is_vertex) mesh_.positions.push_back(p);
+      if (is_face) mesh_.triangles.push_back(tri);
+    }
+  }
+
+  void read_binary(const Element& element) {
+    const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
+    BinaryCursor in{bytes_, lines_.pos, encoding_ == Encoding::big};
+    std::uint64_t i = 0;
+    auto fail = [&](const std::string& what) {
+      throw MeshError(source_ + ": " + what + " (byte " + std::to_string(in.pos) + ")");
+    };
+    auto need = [&](std::size_t n) {
+      if (!in.has(n)) {
+        fail("truncated in " + record_name(element, i) + " of " + std::to_string(element.count));
+      }
+    };
+    for (; i < element.count && !element.properties.empty(); ++i) {
+      std::array<double, 3> p{};
+      std::array<VertexId, 3> tri{};
+      for (std::size_t k = 0; k < element.properties.size(); ++k) {
+        const Property& property = element.properties[k];
+        const std::size_t item = size_of(property.type);
+        if (!property.is_list) {
+          need(item);
+          if (is_vertex &&
+              (layout_.xyz[0] == int(k) || layout_.xyz[1] == int(k) || layout_.xyz[2] == int(k))) {
+            const double value = in.real(property.type);
+            if (!std::isfinite(value)) {
+              fail(record_name(element, i) + ": non-finite " + property.name);
+            }
+            for (int axis = 0; axis < 3; ++axis) {
+              if (layout_.xyz[axis] == int(k)) p[axis] = value;
+            }
+          } else {
+            in.pos += item;
+          }
+          continue;
+        }
+        need(size_of(property.count_type));
+        const std::int64_t items = in.integer(property.count_type);
+        if (items < 0) fail(record_name(element, i) + ": negative list length");
+        if (is_face && layout_.face_list == int(k)) {
+          check_corner_count(element, i, items, fail);
+          need(3 * item);
+          for (VertexId& corner : tri) {
+            corner = checked_index(element, i, in.integer(property.type), fail);
+          }
+        } else {
+          // Compared by division: items * item may not fit in 64 bits.
+          if (static_cast<std::uint64_t>(items) > (bytes_.size() - in.pos) / item) {
+            fail("truncated in " + record_name(element, i) + ": its list of " +
+                 std::to_string(items) + " values runs past the end");
+          }
+          in.pos += static_cast<std::size_t>(items) * item;
+        }
+      }
+      if (is_vertex) mesh_.positions.push_back(p);
+      if (is_face) mesh_.triangles.push_back(tri);
+    }
+    lines_.pos = in.pos;
+  }
+
+  std::string_view bytes_;
+  const std::string& source_;
+  text::Lines lines_;
+  text::Located at_;
+  Encoding encoding_ = Encoding::ascii;
+  std::vector<Element> elements_;
+  Layout layout_;
+  TriangleMesh mesh_;
+  std::uint64_t vertex_count_ = 0;
+};
+
+}  // namespace
+
+TriangleMesh parse_ply(std::string_view bytes, const std::string& source) {
+  return PlyParser(bytes, source).parse();
+}
+
+}  // namespace petersen
