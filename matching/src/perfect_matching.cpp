@@ -3,8 +3,10 @@
 #include <stdexcept>
 #include <string>
 
+#include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "petersen/matching/augment.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen {
@@ -25,6 +27,24 @@ void match_with_lemon(const CubicGraph& graph, Result& result) {
   for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
   result.matching.mate_edge = lemon_adapter::maximum_matching(graph.node_count(), edges);
   result.stats.initial_seconds = clock.seconds();
+}
+
+// SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect.
+void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
+  Stopwatch initial;
+  if (options.algorithm == Algorithm::sg) {
+    simple_greedy(graph, result.matching, options.seed);
+  } else {
+    puli_segal(graph, result.matching, options.seed);
+  }
+  result.stats.initial_seconds = initial.seconds();
+  result.stats.unpaired_after_initial = result.matching.unmatched_count();
+  Stopwatch augment;
+  const AugmentStats augmented = augment_matching(graph, result.matching, options.augment);
+  result.stats.augment_seconds = augment.seconds();
+  result.stats.augmenting_paths = augmented.augmenting_paths;
+  result.stats.blossoms = augmented.blossoms;
+  result.stats.nodes_labelled = augmented.nodes_labelled;
 }
 
 }  // namespace
@@ -63,6 +83,10 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
   switch (options.algorithm) {
     case Algorithm::lemon:
       match_with_lemon(graph, result);
+      break;
+    case Algorithm::sg:
+    case Algorithm::ps:
+      match_greedily_then_augment(graph, options, result);
       break;
     default:
       throw std::invalid_argument("algorithm '" + std::string(to_string(options.algorithm)) +

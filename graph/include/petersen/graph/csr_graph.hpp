@@ -1,0 +1,47 @@
+#pragma once
+// A general multigraph in compressed sparse rows: the input of the maximum-matching fallback.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+/// A multigraph of any degrees: nodes 0..n-1, edges 0..m-1, parallel edges allowed, no loops.
+/// Endpoints of edge e are at edge_ends[2e], edge_ends[2e+1]; the edges of node v are
+/// node_edges[offsets[v]..offsets[v+1]), in edge-id order. Construction is O(n + m).
+class CsrGraph {
+ public:
+  CsrGraph() = default;
+
+  /// Builds the graph from an edge list; throws GraphError naming the first loop or the first
+  /// endpoint out of range.
+  static CsrGraph from_edges(std::uint32_t node_count,
+                             std::span<const std::array<NodeId, 2>> edges);
+
+  std::uint32_t node_count() const { return static_cast<std::uint32_t>(offsets_.size() - 1); }
+  std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends_.size() / 2); }
+
+  std::array<NodeId, 2> endpoints(EdgeId e) const {
+    return {edge_ends_[2 * e], edge_ends_[2 * e + 1]};
+  }
+  /// The endpoint of e that is not v (v must be an endpoint of e).
+  NodeId other_end(EdgeId e, NodeId v) const {
+    return edge_ends_[2 * e] ^ edge_ends_[2 * e + 1] ^ v;
+  }
+  /// The edges at v; a parallel edge appears once per copy.
+  std::span<const EdgeId> incident_edges(NodeId v) const {
+    return std::span<const EdgeId>(node_edges_.data() + offsets_[v], offsets_[v + 1] - offsets_[v]);
+  }
+  std::uint32_t degree(NodeId v) const { return offsets_[v + 1] - offsets_[v]; }
+
+ private:
+  std::vector<std::uint32_t> offsets_{0};
+  std::vector<EdgeId> node_edges_;
+  std::vector<NodeId> edge_ends_;
+};
+
+}  // namespace petersen

@@ -1,0 +1,71 @@
+// The two drivers of Tarjan's procedure (paper §3.1) over the shared alternating forest, for
+// cubic and general graphs, and the general maximum-matching fallback.
+
+#include <algorithm>
+
+#include "alternating_forest.hpp"
+#include "petersen/matching/augment.hpp"
+
+namespace petersen {
+
+namespace {
+
+template <class Graph>
+AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
+  AugmentStats stats;
+  std::vector<EdgeId>& mate = matching.mate_edge;
+  std::vector<NodeId> free_nodes;
+  for (NodeId v = 0; v < mate.size(); ++v)
+    if (mate[v] == kNoEdge) free_nodes.push_back(v);
+  if (free_nodes.size() < 2) return stats;
+  augment_detail::AlternatingForest<Graph> forest(graph, mate, stats);
+  if (variant == Augment::faithful) {
+    // The paper's: one search per free node, each after a full reset. A node whose search fails
+    // can never be matched later (Edmonds), so one pass suffices.
+    for (NodeId r : free_nodes) {
+      if (mate[r] != kNoEdge) continue;  // matched by an earlier path
+      forest.clear_all();
+      forest.add_root(r);
+      ++stats.searches;
+      forest.grow(/*stop_at_first=*/true);
+    }
+    return stats;
+  }
+  // Local: all free nodes grow their trees at once, breadth-first, so the nearest pairs meet
+  // first and every tree stops as soon as it augments. A round that augmented may have left trees
+  // stuck against a dead one, so rounds repeat until one finds nothing: that round was a complete
+  // Edmonds search, and the matching is maximum.
+  while (free_nodes.size() >= 2) {
+    for (NodeId r : free_nodes) forest.add_root(r);
+    ++stats.searches;
+    const std::uint64_t found = forest.grow(/*stop_at_first=*/false);
+    forest.clear_touched();
+    if (found == 0) break;
+    std::erase_if(free_nodes, [&](NodeId v) { return mate[v] != kNoEdge; });
+  }
+  return stats;
+}
+
+}  // namespace
+
+AugmentStats augment_matching(const CubicGraph& graph, Matching& matching, Augment variant) {
+  return augment(graph, matching, variant);
+}
+
+AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment variant) {
+  return augment(graph, matching, variant);
+}
+
+MaximumMatchingResult maximum_matching(const CsrGraph& graph, Augment variant) {
+  MaximumMatchingResult result{Matching(graph.node_count()), 0, {}};
+  std::vector<EdgeId>& mate = result.matching.mate_edge;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    auto [a, b] = graph.endpoints(e);
+    if (mate[a] == kNoEdge && mate[b] == kNoEdge) mate[a] = mate[b] = e;
+  }
+  result.stats = augment_matching(graph, result.matching, variant);
+  result.size = (graph.node_count() - result.matching.unmatched_count()) / 2;
+  return result;
+}
+
+}  // namespace petersen

@@ -1,0 +1,19 @@
+#pragma once
+// The two greedy initial pairings of the paper's §3.1; perfect_matching augments what they leave.
+
+#include <cstdint>
+
+#include "petersen/matching/matching.hpp"
+
+namespace petersen {
+
+/// SG, the simple greedy pairing (§3.1): every edge, in a seeded random order, joins its two
+/// nodes if both are still free. `matching` must start empty. Θ(n).
+void simple_greedy(const CubicGraph& graph, Matching& matching, std::uint64_t seed);
+
+/// PS, Puli and Segal's priority pairing (§3.1): repeatedly pair a node of the highest non-empty
+/// priority set with a highest-priority neighbour over a free edge. `matching` must start empty.
+/// Θ(n), every set operation O(1).
+void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed);
+
+}  // namespace petersen
