@@ -1,7 +1,8 @@
 #include "petersen/dualize/dual.hpp"
 
-#include <algorithm>
 #include <string>
+
+#include "edge_groups.hpp"
 
 namespace petersen {
 
@@ -38,26 +39,14 @@ void check_corners(const TriangleMesh& mesh) {
 
 Dual build_dual(const TriangleMesh& mesh) {
   check_corners(mesh);
-  const auto& tris = mesh.triangles;
-  const std::uint32_t face_count = static_cast<std::uint32_t>(tris.size());
+  const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.triangles.size());
   const std::uint32_t halfedge_count = 3 * face_count;
-  auto from = [&](HalfedgeId h) { return tris[h / 3][h % 3]; };
-  auto to = [&](HalfedgeId h) { return tris[h / 3][(h % 3 + 1) % 3]; };
-
-  // CSR of halfedges bucketed by their smaller vertex: a halfedge and its twin share a bucket.
-  // After the placement loop start[v] has moved to the end of bucket v; the shift restores it.
+  auto from = [&](HalfedgeId h) { return halfedge_from(mesh, h); };
+  auto to = [&](HalfedgeId h) { return halfedge_to(mesh, h); };
+  EdgeGroups groups = group_halfedges(mesh, {});
+  const auto& start = groups.start;
+  auto& bucket = groups.entries;
   const std::size_t vertex_count = mesh.positions.size();
-  std::vector<std::uint32_t> start(vertex_count + 1, 0);
-  for (HalfedgeId h = 0; h < halfedge_count; ++h) ++start[std::min(from(h), to(h)) + 1];
-  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  // Each entry is {larger vertex, halfedge}: sorting a bucket groups the copies of an edge.
-  std::vector<std::array<std::uint32_t, 2>> bucket(halfedge_count);
-  for (HalfedgeId h = 0; h < halfedge_count; ++h) {
-    const VertexId a = from(h), b = to(h);
-    bucket[start[std::min(a, b)]++] = {std::max(a, b), h};
-  }
-  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
-  start[0] = 0;
 
   // Dual edge e is written over bucket[e]: by then the 2e + 2 entries its edges consumed lie
   // behind the read position, so the bucket's memory doubles as the edge list.
@@ -67,7 +56,6 @@ Dual build_dual(const TriangleMesh& mesh) {
   EdgeId edge_count = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) {
     const auto first = bucket.begin() + start[v], last = bucket.begin() + start[v + 1];
-    std::sort(first, last);
     for (auto group = first; group != last;) {
       auto end = group + 1;
       while (end != last && (*end)[0] == (*group)[0]) ++end;

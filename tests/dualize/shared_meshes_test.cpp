@@ -1,0 +1,107 @@
+// The real meshes in ../shared/meshes: each closed one loads with the V, F and genus SOURCES.md
+// lists and converts through LEMON; each invalid one fails the way SOURCES.md says.
+
+#include "shared_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/dualize/surface_check.hpp"
+#include "petersen/graph/connectivity.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+
+namespace petersen {
+namespace {
+
+// The >1M-triangle meshes take seconds under sanitizers; they are loaded in the plain build only.
+#ifdef PETERSEN_SANITIZE
+constexpr std::uint32_t kMaxTriangles = 200000;
+#else
+constexpr std::uint32_t kMaxTriangles = 0xFFFFFFFFu;
+#endif
+
+TEST(SharedMeshes, ClosedOnesHaveTheListedCountsAndGenus) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  for (const auto& expected : testing::shared_meshes_up_to(kMaxTriangles)) {
+    SCOPED_TRACE(expected.file);
+    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
+    const SurfaceReport r = inspect_surface(mesh);
+    EXPECT_EQ(r.vertices, expected.vertices);
+    EXPECT_EQ(r.faces, expected.triangles);
+    EXPECT_EQ(r.genus, expected.genus);
+    EXPECT_TRUE(r.closed());
+    EXPECT_EQ(r.components, 1u);
+    EXPECT_EQ(r.edge_components, 1u);
+    EXPECT_TRUE(r.pinched_vertices.empty());
+    EXPECT_NO_THROW(require_closed_surface(mesh, {false, false}));
+  }
+}
+
+TEST(SharedMeshes, ClosedOnesConvertThroughLemon) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  // LEMON's matching is the slow peer: keep to the meshes below 100k triangles.
+  for (const auto& expected : testing::shared_meshes_up_to(100000)) {
+    SCOPED_TRACE(expected.file);
+    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
+    const CubicGraph dual = dual_graph(mesh);
+    EXPECT_NO_THROW(validate_connected_bridgeless(dual));
+    const Result result = perfect_matching(dual, {.algorithm = Algorithm::lemon});
+    ASSERT_TRUE(verify_perfect_matching(dual, result.matching).ok());
+    const QuadCheck check = check_quad_mesh(mesh, quads_from_matching(mesh, dual, result.matching));
+    EXPECT_TRUE(check.ok()) << check.problem;
+  }
+}
+
+TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  auto report = [&](const char* file) {
+    return inspect_surface(read_triangle_mesh(*dir + "/invalid/" + file));
+  };
+
+  const SurfaceReport bunny = report("stanford-bunny.obj.gz");
+  EXPECT_EQ(bunny.boundary_edges.count, 223u);
+  EXPECT_EQ(bunny.unreferenced_vertices.count, 1113u);
+  EXPECT_FALSE(bunny.closed());
+
+  const SurfaceReport teapot = report("teapot.obj.gz");
+  EXPECT_EQ(teapot.boundary_edges.count, 1036u);
+  EXPECT_EQ(teapot.components, 4u);
+
+  const SurfaceReport beetle = report("beetle.obj.gz");
+  EXPECT_EQ(beetle.non_manifold_edges.count, 47u);
+  EXPECT_EQ(beetle.boundary_edges.count, 296u);
+  EXPECT_EQ(beetle.components, 2u);
+
+  for (const char* file : {"stanford-bunny.obj.gz", "teapot.obj.gz", "beetle.obj.gz"}) {
+    const TriangleMesh mesh = read_triangle_mesh(*dir + "/invalid/" + file);
+    EXPECT_THROW(require_closed_surface(mesh), MeshError) << file;
+    EXPECT_THROW(dual_graph(mesh), MeshError) << file;
+  }
+
+  // cow: closed and edge-manifold, vertex 253 pinched; accepted and converted.
+  const TriangleMesh cow = read_triangle_mesh(*dir + "/invalid/cow.obj.gz");
+  const SurfaceReport r = inspect_surface(cow);
+  EXPECT_TRUE(r.closed());
+  EXPECT_EQ(r.pinched_vertices.first, std::vector<VertexId>{253});
+  EXPECT_EQ(r.euler_characteristic, 1);
+  EXPECT_NO_THROW(require_closed_surface(cow));
+  try {
+    require_closed_surface(cow, {.allow_pinched_vertices = false});
+    ADD_FAILURE() << "pinched vertex accepted";
+  } catch (const MeshError& e) {
+    EXPECT_NE(std::string(e.what()).find("pinched vertex 253"), std::string::npos) << e.what();
+  }
+  const CubicGraph dual = dual_graph(cow);
+  EXPECT_NO_THROW(validate_connected_bridgeless(dual));
+  const Result result = perfect_matching(dual, {.algorithm = Algorithm::lemon});
+  const QuadCheck check = check_quad_mesh(cow, quads_from_matching(cow, dual, result.matching));
+  EXPECT_TRUE(check.ok()) << check.problem;
+}
+
+}  // namespace
+}  // namespace petersen
