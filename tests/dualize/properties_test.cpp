@@ -1,0 +1,57 @@
+// RapidCheck: every generated closed surface goes mesh -> surface check -> dual -> LEMON matching
+// -> quads, and every step is verified.
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/surface_check.hpp"
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/graph/connectivity.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+
+namespace petersen {
+namespace {
+
+void check_pipeline(const TriangleMesh& mesh, std::uint32_t genus) {
+  require_closed_surface(mesh,
+                         {.allow_pinched_vertices = false, .allow_several_components = false});
+  const SurfaceReport report = inspect_surface(mesh);
+  RC_ASSERT(report.genus == std::optional<std::uint32_t>(genus));
+  RC_ASSERT(report.euler_characteristic == 2 - 2 * std::int64_t{genus});
+  const Dual dual = build_dual(mesh);
+  validate_connected_bridgeless(dual.graph);
+  for (FaceId t = 0; t < mesh.triangles.size(); ++t) {
+    for (int k = 0; k < 3; ++k) {
+      const EdgeId e = dual.dual_edge(t, k);
+      RC_ASSERT(dual.side(e, 0) == 3 * t + k || dual.side(e, 1) == 3 * t + k);
+    }
+  }
+  const Result result = perfect_matching(dual.graph, {.algorithm = Algorithm::lemon});
+  const MatchingCheck matching = verify_perfect_matching(dual.graph, result.matching);
+  RC_ASSERT(matching.ok());
+  const QuadCheck quads =
+      check_quad_mesh(mesh, quads_from_matching(mesh, dual.graph, result.matching));
+  RC_ASSERT(quads.ok());
+}
+
+RC_GTEST_PROP(SurfacePipeline, RandomClosedSurfacesOfGenusUpTo30, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
+  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  check_pipeline(random_closed_surface(genus, splits, flips, seed), genus);
+}
+
+RC_GTEST_PROP(SurfacePipeline, VoxelPlates, ()) {
+  PlateSpec spec;
+  spec.holes_x = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.dents = *rc::gen::arbitrary<bool>();
+  check_pipeline(voxel_plate(spec), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+}
+
+}  // namespace
+}  // namespace petersen
