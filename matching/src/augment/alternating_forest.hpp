@@ -15,7 +15,10 @@
 // collected, since they are exactly the new matching edges on it.
 //
 // A tree dies when its root gets matched; a node of a dead tree counts as unlabelled, so several
-// trees can grow at once and keep growing after two of them augmented.
+// trees can grow at once and keep growing after two of them augmented. An even node that met an
+// odd node of another tree is remembered in that tree's blocked list and queued again when that
+// tree dies, so when the queue runs dry the forest is a complete Edmonds forest: no augmenting
+// path is left.
 
 #include <algorithm>
 #include <memory>
@@ -28,6 +31,7 @@
 namespace petersen::augment_detail {
 
 enum Label : std::uint8_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
+inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
 template <class Graph>
 class AlternatingForest {
@@ -42,28 +46,24 @@ class AlternatingForest {
         base_(std::make_unique_for_overwrite<NodeId[]>(mate.size())),
         pred_edge_(std::make_unique_for_overwrite<EdgeId[]>(mate.size())),
         bridge_edge_(std::make_unique_for_overwrite<EdgeId[]>(mate.size())),
-        bridge_side_(std::make_unique_for_overwrite<NodeId[]>(mate.size())) {}
+        bridge_side_(std::make_unique_for_overwrite<NodeId[]>(mate.size())),
+        blocked_head_(std::make_unique_for_overwrite<std::uint32_t[]>(mate.size())) {}
 
   /// Forgets every label: the paper's O(n) reset before each search.
   void clear_all() {
     std::fill_n(label_.get(), mate_.size(), unlabelled);
     std::fill_n(mark_.get(), mate_.size(), 0u);
     std::iota(base_.get(), base_.get() + mate_.size(), NodeId{0});
-    forget_touched();
-  }
-
-  /// Forgets the labels given since the last reset, in time proportional to their number.
-  void clear_touched() {
-    for (NodeId v : touched_) {
-      label_[v] = unlabelled;
-      mark_[v] = 0;
-    }
-    forget_touched();
+    blocked_.clear();
+    queue_.clear();
+    head_ = 0;
+    stamp_ = 0;
   }
 
   /// Starts a tree at free node r.
   void add_root(NodeId r) {
     give(r, even, r);
+    blocked_head_[r] = kNone;
     queue_.push_back(r);
   }
 
@@ -91,6 +91,7 @@ class AlternatingForest {
             continue;
           }
         } else if (label_[y] == odd) {
+          if (root_[y] != root_[x]) block(x, root_[y]);
           continue;
         } else if (root_[y] != root_[x]) {
           augment(x, y, e);
@@ -116,15 +117,7 @@ class AlternatingForest {
     label_[v] = label;
     root_[v] = root;
     base_[v] = v;
-    touched_.push_back(v);
     ++stats_.nodes_labelled;
-  }
-
-  void forget_touched() {
-    touched_.clear();
-    queue_.clear();
-    head_ = 0;
-    stamp_ = 0;
   }
 
   // Base of v's blossom (path halving).
@@ -170,17 +163,32 @@ class AlternatingForest {
     }
   }
 
-  // Augments along e = (x, y) plus the tree paths from x and (if labelled) y to their roots.
+  // Augments along e = (x, y) plus the tree paths from x and (if labelled) y to their roots;
+  // both trees die, and the nodes they blocked are queued again.
   void augment(NodeId x, NodeId y, EdgeId e) {
     ++stats_.augmenting_paths;
     path_edges_.clear();
     path_edges_.push_back(e);
     collect(x, root_[x]);
-    if (alive(y)) collect(y, root_[y]);
+    const bool y_in_tree = alive(y);
+    if (y_in_tree) collect(y, root_[y]);
     for (EdgeId f : path_edges_) {
       auto [a, c] = graph_.endpoints(f);
       mate_[a] = mate_[c] = f;
     }
+    release(root_[x]);
+    if (y_in_tree) release(root_[y]);
+  }
+
+  // Even node x met an odd node of the tree rooted at r.
+  void block(NodeId x, NodeId r) {
+    blocked_.push_back({x, blocked_head_[r]});
+    blocked_head_[r] = static_cast<std::uint32_t>(blocked_.size() - 1);
+  }
+
+  void release(NodeId r) {
+    for (std::uint32_t i = blocked_head_[r]; i != kNone; i = blocked_[i].next)
+      queue_.push_back(blocked_[i].node);
   }
 
   // Tarjan's path(v, w) from even node v up to its ancestor w, an alternating path that starts
@@ -218,7 +226,12 @@ class AlternatingForest {
   std::unique_ptr<EdgeId[]> pred_edge_;  // odd node: the edge it was labelled over
   std::unique_ptr<EdgeId[]> bridge_edge_;
   std::unique_ptr<NodeId[]> bridge_side_;
-  std::vector<NodeId> touched_;
+  std::unique_ptr<std::uint32_t[]> blocked_head_;  // root: first entry of its blocked list
+  struct Blocked {
+    NodeId node;
+    std::uint32_t next;
+  };
+  std::vector<Blocked> blocked_;
   std::vector<NodeId> queue_;
   std::size_t head_ = 0;
   std::uint32_t stamp_ = 0;

@@ -32,17 +32,11 @@ AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
     return stats;
   }
   // Local: all free nodes grow their trees at once, breadth-first, so the nearest pairs meet
-  // first and every tree stops as soon as it augments. A round that augmented may have left trees
-  // stuck against a dead one, so rounds repeat until one finds nothing: that round was a complete
-  // Edmonds search, and the matching is maximum.
-  while (free_nodes.size() >= 2) {
-    for (NodeId r : free_nodes) forest.add_root(r);
-    ++stats.searches;
-    const std::uint64_t found = forest.grow(/*stop_at_first=*/false);
-    forest.clear_touched();
-    if (found == 0) break;
-    std::erase_if(free_nodes, [&](NodeId v) { return mate[v] != kNoEdge; });
-  }
+  // first, every tree stops as soon as it augments, and a tree blocked by another resumes when
+  // that one dies. One growth is a complete Edmonds search, and it resets only what it labelled.
+  for (NodeId r : free_nodes) forest.add_root(r);
+  stats.searches = free_nodes.size();
+  forest.grow(/*stop_at_first=*/false);
   return stats;
 }
 
