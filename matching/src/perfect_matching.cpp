@@ -7,6 +7,7 @@
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_adapter/lemon_matching.hpp"
 #include "petersen/matching/augment.hpp"
+#include "reduction/match_by_reductions.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen {
@@ -45,6 +46,16 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
   result.stats.augmenting_paths = augmented.augmenting_paths;
   result.stats.blossoms = augmented.blossoms;
   result.stats.nodes_labelled = augmented.nodes_labelled;
+}
+
+// Frink's reductions (paper §3.2, Appendix A): a one-step algorithm, all of it "initial".
+void match_by_reductions(const CubicGraph& graph, const Options& options, Result& result) {
+  ReductionResult r = reduction::match_by_reductions(graph, kNoEdge, {.chooser = options.algorithm});
+  result.matching = std::move(r.matching);
+  result.stats.initial_seconds = r.stats.setup_seconds + r.stats.reduce_seconds + r.stats.lift_seconds;
+  result.stats.reductions = r.stats.reductions + r.stats.digon_reductions;
+  for (int k = 0; k < 3; ++k) result.stats.lift_cases[k] = r.stats.lift_cases[k];
+  result.stats.replacement_searches = r.stats.replacement_searches;
 }
 
 }  // namespace
@@ -87,6 +98,9 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
     case Algorithm::sg:
     case Algorithm::ps:
       match_greedily_then_augment(graph, options, result);
+      break;
+    case Algorithm::frink:
+      match_by_reductions(graph, options, result);
       break;
     default:
       throw std::invalid_argument("algorithm '" + std::string(to_string(options.algorithm)) +
