@@ -187,7 +187,10 @@ std::string describe(const SurfaceReport& r) {
 }
 
 void require_closed_surface(const TriangleMesh& mesh, const SurfaceRequirements& requirements) {
-  const SurfaceReport r = inspect_surface(mesh);
+  require_closed_surface(inspect_surface(mesh), requirements);
+}
+
+void require_closed_surface(const SurfaceReport& r, const SurfaceRequirements& requirements) {
   auto fail = [&](const std::string& what) { throw MeshError("not a closed surface: " + what); };
   auto edge = [](const char* what, EdgeRef e, std::uint64_t count) {
     return std::string(what) + " edge " + edge_text(e) + " (" + std::to_string(count) +
