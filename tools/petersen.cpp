@@ -46,6 +46,7 @@ int quad(const QuadArgs& args) {
   RunReport report;
   report.input = args.input;
   report.output = args.output;
+  mesh_format_of(args.output);  // an unknown output format fails before any work
   Clock total, clock;
   TriangleMesh mesh = read_triangle_mesh(args.input);
   report.load_seconds = clock.lap();
