@@ -1,0 +1,44 @@
+#pragma once
+// Link-cut trees (Sleator and Tarjan, J. Comput. Syst. Sci. 26, 1983): a forest of rooted trees
+// under link, cut and evert, with roots and lowest common ancestors, all O(log n) amortized.
+
+#include <cstdint>
+#include <vector>
+
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+/// A dynamic forest on nodes 0..n-1 in flat arrays: splay trees over preferred paths with a
+/// reversal bit for evert. Splaying is iterative. Every operation is O(log n) amortized.
+class LinkCutTree {
+ public:
+  explicit LinkCutTree(std::uint32_t node_count);
+
+  std::uint32_t node_count() const { return static_cast<std::uint32_t>(parent_.size()); }
+  /// Makes u the root of its tree.
+  void evert(NodeId u);
+  /// Adds the edge {u, v}; u and v must be in different trees. u becomes a child of v.
+  void link(NodeId u, NodeId v);
+  /// Removes the edge {u, v}, which must be in the forest.
+  void cut(NodeId u, NodeId v);
+  /// The root of u's tree.
+  NodeId find_root(NodeId u);
+  bool connected(NodeId u, NodeId v) { return find_root(u) == find_root(v); }
+  /// The lowest common ancestor of u and v under the current roots; they must be connected.
+  NodeId lca(NodeId u, NodeId v);
+
+ private:
+  bool is_splay_root(NodeId x) const;
+  void push(NodeId x);
+  void rotate(NodeId x);
+  void splay(NodeId x);
+  NodeId access(NodeId x);  // returns the last node where the path to the root was switched
+
+  std::vector<NodeId> child_;   // 2 per node: left (toward the root), right
+  std::vector<NodeId> parent_;  // splay parent, or path parent for a splay root
+  std::vector<std::uint8_t> reversed_;
+  std::vector<NodeId> path_;  // scratch for splay's top-down push
+};
+
+}  // namespace petersen

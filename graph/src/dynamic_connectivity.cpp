@@ -1,0 +1,175 @@
+#include "petersen/graph/dynamic_connectivity.hpp"
+
+#include <algorithm>
+#include <utility>
+
+#include "euler_tour_forest.hpp"
+
+namespace petersen {
+
+using detail::EttNode;
+using detail::kNoEtt;
+
+namespace {
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+constexpr int kNonTreeFlag = 0;  // a vertex node with non-tree edges of its level
+constexpr int kTreeFlag = 1;     // an arc of a tree edge whose level is this forest's level
+
+// Makes room for index `i` in the block (base, capacity) of a pool, moving it to the end.
+void reserve_block(std::vector<std::uint32_t>& pool, std::uint32_t& base, std::uint32_t& capacity,
+                   std::uint32_t i) {
+  if (i < capacity) return;
+  const std::uint32_t grown = std::max(i + 1, 2 * capacity);
+  const auto fresh = static_cast<std::uint32_t>(pool.size());
+  pool.resize(pool.size() + grown, kNone);
+  std::copy_n(pool.begin() + base, capacity, pool.begin() + fresh);
+  base = fresh;
+  capacity = grown;
+}
+}  // namespace
+
+DynamicConnectivity::DynamicConnectivity(std::uint32_t node_count, std::uint32_t edge_capacity)
+    : ett_(std::make_unique<detail::EulerTourForest>()),
+      ends_(2 * std::size_t{edge_capacity}, kNoNode),
+      level_(edge_capacity, 0),
+      state_(edge_capacity, State::absent),
+      next_(2 * std::size_t{edge_capacity}, kNone),
+      prev_(2 * std::size_t{edge_capacity}, kNone),
+      vertex_block_(node_count, 0),
+      vertex_capacity_(node_count, 0),
+      arc_block_(edge_capacity, 0),
+      arc_capacity_(edge_capacity, 0) {
+  for (NodeId v = 0; v < node_count; ++v) vertex_node(v, 0);
+}
+
+DynamicConnectivity::~DynamicConnectivity() = default;
+DynamicConnectivity::DynamicConnectivity(DynamicConnectivity&&) noexcept = default;
+DynamicConnectivity& DynamicConnectivity::operator=(DynamicConnectivity&&) noexcept = default;
+
+std::uint32_t DynamicConnectivity::vertex_node(NodeId v, int level) {
+  reserve_block(pool_, vertex_block_[v], vertex_capacity_[v], static_cast<std::uint32_t>(level));
+  if (const std::uint32_t x = pool_[vertex_block_[v] + level]; x != kNone) return x;
+  const EttNode x = ett_->make_vertex(v);
+  pool_[vertex_block_[v] + level] = x;
+  if (head_.size() <= x) head_.resize(std::size_t{x} + 1, kNone);
+  return x;
+}
+
+std::uint32_t& DynamicConnectivity::arc(EdgeId e, int level, int direction) {
+  reserve_block(pool_, arc_block_[e], arc_capacity_[e], static_cast<std::uint32_t>(2 * level + 1));
+  return pool_[arc_block_[e] + 2 * level + direction];
+}
+
+void DynamicConnectivity::link_tree_edge(EdgeId e, int level) {
+  const EttNode x = vertex_node(endpoint(e, 0), level);
+  const EttNode y = vertex_node(endpoint(e, 1), level);
+  const EttNode a = ett_->make_arc(e), b = ett_->make_arc(e);
+  arc(e, level, 0) = a;
+  arc(e, level, 1) = b;
+  ett_->link(x, y, a, b);
+  if (level == level_[e]) ett_->set_flag(a, kTreeFlag, true);
+}
+
+void DynamicConnectivity::add_non_tree(EdgeId e) {
+  for (int side = 0; side < 2; ++side) {
+    const EttNode x = vertex_node(endpoint(e, side), level_[e]);
+    const std::uint32_t h = 2 * e + side;
+    next_[h] = head_[x];
+    prev_[h] = kNone;
+    if (head_[x] != kNone) {
+      prev_[head_[x]] = h;
+    } else {
+      ett_->set_flag(x, kNonTreeFlag, true);
+    }
+    head_[x] = h;
+  }
+}
+
+void DynamicConnectivity::remove_non_tree(EdgeId e) {
+  for (int side = 0; side < 2; ++side) {
+    const EttNode x = vertex_node(endpoint(e, side), level_[e]);
+    const std::uint32_t h = 2 * e + side;
+    if (prev_[h] != kNone) {
+      next_[prev_[h]] = next_[h];
+    } else {
+      head_[x] = next_[h];
+    }
+    if (next_[h] != kNone) prev_[next_[h]] = prev_[h];
+    if (head_[x] == kNone) ett_->set_flag(x, kNonTreeFlag, false);
+  }
+}
+
+bool DynamicConnectivity::insert_edge(EdgeId e, NodeId u, NodeId v) {
+  ends_[2 * std::size_t{e}] = u;
+  ends_[2 * std::size_t{e} + 1] = v;
+  level_[e] = 0;
+  if (u != v && !connected(u, v)) {
+    state_[e] = State::tree;
+    link_tree_edge(e, 0);
+    return true;
+  }
+  state_[e] = State::non_tree;
+  add_non_tree(e);
+  return false;
+}
+
+DynamicConnectivity::Deletion DynamicConnectivity::delete_edge(EdgeId e) {
+  const State state = state_[e];
+  if (state == State::non_tree) {
+    remove_non_tree(e);
+    state_[e] = State::absent;
+    return {};
+  }
+  state_[e] = State::absent;
+  ++replacement_searches_;
+  const int top = level_[e];
+  for (int i = 0; i <= top; ++i) {
+    const EttNode a = arc(e, i, 0), b = arc(e, i, 1);
+    ett_->cut(a, b);
+    ett_->free_arc(a);
+    ett_->free_arc(b);
+    arc(e, i, 0) = arc(e, i, 1) = kNone;
+  }
+  // HDT: search the levels from the edge's own downward; a replacement of level i is linked
+  // into F_0..F_i.
+  for (int i = top; i >= 0; --i) {
+    if (const EdgeId r = replace(endpoint(e, 0), endpoint(e, 1), i); r != kNoEdge) return {true, r};
+  }
+  return {true, kNoEdge};
+}
+
+EdgeId DynamicConnectivity::replace(NodeId u, NodeId v, int level) {
+  EttNode small = vertex_node(u, level), large = vertex_node(v, level);
+  if (ett_->vertex_count(ett_->root(small)) > ett_->vertex_count(ett_->root(large)))
+    std::swap(small, large);
+  // The smaller tree's tree edges of this level rise one level (it is at most half as large).
+  for (EttNode a; (a = ett_->find_flagged(ett_->root(small), kTreeFlag)) != kNoEtt;) {
+    const EdgeId f = ett_->owner(a);
+    ett_->set_flag(a, kTreeFlag, false);
+    level_[f] = static_cast<std::uint8_t>(level + 1);
+    link_tree_edge(f, level + 1);
+  }
+  // Its non-tree edges of this level either reconnect or rise one level.
+  for (EttNode x; (x = ett_->find_flagged(ett_->root(small), kNonTreeFlag)) != kNoEtt;) {
+    while (head_[x] != kNone) {
+      const std::uint32_t h = head_[x];
+      const EdgeId g = h / 2;
+      const NodeId y = endpoint(g, 1 - static_cast<int>(h % 2));
+      remove_non_tree(g);
+      if (!ett_->same_tree(vertex_node(y, level), small)) {
+        state_[g] = State::tree;
+        for (int i = 0; i <= level; ++i) link_tree_edge(g, i);
+        return g;
+      }
+      level_[g] = static_cast<std::uint8_t>(level + 1);
+      add_non_tree(g);
+    }
+  }
+  return kNoEdge;
+}
+
+bool DynamicConnectivity::connected(NodeId u, NodeId v) {
+  return u == v || ett_->same_tree(vertex_node(u, 0), vertex_node(v, 0));
+}
+
+}  // namespace petersen

@@ -1,0 +1,55 @@
+#pragma once
+// Euler-tour trees (Henzinger and King, J. ACM 46, 1999) on splay trees in flat arrays: each tree
+// of a forest is the cyclic sequence of its vertex nodes and of two arc nodes per edge. Used by
+// dynamic connectivity, one forest per level, all in one node pool.
+
+#include <cstdint>
+#include <vector>
+
+namespace petersen::detail {
+
+using EttNode = std::uint32_t;
+inline constexpr EttNode kNoEtt = 0xFFFFFFFFu;
+
+class EulerTourForest {
+ public:
+  /// A new one-vertex tree; `owner` is returned by owner(). O(1).
+  EttNode make_vertex(std::uint32_t owner);
+  /// A new arc node, not yet in any tree (reuses freed arcs). O(1).
+  EttNode make_arc(std::uint32_t owner);
+  void free_arc(EttNode a) { free_.push_back(a); }
+
+  std::uint32_t owner(EttNode x) const { return owner_[x]; }
+  /// The splay root of x's tree (x is splayed to it): a handle comparable while nothing changes.
+  EttNode root(EttNode x);
+  /// Whether x and y lie in one tree. O(log n) amortized.
+  bool same_tree(EttNode x, EttNode y);
+  /// Number of vertex nodes in the tree whose splay root is r.
+  std::uint32_t vertex_count(EttNode r) const { return count_[r]; }
+  /// Joins the trees of vertex nodes x and y (different trees) by the arcs xy and yx.
+  void link(EttNode x, EttNode y, EttNode xy, EttNode yx);
+  /// Removes the edge with arcs a and b (both in one tree); the arcs leave all trees.
+  void cut(EttNode a, EttNode b);
+  /// Sets or clears flag bit `bit` (0 or 1) of node x, and the aggregates above it.
+  void set_flag(EttNode x, int bit, bool on);
+  bool flag(EttNode x, int bit) const { return (own_[x] >> bit) & 1; }
+  /// Some node with flag `bit` in the tree whose splay root is r, or kNoEtt. O(log n) amortized.
+  EttNode find_flagged(EttNode r, int bit);
+
+ private:
+  EttNode make_node(std::uint32_t owner, bool vertex);
+  void update(EttNode x);
+  void rotate(EttNode x);
+  void splay(EttNode x);
+  EttNode join(EttNode a, EttNode b);  // roots (or kNoEtt) of two sequences; returns the root
+  EttNode detach_left(EttNode x);      // x must be a root; returns its old left subtree's root
+  EttNode detach_right(EttNode x);
+  EttNode reroot(EttNode x);  // the tour starting at x; returns the new root
+
+  std::vector<EttNode> left_, right_, parent_;
+  std::vector<std::uint32_t> count_, owner_;
+  std::vector<std::uint8_t> own_, aggregate_;  // bits 0, 1 the flags; bit 2 of own_: vertex
+  std::vector<EttNode> free_;
+};
+
+}  // namespace petersen::detail
