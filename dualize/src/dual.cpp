@@ -50,8 +50,8 @@ Dual build_dual(const TriangleMesh& mesh) {
 
   // Dual edge e is written over bucket[e]: by then the 2e + 2 entries its edges consumed lie
   // behind the read position, so the bucket's memory doubles as the edge list.
-  Dual dual;
-  dual.across.resize(halfedge_count);
+  // node_edges[3t + k], the dual edge across edge k of triangle t, keeps the triangle's order.
+  std::vector<EdgeId> node_edges(halfedge_count);
   auto& edges = bucket;
   EdgeId edge_count = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) {
@@ -78,16 +78,19 @@ Dual build_dual(const TriangleMesh& mesh) {
                         std::to_string(t1) + " and " + std::to_string(h2 / 3) + " both run from " +
                         std::to_string(a) + " to " + std::to_string(b));
       }
-      dual.across[h1] = dual.across[h2] = edge_count;
+      node_edges[h1] = node_edges[h2] = edge_count;
       edges[edge_count++] = {h1 / 3, h2 / 3};
       group = end;
     }
   }
-  edges.resize(edge_count);
-  // Every halfedge has exactly one twin in another triangle, so every node has degree 3 and
-  // there are no loops: from_edges cannot fail here.
-  dual.graph = CubicGraph::from_edges(face_count, edges);
-  return dual;
+  std::vector<NodeId> edge_ends(2 * std::size_t{edge_count});
+  for (EdgeId e = 0; e < edge_count; ++e) {
+    edge_ends[2 * e] = edges[e][0];
+    edge_ends[2 * e + 1] = edges[e][1];
+  }
+  bucket = {};
+  // Every halfedge has exactly one twin in another triangle: from_incidence cannot fail here.
+  return Dual{CubicGraph::from_incidence(std::move(node_edges), std::move(edge_ends))};
 }
 
 CubicGraph dual_graph(const TriangleMesh& mesh) {

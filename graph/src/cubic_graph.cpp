@@ -17,10 +17,12 @@ CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
                        std::to_string(a) + ", " + std::to_string(b) + "; " +
                        std::to_string(node_count) + " nodes)");
     }
-    if (a == b) throw GraphError("edge " + std::to_string(e) + " is a loop at node " + std::to_string(a));
+    if (a == b)
+      throw GraphError("edge " + std::to_string(e) + " is a loop at node " + std::to_string(a));
     for (NodeId v : {a, b}) {
       if (degree[v] == 3) {
-        throw GraphError("node " + std::to_string(v) + " has degree > 3 (edge " + std::to_string(e) + ")");
+        throw GraphError("node " + std::to_string(v) + " has degree > 3 (edge " +
+                         std::to_string(e) + ")");
       }
       g.node_edges_[3 * std::size_t{v} + degree[v]++] = e;
     }
@@ -33,6 +35,48 @@ CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
                        ", not 3");
     }
   }
+  return g;
+}
+
+CubicGraph CubicGraph::from_incidence(std::vector<EdgeId> node_edges,
+                                      std::vector<NodeId> edge_ends) {
+  if (node_edges.size() % 3 != 0 || edge_ends.size() != node_edges.size()) {
+    throw GraphError(
+        "a cubic graph has 3 edge slots per node and as many edge ends (3n/2 edges); got " +
+        std::to_string(node_edges.size()) + " slots and " + std::to_string(edge_ends.size()) +
+        " ends");
+  }
+  const std::size_t node_count = node_edges.size() / 3, edge_count = edge_ends.size() / 2;
+  // seen[e] bit i: end i of edge e has been met in a slot of that node.
+  std::vector<std::uint8_t> seen(edge_count, 0);
+  for (EdgeId e = 0; e < edge_count; ++e) {
+    if (edge_ends[2 * e] >= node_count || edge_ends[2 * e + 1] >= node_count) {
+      throw GraphError("edge " + std::to_string(e) + " has an endpoint out of range");
+    }
+    if (edge_ends[2 * e] == edge_ends[2 * e + 1]) {
+      throw GraphError("edge " + std::to_string(e) + " is a loop at node " +
+                       std::to_string(edge_ends[2 * e]));
+    }
+  }
+  for (std::size_t slot = 0; slot < node_edges.size(); ++slot) {
+    const NodeId v = static_cast<NodeId>(slot / 3);
+    const EdgeId e = node_edges[slot];
+    const int end = e >= edge_count             ? -1
+                    : edge_ends[2 * e] == v     ? 0
+                    : edge_ends[2 * e + 1] == v ? 1
+                                                : -1;
+    if (end < 0 || (seen[e] >> end & 1)) {
+      throw GraphError("node " + std::to_string(v) + " lists edge " + std::to_string(e) +
+                       (end < 0 ? ", which is out of range or not incident to it"
+                                : " twice, or an edge whose end there is listed already"));
+    }
+    seen[e] |= static_cast<std::uint8_t>(1 << end);
+  }
+  // Every slot matched a distinct edge end and there are exactly 2·edge_count slots, so every
+  // end of every edge is listed once.
+  CubicGraph g;
+  g.node_edges_ = std::move(node_edges);
+  g.edge_ends_ = std::move(edge_ends);
   return g;
 }
 

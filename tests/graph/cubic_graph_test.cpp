@@ -54,5 +54,23 @@ TEST(CubicGraph, RejectsEndpointOutOfRange) {
   EXPECT_THROW(CubicGraph::from_edges(2, edges), GraphError);
 }
 
+TEST(CubicGraph, FromIncidenceKeepsTheCallersSlotOrder) {
+  // Theta graph with node 1 listing its edges in reverse.
+  CubicGraph g = CubicGraph::from_incidence({0, 1, 2, 2, 1, 0}, {0, 1, 0, 1, 0, 1});
+  EXPECT_EQ(g.incident_edge(1, 0), 2u);
+  EXPECT_EQ(g.other_end(2, 1), 0u);
+}
+
+TEST(CubicGraph, FromIncidenceRejectsInconsistentSlots) {
+  // Node 0 lists edge 0 twice and node 1 never lists it.
+  EXPECT_THROW(CubicGraph::from_incidence({0, 0, 1, 1, 2, 2}, {0, 1, 0, 1, 0, 1}), GraphError);
+  // Node 1 lists edge 0, which joins 0 and 2 only.
+  EXPECT_THROW(CubicGraph::from_incidence({0, 1, 2, 0, 3, 4, 1, 5, 3, 2, 4, 5},
+                                          {0, 2, 0, 2, 0, 3, 1, 2, 1, 3, 2, 3}),
+               GraphError);
+  EXPECT_THROW(CubicGraph::from_incidence({0, 1, 2, 0, 1, 2}, {0, 0, 0, 1, 0, 1}), GraphError);
+  EXPECT_THROW(CubicGraph::from_incidence({0, 1}, {0, 1}), GraphError);
+}
+
 }  // namespace
 }  // namespace petersen

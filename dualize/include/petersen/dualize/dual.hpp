@@ -11,24 +11,19 @@ namespace petersen {
 /// A halfedge is edge k of triangle t, numbered 3t + k; it runs from corner k to corner (k+1)%3.
 using HalfedgeId = std::uint32_t;
 
-/// The dual graph together with its correspondence to the mesh edges.
-///
-/// Why the correspondence is stored rather than implied by `graph.incident_edge(t, k)`:
-/// CubicGraph::from_edges orders a node's edges by edge id, and no single edge numbering puts
-/// every triangle's three dual edges in the order of its three edges (three triangles around a
-/// vertex of degree 3, each starting at that vertex, already form a cycle of constraints). So
-/// `across` gives the dual edge of each halfedge, and side() the halfedge of each dual edge end.
+/// The dual graph with its correspondence to the mesh: node t's k-th incident edge,
+/// graph.incident_edge(t, k), is the dual of edge k of triangle t (corners k, (k+1)%3).
 struct Dual {
   CubicGraph graph;
-  /// across[3t + k]: the dual edge crossing edge k of triangle t.
-  std::vector<EdgeId> across;
 
-  EdgeId dual_edge(FaceId t, int k) const { return across[3 * std::size_t{t} + k]; }
+  EdgeId dual_edge(FaceId t, int k) const { return graph.incident_edge(t, k); }
   /// The halfedge that dual edge e crosses in triangle graph.endpoints(e)[end]; the halfedges of
   /// the two ends run along the same mesh edge in opposite directions. O(1).
   HalfedgeId side(EdgeId e, int end) const {
     const FaceId t = graph.endpoints(e)[end];
-    const int k = across[3 * std::size_t{t}] == e ? 0 : across[3 * std::size_t{t} + 1] == e ? 1 : 2;
+    const auto slots = graph.incident_edges(t);
+    // e has two distinct ends, each listed once, so exactly one slot of t names it.
+    const int k = slots[0] == e ? 0 : slots[1] == e ? 1 : 2;
     return 3 * t + static_cast<HalfedgeId>(k);
   }
 };

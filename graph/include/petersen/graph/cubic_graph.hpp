@@ -33,12 +33,23 @@ class CubicGraph {
   static CubicGraph from_edges(std::uint32_t node_count,
                                std::span<const std::array<NodeId, 2>> edges);
 
+  /// Builds the graph from both arrays at once, so the caller chooses the order of each node's
+  /// three edges (the dual of a mesh lists triangle t's edges in the order of its corners). The
+  /// arrays are taken over, not copied. Throws GraphError naming the first node slot or edge that
+  /// disagrees: an edge out of range, a loop, an edge listed at a node that is not its endpoint,
+  /// or an edge not listed exactly once at each end. O(n).
+  static CubicGraph from_incidence(std::vector<EdgeId> node_edges, std::vector<NodeId> edge_ends);
+
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(node_edges_.size() / 3); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends_.size() / 2); }
 
-  std::array<NodeId, 2> endpoints(EdgeId e) const { return {edge_ends_[2 * e], edge_ends_[2 * e + 1]}; }
+  std::array<NodeId, 2> endpoints(EdgeId e) const {
+    return {edge_ends_[2 * e], edge_ends_[2 * e + 1]};
+  }
   /// The endpoint of e that is not v (v must be an endpoint of e).
-  NodeId other_end(EdgeId e, NodeId v) const { return edge_ends_[2 * e] ^ edge_ends_[2 * e + 1] ^ v; }
+  NodeId other_end(EdgeId e, NodeId v) const {
+    return edge_ends_[2 * e] ^ edge_ends_[2 * e + 1] ^ v;
+  }
   /// The three edges at v; a parallel edge appears once per copy.
   std::span<const EdgeId, 3> incident_edges(NodeId v) const {
     return std::span<const EdgeId, 3>(node_edges_.data() + 3 * std::size_t{v}, 3);
