@@ -100,6 +100,7 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
       match_greedily_then_augment(graph, options, result);
       break;
     case Algorithm::frink:
+    case Algorithm::ds:
       match_by_reductions(graph, options, result);
       break;
     default:

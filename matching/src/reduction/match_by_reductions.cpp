@@ -6,6 +6,7 @@
 #include <string>
 
 #include "petersen/graph/connectivity.hpp"
+#include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
 #include "stopwatch.hpp"
@@ -23,6 +24,9 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   switch (options.chooser) {
     case Algorithm::frink:
       chooser = std::make_unique<FrinkChooser>(components);
+      break;
+    case Algorithm::ds:
+      chooser = std::make_unique<DsChooser>(graph, graph.edge_count() + graph.node_count());
       break;
     default:
       throw std::invalid_argument("perfect_matching_avoiding: chooser '" +

@@ -1,0 +1,42 @@
+#include "reduction/ds_chooser.hpp"
+
+namespace petersen::reduction {
+
+DsChooser::DsChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
+    : connectivity_(graph.node_count(), edge_capacity), forest_(graph.node_count()) {
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const auto [a, b] = graph.endpoints(e);
+    insert(e, a, b);
+  }
+}
+
+void DsChooser::insert(EdgeId e, NodeId a, NodeId b) {
+  if (connectivity_.insert_edge(e, a, b)) forest_.link(a, b);
+}
+
+void DsChooser::remove(const ReductionGraph&, std::span<const EdgeId> edges) {
+  for (EdgeId e : edges) {
+    const DynamicConnectivity::Deletion d = connectivity_.delete_edge(e);
+    if (!d.was_tree_edge) continue;
+    forest_.cut(connectivity_.endpoint(e, 0), connectivity_.endpoint(e, 1));
+    if (d.replacement != kNoEdge)
+      forest_.link(connectivity_.endpoint(d.replacement, 0),
+                   connectivity_.endpoint(d.replacement, 1));
+  }
+}
+
+bool DsChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
+  const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
+  const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
+  if (!forest_.connected(x1, x2)) return !forest_.connected(x1, x3);  // split 13|24 or 14|23
+  forest_.evert(x1);
+  const NodeId l23 = forest_.lca(x2, x3), l24 = forest_.lca(x2, x4), l34 = forest_.lca(x3, x4);
+  // Rooted at x1, the quartet is 13|24 exactly when x2 and x4 meet below where x3 joins them.
+  return !(l23 == l34 && l24 != l23);
+}
+
+void DsChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {
+  for (EdgeId e : edges) insert(e, graph.end(e, 0), graph.end(e, 1));
+}
+
+}  // namespace petersen::reduction
