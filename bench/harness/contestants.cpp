@@ -1,0 +1,167 @@
+#include "contestants.hpp"
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+#include <chrono>
+#include <cstring>
+#include <stdexcept>
+
+#include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "verification_error.hpp"
+
+namespace petersen::bench {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void require_perfect(const CubicGraph& graph, const Matching& matching) {
+  const MatchingCheck check = verify_perfect_matching(graph, matching);
+  if (!check.ok()) throw VerificationError(check.message);
+}
+
+// The floor: one breadth-first search over every component of the dual graph.
+Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
+  const CubicGraph& graph = input.dual.graph;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<std::uint8_t> seen(graph.node_count(), 0);
+  std::vector<NodeId> queue(graph.node_count());
+  std::size_t tail = 0;
+  for (NodeId root = 0; root < graph.node_count(); ++root) {
+    if (seen[root]) continue;
+    seen[root] = 1;
+    std::size_t head = tail;
+    queue[tail++] = root;
+    while (head < tail) {
+      const NodeId v = queue[head++];
+      for (EdgeId e : graph.incident_edges(v)) {
+        const NodeId w = graph.other_end(e, v);
+        if (!seen[w]) {
+          seen[w] = 1;
+          queue[tail++] = w;
+        }
+      }
+    }
+  }
+  Measures measures;
+  measures.initial_seconds = seconds_since(start);
+  if (tail != graph.node_count()) throw std::logic_error("BFS missed nodes");
+  return measures;
+}
+
+// petersen's own algorithms, through the front door (the graph was validated once, up front).
+Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augment augment,
+                            std::uint64_t seed) {
+  const Result result = perfect_matching(
+      input.dual.graph,
+      {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
+  require_perfect(input.dual.graph, result.matching);
+  Measures measures;
+  measures.initial_seconds = result.stats.initial_seconds;
+  measures.augment_seconds = result.stats.augment_seconds;
+  measures.unpaired = result.stats.unpaired_after_initial;
+  measures.two_phase = algorithm == Algorithm::sg || algorithm == Algorithm::ps;
+  measures.augmenting_paths = result.stats.augmenting_paths;
+  measures.reductions = result.stats.reductions;
+  return measures;
+}
+
+// LEMON's MaxMatching through the C++17 adapter: greedyInit() then startSparse(), one step here
+// (the adapter's time includes copying the graph into a lemon::SmartGraph).
+Measures lemon_peer(const BenchInput& input, std::uint64_t) {
+  const CubicGraph& graph = input.dual.graph;
+  std::vector<std::array<std::uint32_t, 2>> edges(graph.edge_count());
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
+  const auto start = std::chrono::steady_clock::now();
+  Matching matching;
+  matching.mate_edge = lemon_adapter::maximum_matching(graph.node_count(), edges, true);
+  Measures measures;
+  measures.initial_seconds = seconds_since(start);
+  require_perfect(graph, matching);
+  return measures;
+}
+
+// Boost's edmonds_maximum_cardinality_matching, phase by phase as boost::matching() runs it:
+// extra_greedy_matching, then edmonds_augmenting_path_finder until no path is left. Boost's own
+// verifier, which edmonds_maximum_cardinality_matching runs last, is left out of the time.
+Measures boost_peer(const BenchInput& input, std::uint64_t) {
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+  using Vertex = boost::graph_traits<Graph>::vertex_descriptor;
+  const CubicGraph& graph = input.dual.graph;
+  Graph g(graph.node_count());
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const auto [a, b] = graph.endpoints(e);
+    boost::add_edge(a, b, g);
+  }
+  std::vector<Vertex> mate(graph.node_count());
+  Measures measures;
+  measures.two_phase = true;
+  auto start = std::chrono::steady_clock::now();
+  boost::extra_greedy_matching<Graph, Vertex*>::find_matching(g, mate.data());
+  measures.initial_seconds = seconds_since(start);
+  const Vertex none = boost::graph_traits<Graph>::null_vertex();
+  for (Vertex v : mate) measures.unpaired += v == none;
+  start = std::chrono::steady_clock::now();
+  boost::edmonds_augmenting_path_finder<Graph, Vertex*,
+                                        boost::property_map<Graph, boost::vertex_index_t>::type>
+      augmentor(g, mate.data(), boost::get(boost::vertex_index, g));
+  while (augmentor.augment_matching()) ++measures.augmenting_paths;
+  augmentor.get_current_matching(mate.data());
+  measures.augment_seconds = seconds_since(start);
+
+  // Boost names the mate node; both ends take the smallest edge id joining them.
+  Matching matching(graph.node_count());
+  for (NodeId v = 0; v < graph.node_count(); ++v) {
+    if (mate[v] == none) continue;
+    for (EdgeId e : graph.incident_edges(v))
+      if (graph.other_end(e, v) == mate[v] && e < matching.mate_edge[v]) matching.mate_edge[v] = e;
+  }
+  require_perfect(graph, matching);
+  return measures;
+}
+
+}  // namespace
+
+std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
+  std::vector<Contestant> list;
+  list.push_back({"bfs", "", false, true, 0xFFFFFFFFu, breadth_first_search});
+  for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps}) {
+    for (Augment augment : {Augment::local, Augment::faithful}) {
+      const std::string name =
+          std::string(to_string(algorithm)) + "-" + std::string(to_string(augment));
+      list.push_back({name, algorithm == Algorithm::sg ? "SG" : "PS", true, false, 0xFFFFFFFFu,
+                      [algorithm, augment](const BenchInput& input, std::uint64_t seed) {
+                        return petersen_algorithm(input, algorithm, augment, seed);
+                      }});
+    }
+  }
+  for (Algorithm algorithm : {Algorithm::ds, Algorithm::gw, Algorithm::frink}) {
+    list.push_back({std::string(to_string(algorithm)), algorithm == Algorithm::ds ? "DS" : "",
+                    false, false, algorithm == Algorithm::frink ? frink_max_nodes : 0xFFFFFFFFu,
+                    [algorithm](const BenchInput& input, std::uint64_t seed) {
+                      return petersen_algorithm(input, algorithm, Augment::local, seed);
+                    }});
+  }
+  list.push_back({"lemon", "", false, false, 0xFFFFFFFFu, lemon_peer});
+  list.push_back({"boost", "", false, false, 0xFFFFFFFFu, boost_peer});
+  return list;
+}
+
+bool is_available(const Contestant& contestant) {
+  // A tetrahedron, consistently oriented; its dual is K4.
+  const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
+  const Dual dual = build_dual(tetrahedron);
+  try {
+    contestant.run({tetrahedron, dual}, 1);
+  } catch (const std::invalid_argument& e) {
+    if (std::strstr(e.what(), "not built yet") != nullptr) return false;
+    throw;
+  }
+  return true;
+}
+
+}  // namespace petersen::bench

@@ -1,0 +1,40 @@
+#pragma once
+// The contestants of the bench: every matching algorithm petersen builds, the peers a user would
+// pick instead (LEMON, Boost), and a plain breadth-first search as the floor.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "measures.hpp"
+#include "petersen/dualize/dual.hpp"
+
+namespace petersen::bench {
+
+/// What every contestant runs on: a closed triangle mesh and its dual graph.
+struct BenchInput {
+  const TriangleMesh& mesh;
+  const Dual& dual;
+};
+
+struct Contestant {
+  std::string name;        ///< e.g. "ps-local", "lemon", "bfs"
+  std::string paper_name;  ///< the paper's name for it ("SG", "PS", "DS", "LRS"), or empty
+  bool seeded = false;     ///< runs differ by seed (randomized order), as SG and PS in the paper
+  bool floor = false;      ///< the BFS every total is compared with
+  std::uint32_t max_nodes = 0xFFFFFFFFu;  ///< larger inputs are skipped (quadratic oracles)
+  /// Runs once and returns the measures; every matching is checked by verify_perfect_matching
+  /// first, and a failure throws VerificationError. Throws std::invalid_argument("... not built
+  /// yet") when this build lacks the algorithm.
+  std::function<Measures(const BenchInput&, std::uint64_t seed)> run;
+};
+
+/// All contestants, floor first. `frink_max_nodes` bounds the O(n^2) Frink oracle.
+std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes);
+
+/// Whether this build has the contestant: it is run in-process on the dual of a tetrahedron
+/// (K4), and only a "not built yet" answer counts as absent.
+bool is_available(const Contestant& contestant);
+
+}  // namespace petersen::bench

@@ -1,0 +1,46 @@
+#pragma once
+// The bench's inputs: the shared real meshes, the paper's families A and B (Table 4.2), and a
+// doubling series of one surface for growth curves.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "paper_figures.hpp"
+#include "petersen/dualize/mesh.hpp"
+
+namespace petersen::bench {
+
+struct InputSpec {
+  std::string name;                      ///< "armadillo-sub2", "A5", "D3", ...
+  std::string group;                     ///< "mesh", "A", "B" or "doubling"
+  std::string note;                      ///< how it was made, e.g. "regular (not simplified)"
+  std::uint64_t expected_triangles = 0;  ///< known before loading (0 for files): sorts inputs
+  std::optional<std::uint64_t> expected_genus;  ///< what the generator promises
+  std::function<TriangleMesh()> load;
+};
+
+/// Every mesh file (.off, .obj, .ply, optionally .gz) directly in `directory`, smallest file
+/// first; the `invalid/` subfolder is not read. Empty when the directory does not exist.
+std::vector<InputSpec> shared_mesh_inputs(const std::string& directory);
+
+/// Members of family A (62×62 dents, genus 0) or B (70×50 through-holes, genus 3,500) named in
+/// `members` (1…5), each a plate fitted within a fraction of a percent of the paper's triangle
+/// count and generated directly at that size.
+std::vector<InputSpec> family_inputs(char family, const std::vector<int>& members);
+
+/// `steps` plates of the same shape (8×8 dents, genus 0) with 65,536·2^k triangles (k < steps),
+/// each fitted within a fraction of a percent.
+std::vector<InputSpec> doubling_inputs(std::uint32_t steps);
+
+/// V (referenced vertices), E, F and genus (from V − E + F = 2·components − 2g, components of
+/// the dual given) of a closed triangle mesh.
+struct MeshFacts {
+  std::uint64_t vertices = 0, edges = 0, triangles = 0;
+  std::int64_t genus = 0;
+};
+MeshFacts mesh_facts(const TriangleMesh& mesh, std::uint32_t components);
+
+}  // namespace petersen::bench

@@ -1,0 +1,25 @@
+#include "micro_inputs.hpp"
+
+#include <map>
+#include <memory>
+
+#include "petersen/dualize/surface_generators.hpp"
+
+namespace petersen::micro {
+
+const MicroInput& plate_input(std::uint64_t triangles) {
+  static std::map<std::uint64_t, std::unique_ptr<MicroInput>> cache;
+  auto& slot = cache[triangles];
+  if (!slot) {
+    // Subdivision s multiplies the triangles of the unsubdivided plate by s².
+    PlateSpec spec{8, 8, 1, true};
+    const std::uint64_t unit = voxel_plate(spec).triangles.size();
+    while (unit * (spec.subdivision + 1) * (spec.subdivision + 1) <= triangles) ++spec.subdivision;
+    slot = std::make_unique<MicroInput>();
+    slot->mesh = voxel_plate(spec);
+    slot->dual = build_dual(slot->mesh);
+  }
+  return *slot;
+}
+
+}  // namespace petersen::micro

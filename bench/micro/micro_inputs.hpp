@@ -1,0 +1,18 @@
+#pragma once
+// The meshes the micro-benchmarks run on: regular plates of about 2^k triangles, built once.
+
+#include <cstdint>
+
+#include "petersen/dualize/dual.hpp"
+
+namespace petersen::micro {
+
+/// A genus-0 plate with 8×8 dents (petersen's voxel_plate) of about `triangles` triangles, and
+/// its dual; built on first use and kept for the process.
+struct MicroInput {
+  TriangleMesh mesh;
+  Dual dual;
+};
+const MicroInput& plate_input(std::uint64_t triangles);
+
+}  // namespace petersen::micro
