@@ -82,6 +82,7 @@ RC_GTEST_PROP(Reductions, PerfectAvoidingTheForbiddenEdgeAndAsLargeAsLemonAndBoo
 }
 
 TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
+  std::uint64_t digons = 0;
   for (const CubicGraph& g : {theta_graph(), complete_k4(), complete_k33(), petersen_graph(),
                               prism(2), prism(7), necklace(1), necklace(5)}) {
     for (EdgeId f = 0; f < g.edge_count(); ++f)
@@ -90,8 +91,10 @@ TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
             perfect_matching_avoiding(g, f, {.chooser = chooser, .check_each_step = true});
         ASSERT_TRUE(verify_perfect_matching(g, r.matching).ok());
         for (NodeId v : g.endpoints(f)) ASSERT_NE(r.matching.mate_edge[v], f);
+        digons += r.stats.digon_reductions;
       }
   }
+  EXPECT_GT(digons, 0u);  // the digon contraction was exercised
 }
 
 TEST(Reductions, FrontDoorMatchesDisconnectedGraphs) {
