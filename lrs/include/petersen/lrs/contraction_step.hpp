@@ -1,0 +1,26 @@
+#pragma once
+// The contraction step of LRS (paper §3.3): edge contractions down to an irreducible
+// triangulation T′, recorded on a stack for the expansion step.
+
+#include <vector>
+
+#include "petersen/lrs/edge_contraction.hpp"
+
+namespace petersen::lrs {
+
+struct ContractionResult {
+  /// Every contraction in the order done; the expansion step undoes them from the back.
+  std::vector<ContractionRecord> stack;
+  /// The vertices of T′ in the order they were processed (the paper's u_m, ..., u_1).
+  std::vector<VertexId> processed;
+};
+
+/// Processes the live vertices in id order: contracts contractible edges incident on the vertex,
+/// which survives, until it is trapped (Definition 3.1); trapped vertices stay trapped (Lemma
+/// 3.1), so when every vertex is processed no edge is contractible and `tri` is irreducible: the
+/// tetrahedron at genus 0 (Proposition 3.1), at most 26g − 4 vertices at genus g > 0 (Theorem
+/// 3.1). The neighbours of the vertex being processed stay marked, so a link test costs the degree
+/// of the other end and a contraction the degree of the removed vertex. Iterative, O(V) memory.
+ContractionResult contract_to_irreducible(Triangulation& tri);
+
+}  // namespace petersen::lrs

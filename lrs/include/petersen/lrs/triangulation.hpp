@@ -1,0 +1,122 @@
+#pragma once
+// A mutable triangulation of a closed orientable surface in flat halfedge arrays: the structure
+// the contraction and expansion steps of LRS (paper §3.3) work on.
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen::lrs {
+
+/// Halfedge ids: edge e is halfedges 2e and 2e+1, so the twin of h is h ^ 1. Ids of vertices,
+/// edges, halfedges and faces never change; contraction kills elements and a vertex split revives
+/// exactly those, an edge flip keeps every id.
+using Halfedge = std::uint32_t;
+inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
+
+class Triangulation;
+struct ContractionRecord;
+ContractionRecord contract(Triangulation& tri, Halfedge h);
+void split(Triangulation& tri, const ContractionRecord& record);
+void flip(Triangulation& tri, Halfedge h);
+
+/// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
+/// origin, the next halfedge of its face (counter-clockwise) and its face; each vertex one
+/// outgoing halfedge and its degree. Dead elements (removed by contract) keep their last values,
+/// which is what split reads to revive them.
+class Triangulation {
+ public:
+  Triangulation() = default;
+
+  /// Builds the triangulation of `mesh`: vertex ids are the mesh's, face f is triangle f, edges are
+  /// numbered as the dual graph's (build_dual). Throws MeshError naming the element if the mesh is
+  /// not a closed, connected, orientable manifold surface (pinched vertices and several components
+  /// are refused). Unreferenced vertices are dead from the start. O(F log d).
+  static Triangulation from_mesh(const TriangleMesh& mesh);
+
+  std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(out_.size()); }
+  std::uint32_t edge_capacity() const { return static_cast<std::uint32_t>(edge_alive_.size()); }
+  std::uint32_t face_capacity() const { return face_capacity_; }
+  std::uint32_t live_vertices() const { return live_vertices_; }
+  std::uint32_t live_edges() const { return live_edges_; }
+  std::uint32_t live_faces() const { return live_faces_; }
+
+  bool vertex_alive(VertexId v) const { return out_[v] != kNoHalfedge; }
+  bool edge_alive(EdgeId e) const { return edge_alive_[e] != 0; }
+
+  static EdgeId edge(Halfedge h) { return h >> 1; }
+  static Halfedge twin(Halfedge h) { return h ^ 1u; }
+  VertexId origin(Halfedge h) const { return origin_[h]; }
+  VertexId destination(Halfedge h) const { return origin_[h ^ 1u]; }
+  Halfedge next(Halfedge h) const { return next_[h]; }
+  Halfedge prev(Halfedge h) const { return next_[next_[h]]; }
+  FaceId face(Halfedge h) const { return face_[h]; }
+  /// The vertex of h's face opposite h.
+  VertexId apex(Halfedge h) const { return origin_[prev(h)]; }
+  /// The next outgoing halfedge around origin(h), counter-clockwise.
+  Halfedge rotate(Halfedge h) const { return twin(prev(h)); }
+  Halfedge out(VertexId v) const { return out_[v]; }
+  std::uint32_t degree(VertexId v) const { return degree_[v]; }
+
+  /// Euler genus of the live part: (2 - V + E - F) / 2.
+  std::uint32_t genus() const {
+    return static_cast<std::uint32_t>(
+        (2 - std::int64_t{live_vertices_} + live_edges_ - std::int64_t{live_faces_}) / 2);
+  }
+
+  /// The live faces as a triangle mesh over `positions`, in face-id order; each triangle starts at
+  /// the smallest halfedge id of its face, so edge k of the triangle is that halfedge's k-th
+  /// successor. Dead vertices stay in `positions`, unreferenced. O(V + F).
+  TriangleMesh to_mesh(const std::vector<std::array<double, 3>>& positions) const;
+
+  /// The dual graph when every face is alive (the triangulation K after expansion): node f is
+  /// face f, dual edge e crosses edge e, and node f's k-th edge is edge k of to_mesh's triangle f.
+  /// Throws std::logic_error if a face is dead. O(F).
+  CubicGraph dual_graph() const;
+
+  /// Checks the structure: next cycles of length 3 with one face id, origins consistent with
+  /// twins, out[] outgoing, degrees equal to rotation lengths, live counts, no vertex pair joined
+  /// twice (simplicial). Returns the first problem or an empty string. O(V + E) with marks.
+  std::string check() const;
+
+ private:
+  friend ContractionRecord contract(Triangulation&, Halfedge);
+  friend void split(Triangulation&, const ContractionRecord&);
+  friend void flip(Triangulation&, Halfedge);
+
+  std::vector<VertexId> origin_;  // per halfedge
+  std::vector<Halfedge> next_;    // per halfedge
+  std::vector<FaceId> face_;      // per halfedge
+  std::vector<std::uint8_t> edge_alive_;
+  std::vector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
+  std::vector<std::uint32_t> degree_;
+  std::uint32_t face_capacity_ = 0;
+  std::uint32_t live_vertices_ = 0, live_edges_ = 0, live_faces_ = 0;
+};
+
+/// Per-vertex marks for O(degree) neighbourhood tests without hashing: clear() is O(1) (a new
+/// stamp), except once every 2^32 clears.
+class VertexMarks {
+ public:
+  explicit VertexMarks(std::uint32_t vertex_count) : stamp_(vertex_count, 0) {}
+  void clear() {
+    if (++current_ == 0) {
+      std::fill(stamp_.begin(), stamp_.end(), 0);
+      current_ = 1;
+    }
+  }
+  void mark(VertexId v) { stamp_[v] = current_; }
+  void unmark(VertexId v) { stamp_[v] = 0; }
+  bool marked(VertexId v) const { return stamp_[v] == current_; }
+
+ private:
+  std::vector<std::uint32_t> stamp_;
+  std::uint32_t current_ = 1;
+};
+
+}  // namespace petersen::lrs

@@ -1,0 +1,137 @@
+#include "petersen/lrs/triangulation.hpp"
+
+#include <stdexcept>
+
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/surface_check.hpp"
+
+namespace petersen::lrs {
+
+Triangulation Triangulation::from_mesh(const TriangleMesh& mesh) {
+  require_closed_surface(mesh,
+                         {.allow_pinched_vertices = false, .allow_several_components = false});
+  const Dual dual = build_dual(mesh);
+  const std::uint32_t edges = dual.graph.edge_count();
+  const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
+
+  Triangulation tri;
+  tri.origin_.resize(2 * std::size_t{edges});
+  tri.next_.resize(2 * std::size_t{edges});
+  tri.face_.resize(2 * std::size_t{edges});
+  tri.edge_alive_.assign(edges, 1);
+  tri.out_.assign(mesh.positions.size(), kNoHalfedge);
+  tri.degree_.assign(mesh.positions.size(), 0);
+  tri.face_capacity_ = faces;
+
+  // Halfedge 3t+k of the mesh (edge k of triangle t) becomes 2e+s when it is side s of dual edge e.
+  std::vector<Halfedge> ours(3 * std::size_t{faces});
+  for (EdgeId e = 0; e < edges; ++e) {
+    for (int s = 0; s < 2; ++s) ours[dual.side(e, s)] = 2 * e + static_cast<Halfedge>(s);
+  }
+  for (FaceId t = 0; t < faces; ++t) {
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const Halfedge h = ours[3 * std::size_t{t} + k];
+      const VertexId v = mesh.triangles[t][k];
+      tri.origin_[h] = v;
+      tri.next_[h] = ours[3 * std::size_t{t} + (k + 1) % 3];
+      tri.face_[h] = t;
+      tri.out_[v] = h;
+      ++tri.degree_[v];
+    }
+  }
+  for (VertexId v = 0; v < tri.out_.size(); ++v) tri.live_vertices_ += tri.out_[v] != kNoHalfedge;
+  tri.live_edges_ = edges;
+  tri.live_faces_ = faces;
+  return tri;
+}
+
+namespace {
+
+// The smallest halfedge of every live face, kNoHalfedge for dead faces.
+std::vector<Halfedge> face_starts(const Triangulation& tri) {
+  std::vector<Halfedge> start(tri.face_capacity(), kNoHalfedge);
+  for (EdgeId e = 0; e < tri.edge_capacity(); ++e) {
+    if (!tri.edge_alive(e)) continue;
+    for (Halfedge h = 2 * e; h < 2 * e + 2; ++h) {
+      if (h < tri.next(h) && h < tri.prev(h)) start[tri.face(h)] = h;
+    }
+  }
+  return start;
+}
+
+}  // namespace
+
+TriangleMesh Triangulation::to_mesh(const std::vector<std::array<double, 3>>& positions) const {
+  TriangleMesh mesh;
+  mesh.positions = positions;
+  mesh.triangles.reserve(live_faces_);
+  for (const Halfedge h : face_starts(*this)) {
+    if (h == kNoHalfedge) continue;
+    mesh.triangles.push_back({origin(h), origin(next(h)), origin(prev(h))});
+  }
+  return mesh;
+}
+
+CubicGraph Triangulation::dual_graph() const {
+  if (live_faces_ != face_capacity_) {
+    throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
+  }
+  const std::vector<Halfedge> start = face_starts(*this);
+  std::vector<EdgeId> node_edges(3 * std::size_t{face_capacity_});
+  for (FaceId f = 0; f < face_capacity_; ++f) {
+    Halfedge h = start[f];
+    for (int k = 0; k < 3; ++k, h = next(h)) node_edges[3 * std::size_t{f} + k] = edge(h);
+  }
+  return CubicGraph::from_incidence(std::move(node_edges), face_);
+}
+
+std::string Triangulation::check() const {
+  const auto at = [](const char* what, std::uint64_t id) {
+    return std::string(what) + " " + std::to_string(id);
+  };
+  std::uint32_t edges = 0;
+  std::vector<std::uint8_t> face_seen(face_capacity_, 0);
+  std::vector<std::uint32_t> outgoing(out_.size(), 0);
+  for (EdgeId e = 0; e < edge_capacity(); ++e) {
+    if (!edge_alive(e)) continue;
+    ++edges;
+    for (Halfedge h = 2 * e; h < 2 * e + 2; ++h) {
+      const Halfedge n = next(h);
+      if (!edge_alive(edge(n)) || next(next(n)) != h) return at("face cycle not 3 at halfedge", h);
+      if (face(n) != face(h) || face(h) >= face_capacity_) return at("face id at halfedge", h);
+      if (origin(n) != destination(h)) return at("origin mismatch at halfedge", h);
+      if (origin(h) == destination(h)) return at("loop at halfedge", h);
+      if (!vertex_alive(origin(h))) return at("dead origin at halfedge", h);
+      face_seen[face(h)] = 1;
+      ++outgoing[origin(h)];
+    }
+  }
+  if (edges != live_edges_) return at("live edge count off, counted", edges);
+  std::uint32_t faces = 0;
+  for (const std::uint8_t seen : face_seen) faces += seen;
+  if (faces != live_faces_) return at("live face count off, counted", faces);
+  std::uint32_t vertices = 0;
+  VertexMarks marks(vertex_capacity());
+  for (VertexId v = 0; v < vertex_capacity(); ++v) {
+    if (!vertex_alive(v)) continue;
+    ++vertices;
+    const Halfedge first = out(v);
+    if (!edge_alive(edge(first)) || origin(first) != v) return at("out() wrong at vertex", v);
+    marks.clear();
+    std::uint32_t around = 0;
+    Halfedge h = first;
+    do {
+      if (marks.marked(destination(h))) return at("two edges to one neighbour at vertex", v);
+      marks.mark(destination(h));
+      ++around;
+      h = rotate(h);
+    } while (h != first && around <= outgoing[v]);
+    if (around != outgoing[v]) return at("pinched (link not one cycle) at vertex", v);
+    if (around != degree(v)) return at("degree off at vertex", v);
+    if (around < 3) return at("degree below 3 at vertex", v);
+  }
+  if (vertices != live_vertices_) return at("live vertex count off, counted", vertices);
+  return {};
+}
+
+}  // namespace petersen::lrs

@@ -1,0 +1,148 @@
+// The topological operators of the mutable triangulation: contraction, vertex split, flip, and
+// the link condition on hand-made cases.
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <random>
+
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/lrs/edge_contraction.hpp"
+#include "petersen/lrs/edge_flip.hpp"
+#include "small_meshes.hpp"
+
+namespace petersen::lrs {
+namespace {
+
+using testing::identical;
+using testing::oriented_faces;
+
+// The halfedge from a to b, or kNoHalfedge.
+Halfedge find_halfedge(const Triangulation& tri, VertexId a, VertexId b) {
+  Halfedge g = tri.out(a);
+  do {
+    if (tri.destination(g) == b) return g;
+    g = tri.rotate(g);
+  } while (g != tri.out(a));
+  return kNoHalfedge;
+}
+
+TEST(Triangulation, BuildsFromMeshWithMeshIds) {
+  const TriangleMesh mesh = testing::octahedron();
+  const Triangulation tri = Triangulation::from_mesh(mesh);
+  EXPECT_EQ(tri.check(), "");
+  EXPECT_EQ(tri.live_vertices(), 6u);
+  EXPECT_EQ(tri.live_edges(), 12u);
+  EXPECT_EQ(tri.live_faces(), 8u);
+  EXPECT_EQ(tri.genus(), 0u);
+  for (VertexId v = 0; v < 6; ++v) EXPECT_EQ(tri.degree(v), 4u);
+  EXPECT_EQ(tri.to_mesh(mesh.positions).triangles.size(), 8u);
+  EXPECT_EQ(oriented_faces(tri.to_mesh(mesh.positions)), oriented_faces(mesh));
+}
+
+TEST(Triangulation, RefusesPinchedVertexAndOpenSurface) {
+  // Two tetrahedra sharing vertex 0: closed, but 0's link is two cycles.
+  TriangleMesh pinched = testing::mesh_of(
+      7, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}});
+  EXPECT_THROW(Triangulation::from_mesh(pinched), MeshError);
+  TriangleMesh open = testing::tetrahedron();
+  open.triangles.pop_back();
+  EXPECT_THROW(Triangulation::from_mesh(open), MeshError);
+}
+
+TEST(LinkCondition, TetrahedronHasNoContractibleEdge) {
+  const Triangulation tri = Triangulation::from_mesh(testing::tetrahedron());
+  VertexMarks marks(tri.vertex_capacity());
+  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
+    EXPECT_FALSE(is_contractible(tri, h, marks)) << "halfedge " << h;
+  }
+}
+
+TEST(LinkCondition, OctahedronEdgesAreAllContractible) {
+  const Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  VertexMarks marks(tri.vertex_capacity());
+  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
+    EXPECT_TRUE(is_contractible(tri, h, marks)) << "halfedge " << h;
+    Triangulation copy = tri;
+    contract(copy, h);
+    EXPECT_EQ(copy.check(), "");
+    EXPECT_EQ(copy.live_vertices(), 5u);
+    EXPECT_EQ(copy.genus(), 0u);
+  }
+}
+
+TEST(LinkCondition, SeparatingThreeCycleBlocksItsEdges) {
+  const Triangulation tri = Triangulation::from_mesh(testing::stacked_tetrahedron());
+  VertexMarks marks(tri.vertex_capacity());
+  const auto on_cycle = [](VertexId v) { return v == 0 || v == 1 || v == 3; };
+  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
+    const bool separating = on_cycle(tri.origin(h)) && on_cycle(tri.destination(h));
+    EXPECT_EQ(is_contractible(tri, h, marks), !separating)
+        << tri.origin(h) << "-" << tri.destination(h);
+  }
+  // Contracting the degree-3 vertex 4 away leaves the tetrahedron.
+  Triangulation copy = tri;
+  contract(copy, find_halfedge(copy, 0, 4));
+  EXPECT_EQ(copy.check(), "");
+  EXPECT_EQ(oriented_faces(copy.to_mesh(testing::tetrahedron().positions)),
+            oriented_faces(testing::mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 3}})));
+}
+
+TEST(LinkCondition, FlippabilityOnTheOctahedron) {
+  const Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  // Flipping [0, 2] (faces 0-2-4 and 2-0-5) would join 4 and 5: not yet an edge, degrees 4.
+  EXPECT_TRUE(is_flippable(tri, find_halfedge(tri, 0, 2)));
+  const Triangulation tet = Triangulation::from_mesh(testing::tetrahedron());
+  EXPECT_FALSE(is_flippable(tet, 0));  // the apexes are adjacent already
+}
+
+RC_GTEST_PROP(Operators, ContractThenSplitRestoresTheExactTriangulation, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const Triangulation original =
+      Triangulation::from_mesh(random_closed_surface(genus, 60, 60, seed));
+  Triangulation tri = original;
+  VertexMarks marks(tri.vertex_capacity());
+  std::mt19937_64 random(seed);
+  // A chain of contractions at random edges, then the splits in reverse order.
+  std::vector<ContractionRecord> stack;
+  const auto steps = *rc::gen::inRange<std::uint32_t>(1, 40);
+  for (std::uint32_t i = 0; i < steps; ++i) {
+    const EdgeId e = std::uniform_int_distribution<EdgeId>(0, tri.edge_capacity() - 1)(random);
+    if (!tri.edge_alive(e) || !is_contractible(tri, 2 * e + (i & 1), marks)) continue;
+    stack.push_back(contract(tri, 2 * e + (i & 1)));
+    RC_ASSERT(tri.check() == "");
+    RC_ASSERT(tri.genus() == genus);
+  }
+  while (!stack.empty()) {
+    split(tri, stack.back());
+    stack.pop_back();
+    RC_ASSERT(tri.check() == "");
+  }
+  RC_ASSERT(identical(tri, original));
+}
+
+RC_GTEST_PROP(Operators, FlipTwiceRestoresTheTriangulation, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const TriangleMesh mesh = random_closed_surface(genus, 40, 40, seed);
+  const Triangulation original = Triangulation::from_mesh(mesh);
+  std::uint32_t flipped = 0;
+  for (Halfedge h = 0; h < 2 * original.edge_capacity(); h += 7) {
+    if (!is_flippable(original, h)) continue;
+    Triangulation tri = original;
+    const VertexId c = tri.apex(h), d = tri.apex(Triangulation::twin(h));
+    flip(tri, h);
+    RC_ASSERT(tri.check() == "");
+    RC_ASSERT(tri.origin(h) == d && tri.destination(h) == c);
+    RC_ASSERT(tri.genus() == genus);
+    flip(tri, h);
+    RC_ASSERT(tri.check() == "");
+    RC_ASSERT(oriented_faces(tri.to_mesh(mesh.positions)) == oriented_faces(mesh));
+    ++flipped;
+  }
+  RC_ASSERT(flipped > 0u);
+}
+
+}  // namespace
+}  // namespace petersen::lrs

@@ -1,0 +1,70 @@
+#pragma once
+// Hand-made closed triangulations and comparisons for the LRS tests.
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+#include "petersen/lrs/triangulation.hpp"
+
+namespace petersen::lrs::testing {
+
+inline TriangleMesh mesh_of(std::uint32_t vertices, std::vector<std::array<VertexId, 3>> faces) {
+  TriangleMesh mesh;
+  for (std::uint32_t v = 0; v < vertices; ++v) mesh.positions.push_back({double(v), 0, 0});
+  mesh.triangles = std::move(faces);
+  return mesh;
+}
+
+inline TriangleMesh tetrahedron() {
+  return mesh_of(4, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
+}
+
+/// Vertices 0/1, 2/3, 4/5 are antipodal pairs.
+inline TriangleMesh octahedron() {
+  return mesh_of(
+      6, {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
+}
+
+/// The tetrahedron with face (0, 1, 3) split at a new vertex 4: the 3-cycle 0-1-3 bounds no face
+/// and separates 2 from 4.
+inline TriangleMesh stacked_tetrahedron() {
+  return mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}, {1, 3, 4}, {3, 0, 4}});
+}
+
+/// The oriented faces as vertex triples rotated to start at their smallest vertex, sorted.
+inline std::vector<std::array<VertexId, 3>> oriented_faces(const TriangleMesh& mesh) {
+  std::vector<std::array<VertexId, 3>> faces;
+  for (auto t : mesh.triangles) {
+    while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
+    faces.push_back(t);
+  }
+  std::sort(faces.begin(), faces.end());
+  return faces;
+}
+
+/// Identical arrays for every live element (ids, origins, next, faces, degrees, liveness).
+inline bool identical(const Triangulation& a, const Triangulation& b) {
+  if (a.edge_capacity() != b.edge_capacity() || a.vertex_capacity() != b.vertex_capacity() ||
+      a.live_vertices() != b.live_vertices() || a.live_edges() != b.live_edges() ||
+      a.live_faces() != b.live_faces()) {
+    return false;
+  }
+  for (EdgeId e = 0; e < a.edge_capacity(); ++e) {
+    if (a.edge_alive(e) != b.edge_alive(e)) return false;
+    if (!a.edge_alive(e)) continue;
+    for (Halfedge h = 2 * e; h < 2 * e + 2; ++h) {
+      if (a.origin(h) != b.origin(h) || a.next(h) != b.next(h) || a.face(h) != b.face(h)) {
+        return false;
+      }
+    }
+  }
+  for (VertexId v = 0; v < a.vertex_capacity(); ++v) {
+    if (a.vertex_alive(v) != b.vertex_alive(v)) return false;
+    if (a.vertex_alive(v) && a.degree(v) != b.degree(v)) return false;
+  }
+  return true;
+}
+
+}  // namespace petersen::lrs::testing
