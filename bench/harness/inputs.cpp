@@ -6,6 +6,9 @@
 
 #include "petersen/dualize/read_mesh.hpp"
 #include "plate.hpp"
+#ifdef PETERSEN_BENCH_HAS_LRS
+#include "simplify.hpp"
+#endif
 
 namespace petersen::bench {
 
@@ -64,16 +67,31 @@ std::vector<InputSpec> shared_mesh_inputs(const std::string& directory) {
 }
 
 std::vector<InputSpec> family_inputs(char family, const std::vector<int>& members) {
+  auto fit = [family](std::uint64_t triangles) {
+    return family == 'A' ? fit_plate(62, 62, true, triangles, kFitTolerance, kMaxPlateUnits)
+                         : fit_plate(70, 50, false, triangles, kFitTolerance, kMaxPlateUnits);
+  };
+  const PlateShape largest = fit(kPaperTable42[family == 'A' ? 0 : 5].triangles);
   std::vector<InputSpec> inputs;
   for (int member : members) {
     std::string name(1, family);
     name += std::to_string(member);
     const std::optional<PaperMesh> paper = paper_mesh(name);
     if (!paper) throw std::invalid_argument("no family member " + name + " in Table 4.2");
-    const PlateShape shape =
-        family == 'A' ? fit_plate(62, 62, true, paper->triangles, kFitTolerance, kMaxPlateUnits)
-                      : fit_plate(70, 50, false, paper->triangles, kFitTolerance, kMaxPlateUnits);
-    inputs.push_back(plate_input(name, std::string(1, family), shape));
+#ifdef PETERSEN_BENCH_HAS_LRS
+    // As in the paper, the smaller members are simplifications of the largest one.
+    if (member > 1) {
+      const std::uint64_t target = paper->triangles;
+      inputs.push_back({name, std::string(1, family),
+                        "simplified from " + std::string(1, family) +
+                            "1 (shortest contractible edge first, link condition); " +
+                            describe(largest),
+                        target, largest.genus(),
+                        [largest, target] { return simplify(plate_mesh(largest), target); }});
+      continue;
+    }
+#endif
+    inputs.push_back(plate_input(name, std::string(1, family), fit(paper->triangles)));
   }
   return inputs;
 }

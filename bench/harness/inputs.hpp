@@ -27,8 +27,9 @@ struct InputSpec {
 std::vector<InputSpec> shared_mesh_inputs(const std::string& directory);
 
 /// Members of family A (62×62 dents, genus 0) or B (70×50 through-holes, genus 3,500) named in
-/// `members` (1…5), each a plate fitted within a fraction of a percent of the paper's triangle
-/// count and generated directly at that size.
+/// `members` (1…5). Member 1 is a regular plate fitted within a fraction of a percent of the
+/// paper's triangle count; with petersen::lrs, members 2–5 are simplifications of member 1 to the
+/// paper's counts (as in the paper), without it regular plates fitted at their own sizes.
 std::vector<InputSpec> family_inputs(char family, const std::vector<int>& members);
 
 /// `steps` plates of the same shape (8×8 dents, genus 0) with 65,536·2^k triangles (k < steps),
