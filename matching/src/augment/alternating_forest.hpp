@@ -19,10 +19,17 @@
 // odd node of another tree is remembered in that tree's blocked list and queued again when that
 // tree dies, so when the queue runs dry the forest is a complete Edmonds forest: no augmenting
 // path is left.
+//
+// Layout, for the cost per label: everything a scan reads or writes about a node (its mate, label,
+// tree, link and blossom base) sits in one 16-byte slot, so touching a node costs one cache line;
+// the matching is copied into the slots on entry and back on exit (two sequential passes). Trees
+// are numbered 0..k-1, and a tree's death is one byte in a k-byte array, not a walk over it.
+// The breadth-first queue is scanned a few entries ahead to prefetch the slots and incidence
+// lists the scan will need, since the queue order is the order of the scans.
 
 #include <algorithm>
 #include <memory>
-#include <numeric>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -30,40 +37,71 @@
 
 namespace petersen::augment_detail {
 
-enum Label : std::uint8_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
+enum Label : std::uint32_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+/// One node's search state. `tag` is tree << 3 | mark << 2 | label (0: never labelled). `link`
+/// is, for an odd or bridged node, the edge it was labelled over; for an even node (not a root),
+/// the even node two steps up its tree (the pred of its mate), so a blossom walk climbs one slot
+/// per step. `base` is the disjoint-set parent; a set's root is its blossom's base.
+struct alignas(16) Slot {
+  EdgeId mate;
+  std::uint32_t tag;
+  std::uint32_t link;
+  NodeId base;
+};
+
+/// Most trees one forest can hold (the tree number has 29 bits of the tag).
+inline constexpr std::uint32_t kMaxTrees = 1u << 29;
 
 template <class Graph>
 class AlternatingForest {
  public:
-  AlternatingForest(const Graph& graph, std::vector<EdgeId>& mate, AugmentStats& stats)
+  /// Copies the matching in; the free nodes, in id order, become free_nodes(). Throws
+  /// std::length_error past kMaxTrees free nodes.
+  AlternatingForest(const Graph& graph, const std::vector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
-        mate_(mate),
         stats_(stats),
-        label_(std::make_unique<Label[]>(mate.size())),
-        mark_(std::make_unique<std::uint32_t[]>(mate.size())),
-        root_(std::make_unique_for_overwrite<NodeId[]>(mate.size())),
-        base_(std::make_unique_for_overwrite<NodeId[]>(mate.size())),
-        pred_edge_(std::make_unique_for_overwrite<EdgeId[]>(mate.size())),
-        bridge_edge_(std::make_unique_for_overwrite<EdgeId[]>(mate.size())),
-        bridge_side_(std::make_unique_for_overwrite<NodeId[]>(mate.size())),
-        blocked_head_(std::make_unique_for_overwrite<std::uint32_t[]>(mate.size())) {}
+        n_(mate.size()),
+        slot_(std::make_unique_for_overwrite<Slot[]>(n_)),
+        bridge_(std::make_unique_for_overwrite<Bridge[]>(n_)) {
+    for (NodeId v = 0; v < n_; ++v) {
+      slot_[v] = {mate[v], 0, kNone, v};
+      if (mate[v] == kNoEdge) free_.push_back(v);
+    }
+    if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
+    tree_alive_.resize(free_.size());
+    blocked_head_.resize(free_.size());
+  }
 
-  /// Forgets every label: the paper's O(n) reset before each search.
+  const std::vector<NodeId>& free_nodes() const { return free_; }
+  bool is_free(NodeId v) const { return slot_[v].mate == kNoEdge; }
+
+  /// Copies the matching out.
+  void store(std::vector<EdgeId>& mate) const {
+    for (NodeId v = 0; v < n_; ++v) mate[v] = slot_[v].mate;
+  }
+
+  /// Forgets every label and tree: the paper's O(n) reset before each search.
   void clear_all() {
-    std::fill_n(label_.get(), mate_.size(), unlabelled);
-    std::fill_n(mark_.get(), mate_.size(), 0u);
-    std::iota(base_.get(), base_.get() + mate_.size(), NodeId{0});
+    for (NodeId v = 0; v < n_; ++v) {
+      slot_[v].tag = 0;
+      slot_[v].base = v;
+    }
+    trees_ = 0;
     blocked_.clear();
     queue_.clear();
     head_ = 0;
-    stamp_ = 0;
   }
 
   /// Starts a tree at free node r.
   void add_root(NodeId r) {
-    give(r, even, r);
-    blocked_head_[r] = kNone;
+    const std::uint32_t tree = trees_++;
+    tree_alive_[tree] = 1;
+    blocked_head_[tree] = kNone;
+    slot_[r].tag = tree << 3 | even;
+    slot_[r].base = r;
+    ++stats_.nodes_labelled;
     queue_.push_back(r);
   }
 
@@ -71,29 +109,38 @@ class AlternatingForest {
   /// unlabelled free node. Returns the number of augmentations; with `stop_at_first`, returns
   /// right after the first.
   std::uint64_t grow(bool stop_at_first) {
+    constexpr std::size_t kAhead = 8;  // queue entries between a prefetch and its scan
     std::uint64_t found = 0;
     while (head_ < queue_.size()) {
+      if (head_ + kAhead < queue_.size()) prefetch_scan(queue_[head_ + kAhead]);
+      if (head_ + kAhead / 2 < queue_.size()) prefetch_neighbours(queue_[head_ + kAhead / 2]);
       const NodeId x = queue_[head_++];
+      const std::uint32_t tx = slot_[x].tag;
       // x's tree died after x was queued, or x has since been labelled odd in another tree.
-      if (!alive(x) || label_[x] == odd) continue;
+      if (!alive(tx) || label_of(tx) == odd) continue;
+      const std::uint32_t tree = tx >> 3;
       for (EdgeId e : graph_.incident_edges(x)) {
-        if (e == mate_[x]) continue;
+        if (e == slot_[x].mate) continue;
         const NodeId y = graph_.other_end(e, x);
-        if (!alive(y)) {
-          if (mate_[y] == kNoEdge) {
+        Slot& sy = slot_[y];
+        const std::uint32_t ty = sy.tag;
+        if (!alive(ty)) {
+          if (sy.mate == kNoEdge) {
             augment(x, y, e);
           } else {
-            const NodeId z = graph_.other_end(mate_[y], y);
-            give(y, odd, root_[x]);
-            pred_edge_[y] = e;
-            give(z, even, root_[x]);
+            // The common step, no blossom work: y odd, its mate z even, both in x's tree.
+            const NodeId z = graph_.other_end(sy.mate, y);
+            sy = {sy.mate, tree << 3 | odd, e, y};
+            Slot& sz = slot_[z];
+            sz = {sz.mate, tree << 3 | even, x, z};
+            stats_.nodes_labelled += 2;
             queue_.push_back(z);
             continue;
           }
-        } else if (label_[y] == odd) {
-          if (root_[y] != root_[x]) block(x, root_[y]);
+        } else if (label_of(ty) == odd) {
+          if (ty >> 3 != tree) block(x, ty >> 3);
           continue;
-        } else if (root_[y] != root_[x]) {
+        } else if (ty >> 3 != tree) {
           augment(x, y, e);
         } else {
           if (find(x) != find(y)) shrink(x, y, e);
@@ -103,49 +150,75 @@ class AlternatingForest {
         if (stop_at_first) return found;
         break;  // x's tree died with the augmentation
       }
+      compact_queue();
     }
     return found;
   }
 
  private:
-  NodeId mate_node(NodeId v) const { return graph_.other_end(mate_[v], v); }
-  // The even node that labelled odd node o.
-  NodeId pred(NodeId o) const { return graph_.other_end(pred_edge_[o], o); }
-  bool alive(NodeId v) const { return label_[v] != unlabelled && mate_[root_[v]] == kNoEdge; }
+  struct Bridge {
+    EdgeId edge;
+    NodeId side;
+  };
+  struct Blocked {
+    NodeId node;
+    std::uint32_t next;
+  };
 
-  void give(NodeId v, Label label, NodeId root) {
-    label_[v] = label;
-    root_[v] = root;
-    base_[v] = v;
-    ++stats_.nodes_labelled;
+  static Label label_of(std::uint32_t tag) { return static_cast<Label>(tag & 3); }
+  bool alive(std::uint32_t tag) const {
+    return label_of(tag) != unlabelled && tree_alive_[tag >> 3];
+  }
+  NodeId mate_node(NodeId v) const { return graph_.other_end(slot_[v].mate, v); }
+
+  void prefetch_scan(NodeId v) const {
+    __builtin_prefetch(&slot_[v]);
+    __builtin_prefetch(graph_.incident_edges(v).data());
+  }
+  void prefetch_neighbours(NodeId v) const {
+    for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[graph_.other_end(e, v)]);
+  }
+
+  // The consumed front of the queue is dropped once it is half the queue, so the queue holds
+  // about what is still to scan, not every label ever given.
+  void compact_queue() {
+    if (head_ < 4096 || 2 * head_ < queue_.size()) return;
+    queue_.erase(queue_.begin(), queue_.begin() + static_cast<std::ptrdiff_t>(head_));
+    head_ = 0;
   }
 
   // Base of v's blossom (path halving).
   NodeId find(NodeId v) {
-    while (base_[v] != v) {
-      base_[v] = base_[base_[v]];
-      v = base_[v];
+    while (slot_[v].base != v) {
+      slot_[v].base = slot_[slot_[v].base].base;
+      v = slot_[v].base;
     }
     return v;
   }
 
+  void set_mark(NodeId v) { slot_[v].tag |= 4; }
+  bool marked(NodeId v) const { return slot_[v].tag & 4; }
+
   // Edge e = (x, y) joins two even nodes of one tree in different blossoms: walk up from both
   // bases alternately to the first common base b, then make every odd node on the two paths even.
+  // A base's link is the even node two steps up, so each step is one slot and one find.
   void shrink(NodeId x, NodeId y, EdgeId e) {
     ++stats_.blossoms;
-    ++stamp_;
     NodeId u = find(x), w = find(y), b = kNoNode;
     while (b == kNoNode) {
       if (u != kNoNode) {
-        if (mark_[u] == stamp_) {
+        if (marked(u)) {
           b = u;
         } else {
-          mark_[u] = stamp_;
-          u = mate_[u] == kNoEdge ? kNoNode : find(pred(mate_node(u)));
+          set_mark(u);
+          walked_.push_back(u);
+          u = slot_[u].mate == kNoEdge ? kNoNode : find(slot_[u].link);
         }
       }
       std::swap(u, w);
     }
+    for (NodeId v : walked_) slot_[v].tag &= ~4u;
+    walked_.clear();
     bridge(find(x), b, x, e);
     bridge(find(y), b, y, e);
   }
@@ -154,12 +227,13 @@ class AlternatingForest {
   void bridge(NodeId u, NodeId b, NodeId side, EdgeId e) {
     while (u != b) {
       const NodeId o = mate_node(u);
-      label_[o] = bridged;
-      bridge_edge_[o] = e;
-      bridge_side_[o] = side;
-      base_[u] = base_[o] = b;
+      slot_[o].tag |= bridged;
+      bridge_[o] = {e, side};
+      slot_[o].base = b;
+      const NodeId up = slot_[u].link;
+      slot_[u].base = b;
       queue_.push_back(o);
-      u = find(pred(o));
+      u = find(up);
     }
   }
 
@@ -169,72 +243,72 @@ class AlternatingForest {
     ++stats_.augmenting_paths;
     path_edges_.clear();
     path_edges_.push_back(e);
-    collect(x, root_[x]);
-    const bool y_in_tree = alive(y);
-    if (y_in_tree) collect(y, root_[y]);
+    const std::uint32_t tree_x = slot_[x].tag >> 3;
+    collect(x);
+    const bool y_in_tree = alive(slot_[y].tag);
+    const std::uint32_t tree_y = slot_[y].tag >> 3;
+    if (y_in_tree) collect(y);
     for (EdgeId f : path_edges_) {
       auto [a, c] = graph_.endpoints(f);
-      mate_[a] = mate_[c] = f;
+      slot_[a].mate = slot_[c].mate = f;
     }
-    release(root_[x]);
-    if (y_in_tree) release(root_[y]);
+    release(tree_x);
+    if (y_in_tree) release(tree_y);
   }
 
-  // Even node x met an odd node of the tree rooted at r.
-  void block(NodeId x, NodeId r) {
-    blocked_.push_back({x, blocked_head_[r]});
-    blocked_head_[r] = static_cast<std::uint32_t>(blocked_.size() - 1);
+  // Even node x met an odd node of tree t.
+  void block(NodeId x, std::uint32_t t) {
+    blocked_.push_back({x, blocked_head_[t]});
+    blocked_head_[t] = static_cast<std::uint32_t>(blocked_.size() - 1);
   }
 
-  void release(NodeId r) {
-    for (std::uint32_t i = blocked_head_[r]; i != kNone; i = blocked_[i].next)
+  // Tree t dies: its nodes count as unlabelled from now on, and what it blocked scans again.
+  void release(std::uint32_t t) {
+    tree_alive_[t] = 0;
+    for (std::uint32_t i = blocked_head_[t]; i != kNone; i = blocked_[i].next)
       queue_.push_back(blocked_[i].node);
   }
 
-  // Tarjan's path(v, w) from even node v up to its ancestor w, an alternating path that starts
+  // Tarjan's path(v, w) from even node v up to its root w, an alternating path that starts
   // with v's matching edge; records its non-matching edges. For v even by its own label:
   //   path(v, w) = (v, mate v) + pred edge of mate v + path(pred(mate v), w);
   // for v bridged by (s, t), s on v's side:
   //   path(v, w) = (v, mate v) + reverse path(s, mate v) + (s, t) + path(t, w).
-  void collect(NodeId v, NodeId w) {
-    pending_.push_back({v, w});
+  // The root is the one node of the path with no mate, so "up to the root" is "up to a free
+  // node"; the inner pieces end at the named node.
+  void collect(NodeId v) {
+    pending_.push_back({v, kNoNode});
     while (!pending_.empty()) {
       auto [from, to] = pending_.back();
       pending_.pop_back();
-      while (from != to) {
+      while (from != to && slot_[from].mate != kNoEdge) {
         const NodeId m = mate_node(from);
-        if (label_[from] == even) {
-          path_edges_.push_back(pred_edge_[m]);
-          from = pred(m);
+        if (label_of(slot_[from].tag) == even) {
+          path_edges_.push_back(slot_[m].link);
+          from = slot_[from].link;
         } else {
-          const NodeId s = bridge_side_[from];
-          path_edges_.push_back(bridge_edge_[from]);
+          const auto [edge, s] = bridge_[from];
+          path_edges_.push_back(edge);
           pending_.push_back({s, m});
-          from = graph_.other_end(bridge_edge_[from], s);
+          from = graph_.other_end(edge, s);
         }
       }
     }
   }
 
   const Graph& graph_;
-  std::vector<EdgeId>& mate_;
   AugmentStats& stats_;
-  std::unique_ptr<Label[]> label_;
-  std::unique_ptr<std::uint32_t[]> mark_;  // stamp of the last blossom walk that met this base
-  std::unique_ptr<NodeId[]> root_;
-  std::unique_ptr<NodeId[]> base_;       // disjoint-set parent; a root of it is a blossom base
-  std::unique_ptr<EdgeId[]> pred_edge_;  // odd node: the edge it was labelled over
-  std::unique_ptr<EdgeId[]> bridge_edge_;
-  std::unique_ptr<NodeId[]> bridge_side_;
-  std::unique_ptr<std::uint32_t[]> blocked_head_;  // root: first entry of its blocked list
-  struct Blocked {
-    NodeId node;
-    std::uint32_t next;
-  };
+  std::size_t n_;
+  std::unique_ptr<Slot[]> slot_;
+  std::unique_ptr<Bridge[]> bridge_;  // bridged node: its bridge and the end on its side
+  std::vector<NodeId> free_;
+  std::vector<std::uint8_t> tree_alive_;     // per tree: its root is still free
+  std::vector<std::uint32_t> blocked_head_;  // per tree: first entry of its blocked list
+  std::uint32_t trees_ = 0;
   std::vector<Blocked> blocked_;
   std::vector<NodeId> queue_;
   std::size_t head_ = 0;
-  std::uint32_t stamp_ = 0;
+  std::vector<NodeId> walked_;
   std::vector<EdgeId> path_edges_;
   std::vector<std::pair<NodeId, NodeId>> pending_;
 };

@@ -14,29 +14,28 @@ template <class Graph>
 AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
   AugmentStats stats;
   std::vector<EdgeId>& mate = matching.mate_edge;
-  std::vector<NodeId> free_nodes;
-  for (NodeId v = 0; v < mate.size(); ++v)
-    if (mate[v] == kNoEdge) free_nodes.push_back(v);
-  if (free_nodes.size() < 2) return stats;
   augment_detail::AlternatingForest<Graph> forest(graph, mate, stats);
+  const std::vector<NodeId>& free_nodes = forest.free_nodes();
+  if (free_nodes.size() < 2) return stats;
   if (variant == Augment::faithful) {
     // The paper's: one search per free node, each after a full reset. A node whose search fails
     // can never be matched later (Edmonds), so one pass suffices.
     for (NodeId r : free_nodes) {
-      if (mate[r] != kNoEdge) continue;  // matched by an earlier path
+      if (!forest.is_free(r)) continue;  // matched by an earlier path
       forest.clear_all();
       forest.add_root(r);
       ++stats.searches;
       forest.grow(/*stop_at_first=*/true);
     }
-    return stats;
+  } else {
+    // Local: all free nodes grow their trees at once, breadth-first, so the nearest pairs meet
+    // first, every tree stops as soon as it augments, and a tree blocked by another resumes when
+    // that one dies. One growth is a complete Edmonds search, and it resets only what it labelled.
+    for (NodeId r : free_nodes) forest.add_root(r);
+    stats.searches = free_nodes.size();
+    forest.grow(/*stop_at_first=*/false);
   }
-  // Local: all free nodes grow their trees at once, breadth-first, so the nearest pairs meet
-  // first, every tree stops as soon as it augments, and a tree blocked by another resumes when
-  // that one dies. One growth is a complete Edmonds search, and it resets only what it labelled.
-  for (NodeId r : free_nodes) forest.add_root(r);
-  stats.searches = free_nodes.size();
-  forest.grow(/*stop_at_first=*/false);
+  forest.store(mate);
   return stats;
 }
 

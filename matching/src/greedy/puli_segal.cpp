@@ -9,6 +9,12 @@
 // Set 0 is never stored: it is every node still at priority 0, drawn by a cursor that walks the
 // nodes cyclically from a seeded start (it is drawn from only when sets 1–3 are empty, about once
 // per component, since pairing a node puts its neighbours into sets 1–3).
+//
+// Cost: a node's whole state is one byte (free-edge count, priority, out of play), so every test
+// of a neighbour reads one byte array that stays in cache. A node's neighbourhood is scanned once
+// when it leaves priority 0 (its free edges fall from 3 to 2): that one pass both decides between
+// priorities 1 and 2 and moves its priority-1 neighbours to 2 (they no longer share both free
+// edges with priority-0 nodes). Every other change is a counter decrement.
 
 #include <array>
 #include <vector>
@@ -20,15 +26,19 @@ namespace petersen {
 
 namespace {
 
-constexpr std::uint8_t kOut = 4;  // paired, or left unpaired with no free edge
+// The state byte: bits 0-1 free-edge count, bits 2-3 priority, bit 4 out of play (paired, or
+// left unpaired with no free edge). A node in play with three free edges is 0b00011.
+constexpr std::uint8_t kFreeMask = 3;
+constexpr std::uint8_t kPriorityMask = 3 << 2;
+constexpr std::uint8_t kOut = 1 << 4;
+constexpr std::uint8_t kStart = 3;
 
 class PuliSegal {
  public:
   PuliSegal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
       : graph_(graph),
         mate_(matching.mate_edge),
-        free_(graph.node_count(), 3),
-        priority_(graph.node_count(), 0),
+        state_(graph.node_count(), kStart),
         random_(seed),
         cursor_(graph.node_count() == 0 ? 0 : random_.below(graph.node_count())) {}
 
@@ -38,71 +48,80 @@ class PuliSegal {
       EdgeId best = kNoEdge;
       int best_priority = -1;
       for (EdgeId e : graph_.incident_edges(v)) {
-        const NodeId u = graph_.other_end(e, v);
-        if (mate_[u] == kNoEdge && priority_[u] > best_priority) {
+        const std::uint8_t s = state_[graph_.other_end(e, v)];
+        if (!(s & kOut) && priority(s) > best_priority) {
           best = e;
-          best_priority = priority_[u];
+          best_priority = priority(s);
         }
       }
-      priority_[v] = kOut;
+      state_[v] |= kOut;
       if (best == kNoEdge) continue;  // every neighbour is paired: v stays unpaired
       const NodeId u = graph_.other_end(best, v);
-      priority_[u] = kOut;
+      state_[u] |= kOut;
       mate_[u] = mate_[v] = best;
+      // The neighbours that lose a free edge, their incidence lists and edge ends fetched
+      // together before any is updated, so the cache misses overlap instead of queueing.
+      std::array<NodeId, 6> losers;
+      int count = 0;
       for (NodeId w : {v, u}) {
         for (EdgeId e : graph_.incident_edges(w)) {
           const NodeId z = graph_.other_end(e, w);
-          if (mate_[z] != kNoEdge) continue;
-          --free_[z];
-          update(z);
+          if (state_[z] & kOut) continue;
+          losers[count++] = z;
+          __builtin_prefetch(graph_.incident_edges(z).data());
         }
       }
+      for (int i = 0; i < count; ++i) lose_free_edge(losers[i]);
     }
   }
 
  private:
-  bool is_free(NodeId v) const { return mate_[v] == kNoEdge; }
+  static int priority(std::uint8_t s) { return (s & kPriorityMask) >> 2; }
 
-  std::uint8_t priority_by_definition(NodeId v) const {
-    if (free_[v] <= 1) return 3;
-    if (free_[v] == 3) return 0;
-    for (EdgeId e : graph_.incident_edges(v)) {
-      const NodeId u = graph_.other_end(e, v);
-      if (is_free(u) && priority_[u] != 0) return 2;
+  void enter(NodeId v, std::uint8_t state, int p) {
+    state_[v] = static_cast<std::uint8_t>((state & ~kPriorityMask) | p << 2);
+    sets_[p].push_back(v);
+  }
+
+  // z, in play, lost a free edge.
+  void lose_free_edge(NodeId z) {
+    const std::uint8_t s = state_[z] - 1;
+    if ((s & kFreeMask) <= 1) {  // priority 3
+      if (priority(s) == 3) {
+        state_[z] = s;
+      } else {
+        enter(z, s, 3);
+      }
+      return;
     }
-    return 1;
-  }
-
-  void enter(NodeId v, std::uint8_t priority) {
-    priority_[v] = priority;
-    sets_[priority].push_back(v);
-  }
-
-  // v lost a free edge: move it, and if it left priority 0, its priority-1 neighbours lose that
-  // status (they no longer share both free edges with priority-0 nodes).
-  void update(NodeId v) {
-    const std::uint8_t before = priority_[v];
-    const std::uint8_t now = priority_by_definition(v);
-    if (now == before) return;
-    enter(v, now);
-    if (before != 0) return;
-    for (EdgeId e : graph_.incident_edges(v)) {
-      const NodeId u = graph_.other_end(e, v);
-      if (is_free(u) && priority_[u] == 1) enter(u, 2);
+    // Three free edges became two: z leaves priority 0 (the one pass over its neighbours).
+    int now = 1;
+    std::array<NodeId, 3> demoted;
+    int demotions = 0;
+    for (EdgeId e : graph_.incident_edges(z)) {
+      const NodeId w = graph_.other_end(e, z);
+      const std::uint8_t sw = state_[w];
+      if ((sw & kOut) || priority(sw) == 0) continue;
+      now = 2;
+      if (priority(sw) == 1) demoted[demotions++] = w;
+    }
+    enter(z, s, now);
+    for (int i = 0; i < demotions; ++i) {
+      if (priority(state_[demoted[i]]) == 1) enter(demoted[i], state_[demoted[i]], 2);
     }
   }
 
   // A node of the highest non-empty set, chosen uniformly at random within it; kNoNode when
   // every node is out.
   NodeId draw() {
-    for (std::uint8_t p = 3; p >= 1; --p) {
+    for (int p = 3; p >= 1; --p) {
       std::vector<NodeId>& set = sets_[p];
       while (!set.empty()) {
         const std::uint32_t k = random_.below(static_cast<std::uint32_t>(set.size()));
         const NodeId v = set[k];
         set[k] = set.back();
         set.pop_back();
-        if (priority_[v] == p) return v;
+        if (!(state_[v] & kOut) && priority(state_[v]) == p) return v;
       }
     }
     const std::uint32_t n = graph_.node_count();
@@ -110,15 +129,14 @@ class PuliSegal {
       const NodeId v = cursor_;
       cursor_ = cursor_ + 1 == n ? 0 : cursor_ + 1;
       ++scanned_;
-      if (priority_[v] == 0) return v;
+      if (state_[v] == kStart) return v;
     }
     return kNoNode;
   }
 
   const CubicGraph& graph_;
   std::vector<EdgeId>& mate_;
-  std::vector<std::uint8_t> free_;           // free edges at each node
-  std::vector<std::uint8_t> priority_;       // 0..3, or kOut
+  std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;
   NodeId cursor_;
