@@ -1,6 +1,7 @@
 #include "inputs.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <sstream>
 
@@ -39,13 +40,10 @@ std::string describe(const PlateShape& shape) {
   return text.str();
 }
 
-InputSpec plate_input(std::string name, std::string group, const PlateShape& shape) {
-  return {std::move(name),
-          std::move(group),
-          "regular (not simplified); plate " + describe(shape),
-          shape.triangle_count(),
-          shape.genus(),
-          [shape] { return plate_mesh(shape); }};
+InputSpec plate_input(std::string name, std::string group, const std::string& how,
+                      const PlateShape& shape) {
+  return {std::move(name),        std::move(group), how + "; plate " + describe(shape),
+          shape.triangle_count(), shape.genus(),    [shape] { return plate_mesh(shape); }};
 }
 
 }  // namespace
@@ -91,19 +89,23 @@ std::vector<InputSpec> family_inputs(char family, const std::vector<int>& member
       continue;
     }
 #endif
-    inputs.push_back(plate_input(name, std::string(1, family), fit(paper->triangles)));
+    inputs.push_back(plate_input(name, std::string(1, family), "regular (not simplified)",
+                                 fit(paper->triangles)));
   }
   return inputs;
 }
 
 std::vector<InputSpec> doubling_inputs(std::uint32_t steps) {
+  // Every dimension scales with the subdivision s, so the triangles grow as s²: s ≈ √2^k·s₀.
+  const double unit = double(uniform_plate(8, 8, true, 1).triangle_count());
   std::vector<InputSpec> inputs;
   for (std::uint32_t k = 0; k < steps; ++k) {
-    const PlateShape shape =
-        fit_plate(8, 8, true, std::uint64_t{65536} << k, kFitTolerance, kMaxPlateUnits);
+    const double s = std::round(std::sqrt(double(std::uint64_t{65536} << k) / unit));
     std::string name = "D";
     name += std::to_string(k);
-    inputs.push_back(plate_input(name, "doubling", shape));
+    inputs.push_back(
+        plate_input(name, "doubling", "regular",
+                    uniform_plate(8, 8, true, std::max<std::uint32_t>(1, std::uint32_t(s)))));
   }
   return inputs;
 }

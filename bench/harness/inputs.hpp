@@ -32,8 +32,8 @@ std::vector<InputSpec> shared_mesh_inputs(const std::string& directory);
 /// paper's counts (as in the paper), without it regular plates fitted at their own sizes.
 std::vector<InputSpec> family_inputs(char family, const std::vector<int>& members);
 
-/// `steps` plates of the same shape (8×8 dents, genus 0) with 65,536·2^k triangles (k < steps),
-/// each fitted within a fraction of a percent.
+/// `steps` plates of the same shape (8×8 dents, genus 0, every width and depth equal) scaled to
+/// about 65,536·2^k triangles (k < steps): the integer scale makes each step ×1.8 to ×2.3.
 std::vector<InputSpec> doubling_inputs(std::uint32_t steps);
 
 /// V (referenced vertices), E, F and genus (from V − E + F = 2·components − 2g, components of
