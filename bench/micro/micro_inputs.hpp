@@ -7,8 +7,8 @@
 
 namespace petersen::micro {
 
-/// A genus-0 plate with 8×8 dents (petersen's voxel_plate) of about `triangles` triangles, and
-/// its dual; built on first use and kept for the process.
+/// A genus-0 plate with 8×8 dents (petersen's voxel_plate), the finest with at most `triangles`
+/// triangles (at least a quarter of that), and its dual; built on first use and kept.
 struct MicroInput {
   TriangleMesh mesh;
   Dual dual;
