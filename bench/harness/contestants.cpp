@@ -9,6 +9,11 @@
 #include "petersen/lemon_adapter/lemon_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "verification_error.hpp"
+// LRS joins once petersen::lrs has its front door (quadrangulate_lrs).
+#if defined(PETERSEN_BENCH_HAS_LRS) && __has_include("petersen/lrs/lrs.hpp")
+#include "petersen/lrs/lrs.hpp"
+#define PETERSEN_BENCH_LRS_CONTESTANT 1
+#endif
 
 namespace petersen::bench {
 
@@ -123,6 +128,24 @@ Measures boost_peer(const BenchInput& input, std::uint64_t) {
   return measures;
 }
 
+#ifdef PETERSEN_BENCH_LRS_CONTESTANT
+// LRS (paper §3.3–3.4) on the mesh: (a) contraction + expansion, (c) ℓ, (d) augmentation. Its
+// matching pairs the triangles of K (the input with some edges flipped), so it is verified on
+// K's dual graph.
+Measures lrs_contestant(const BenchInput& input, std::uint64_t) {
+  const LrsResult result = quadrangulate_lrs(input.mesh, {.augment = Augment::local});
+  require_perfect(result.dual, result.matching);
+  Measures measures;
+  measures.initial_seconds = result.stats.contraction_seconds + result.stats.expansion_seconds;
+  measures.augment_seconds = result.stats.augment_seconds;
+  measures.unpaired = result.stats.unpaired_after_expansion;
+  measures.two_phase = true;
+  measures.augmenting_paths = result.stats.augmenting_paths;
+  measures.flips = result.stats.flipped_edges;
+  return measures;
+}
+#endif
+
 }  // namespace
 
 std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
@@ -145,6 +168,9 @@ std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
                       return petersen_algorithm(input, algorithm, Augment::local, seed);
                     }});
   }
+#ifdef PETERSEN_BENCH_LRS_CONTESTANT
+  list.push_back({"lrs", "LRS", false, false, 0xFFFFFFFFu, lrs_contestant});
+#endif
   list.push_back({"lemon", "", false, false, 0xFFFFFFFFu, lemon_peer});
   list.push_back({"boost", "", false, false, 0xFFFFFFFFu, boost_peer});
   return list;
