@@ -1,14 +1,18 @@
-// Frink's reductions (paper §3.2) with the ds and gw choosers on doubling series of random cubic
-// graphs and voxel-plate duals, printing time / (n log² n) and time / (n log n) so the growth
-// can be read off; an optional mesh file is timed too.
+// Frink's reductions (paper §3.2) with the ds and gw choosers on a doubling series of voxel-plate
+// duals (and random cubic graphs with --random), printing time / (n log² n) and time / (n log n)
+// so the growth can be read off; mesh files given on the command line are timed too.
 //
-// Usage: petersen_reduction_speed [min_nodes=65536] [max_nodes=4194304] [mesh files...]
+// Usage: petersen_reduction_speed [--choosers ds,gw] [--ds-max N] [--random]
+//                                 [min_nodes=65536] [max_nodes=4194304] [mesh files...]
+// --ds-max caps the series for ds (default 2^21: larger ds runs take minutes).
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/read_mesh.hpp"
@@ -20,10 +24,10 @@ namespace {
 
 using namespace petersen;
 
-void measure(const char* family, const CubicGraph& g, Algorithm chooser) {
+void measure(const std::string& family, const CubicGraph& g, Algorithm chooser) {
   const ReductionResult r = perfect_matching_avoiding(g, kNoEdge, {.chooser = chooser});
   if (!verify_perfect_matching(g, r.matching).ok()) {
-    std::fprintf(stderr, "%s %s: not a perfect matching\n", family,
+    std::fprintf(stderr, "%s %s: not a perfect matching\n", family.c_str(),
                  std::string(to_string(chooser)).c_str());
     std::exit(1);
   }
@@ -31,8 +35,8 @@ void measure(const char* family, const CubicGraph& g, Algorithm chooser) {
   const double t = r.stats.setup_seconds + r.stats.reduce_seconds + r.stats.lift_seconds;
   std::printf(
       "%-8s %-3s %9.0f %8.3f s (setup %.3f, reduce %.3f, lift %.3f)  %7.2f ns/(n lg2 n)"
-      "  %7.2f ns/(n lg n)  searches %llu\n",
-      family, std::string(to_string(chooser)).c_str(), n, t, r.stats.setup_seconds,
+      "  %7.2f ns/(n lg n)  searches/swaps %llu\n",
+      family.c_str(), std::string(to_string(chooser)).c_str(), n, t, r.stats.setup_seconds,
       r.stats.reduce_seconds, r.stats.lift_seconds, 1e9 * t / (n * lg * lg), 1e9 * t / (n * lg),
       static_cast<unsigned long long>(r.stats.replacement_searches));
   std::fflush(stdout);
@@ -49,29 +53,46 @@ CubicGraph plate_dual_near(std::uint32_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::uint32_t lo = argc > 1 ? std::stoul(argv[1]) : 65536;
-  const std::uint32_t hi = argc > 2 ? std::stoul(argv[2]) : 4194304;
-  const Algorithm choosers[] = {Algorithm::ds, Algorithm::gw};
-  for (std::uint32_t n = lo; n <= hi; n *= 2) {
-    const CubicGraph random = random_cubic_bridgeless(n, n);
-    const CubicGraph plate = plate_dual_near(n);
-    for (Algorithm chooser : choosers) {
-      try {
-        measure("random", random, chooser);
-        measure("plate", plate, chooser);
-      } catch (const std::invalid_argument& e) {
-        std::printf("%s\n", e.what());
+  std::vector<Algorithm> choosers = {Algorithm::ds, Algorithm::gw};
+  std::uint32_t ds_max = 1u << 21;
+  bool random = false;
+  std::vector<std::string> positional;
+  for (int i = 1; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (arg == "--choosers" && i + 1 < argc) {
+      choosers.clear();
+      for (std::string_view list = argv[++i]; !list.empty();) {
+        const std::size_t comma = std::min(list.find(','), list.size());
+        const auto a = parse_algorithm(list.substr(0, comma));
+        if (!a) {
+          std::fprintf(stderr, "unknown chooser in %s\n", argv[i]);
+          return 2;
+        }
+        choosers.push_back(*a);
+        list.remove_prefix(std::min(comma + 1, list.size()));
       }
+    } else if (arg == "--ds-max" && i + 1 < argc) {
+      ds_max = static_cast<std::uint32_t>(std::stoul(argv[++i]));
+    } else if (arg == "--random") {
+      random = true;
+    } else {
+      positional.emplace_back(arg);
     }
   }
-  for (int i = 3; i < argc; ++i) {
-    const CubicGraph g = dual_graph(read_triangle_mesh(argv[i]));
-    for (Algorithm chooser : choosers) {
-      try {
-        measure(argv[i], g, chooser);
-      } catch (const std::invalid_argument& e) {
-        std::printf("%s\n", e.what());
-      }
-    }
+  const std::uint32_t lo = positional.size() > 0 ? std::stoul(positional[0]) : 65536;
+  const std::uint32_t hi = positional.size() > 1 ? std::stoul(positional[1]) : 4194304;
+  for (std::uint64_t n = lo; n <= hi; n *= 2) {
+    const CubicGraph plate = plate_dual_near(static_cast<std::uint32_t>(n));
+    for (Algorithm chooser : choosers)
+      if (chooser != Algorithm::ds || plate.node_count() <= ds_max)
+        measure("plate", plate, chooser);
+    if (!random) continue;
+    const CubicGraph graph = random_cubic_bridgeless(static_cast<std::uint32_t>(n), n);
+    for (Algorithm chooser : choosers)
+      if (chooser != Algorithm::ds || n <= ds_max) measure("random", graph, chooser);
+  }
+  for (std::size_t i = 2; i < positional.size(); ++i) {
+    const CubicGraph g = dual_graph(read_triangle_mesh(positional[i]));
+    for (Algorithm chooser : choosers) measure(positional[i], g, chooser);
   }
 }

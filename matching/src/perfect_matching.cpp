@@ -1,8 +1,5 @@
 #include "petersen/matching/perfect_matching.hpp"
 
-#include <stdexcept>
-#include <string>
-
 #include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_adapter/lemon_matching.hpp"
@@ -101,11 +98,9 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
       break;
     case Algorithm::frink:
     case Algorithm::ds:
+    case Algorithm::gw:
       match_by_reductions(graph, options, result);
       break;
-    default:
-      throw std::invalid_argument("algorithm '" + std::string(to_string(options.algorithm)) +
-                                  "' is not built yet");
   }
   return result;
 }

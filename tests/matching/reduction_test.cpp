@@ -18,7 +18,7 @@ namespace {
 using testing::any_cubic_bridgeless;
 using testing::edge_list;
 
-constexpr Algorithm kChoosers[] = {Algorithm::frink, Algorithm::ds};
+constexpr Algorithm kChoosers[] = {Algorithm::frink, Algorithm::ds, Algorithm::gw};
 
 // A ring of k random cubic graphs, each with one edge cut open and its ends joined to the
 // neighbouring graphs: every pair of ring edges is a 2-edge cut.

@@ -21,6 +21,9 @@ class Chooser {
   virtual void add(const ReductionGraph& graph, std::span<const EdgeId> edges) = 0;
   /// Replacement-edge searches of the dynamic-connectivity structure, if any.
   virtual std::uint64_t replacement_searches() const { return 0; }
+  /// Debug mode, after every step: throws std::logic_error if the chooser's own structures no
+  /// longer describe `graph` (brute force; choosers without checkable invariants do nothing).
+  virtual void verify(const ReductionGraph& /*graph*/) {}
 };
 
 }  // namespace petersen::reduction

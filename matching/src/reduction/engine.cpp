@@ -84,9 +84,12 @@ Matching reduce_and_lift(const CubicGraph& graph, std::span<const std::uint32_t>
       }
       f = step.n13;
       steps.push_back(step);
-      if (check_each_step && !is_connected_bridgeless(g, components))
-        throw std::logic_error("reduction " + std::to_string(steps.size()) + " at edge " +
-                               std::to_string(step.e) + " left a bridge or split a component");
+      if (check_each_step) {
+        if (!is_connected_bridgeless(g, components))
+          throw std::logic_error("reduction " + std::to_string(steps.size()) + " at edge " +
+                                 std::to_string(step.e) + " left a bridge or split a component");
+        chooser.verify(g);
+      }
     }
     // A theta graph is left (paper Appendix A): match one of its edges other than f.
     const NodeId p = g.end(f, 0);

@@ -9,6 +9,7 @@
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
+#include "reduction/gw_chooser.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen::reduction {
@@ -27,6 +28,9 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
       break;
     case Algorithm::ds:
       chooser = std::make_unique<DsChooser>(graph, graph.edge_count() + graph.node_count());
+      break;
+    case Algorithm::gw:
+      chooser = std::make_unique<GwChooser>(graph, graph.edge_count() + graph.node_count());
       break;
     default:
       throw std::invalid_argument("perfect_matching_avoiding: chooser '" +

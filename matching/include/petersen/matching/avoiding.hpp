@@ -12,7 +12,8 @@ namespace petersen {
 /// How the reductions choose between Frink's two graphs H1 and H2.
 struct ReductionOptions {
   /// Algorithm::frink (bridge test from scratch, O(n^2)), Algorithm::ds (Diks–Stańczyk: dynamic
-  /// connectivity and link-cut trees, O(n log^2 n) amortized) or Algorithm::gw.
+  /// connectivity and link-cut trees, O(n log^2 n) amortized) or Algorithm::gw
+  /// (Gawrychowski–Wasylkiewicz: link-cut trees with a cover per tree edge, O(n log n) amortized).
   Algorithm chooser = Algorithm::ds;
   /// Debug mode: after every reduction, verify by brute force (O(n)) that the reduced graph is
   /// still bridgeless with as many components as the input; throws std::logic_error otherwise.
@@ -24,7 +25,7 @@ struct ReductionStats {
   std::uint64_t reductions = 0;        ///< Frink reductions (two nodes removed each)
   std::uint64_t digon_reductions = 0;  ///< forced digon contractions (both ends of f on a digon)
   std::uint64_t lift_cases[3] = {0, 0, 0};  ///< Appendix A cases (i), (ii), (iii); (iv) never
-  std::uint64_t replacement_searches = 0;   ///< dynamic-connectivity replacement searches (ds)
+  std::uint64_t replacement_searches = 0;   ///< replacement searches (ds), cover swaps (gw)
   double setup_seconds = 0;                 ///< components and the chooser's data structures
   double reduce_seconds = 0;  ///< all reductions, down to one theta graph per component
   double lift_seconds = 0;    ///< undoing the reductions, O(1) each

@@ -1,0 +1,60 @@
+#pragma once
+// A spanning forest in link-cut trees (Sleator and Tarjan, J. Comput. Syst. Sci. 26, 1983) whose
+// tree edges carry a label, its cover: the gw chooser's one data structure. Every graph edge is a
+// node of its own between its two endpoints, so a label sits on the edge and survives evert; a
+// whole tree path is relabelled at once by a lazy assignment.
+
+#include <cstdint>
+#include <vector>
+
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen::reduction {
+
+/// Nodes 0..n-1 stand for the graph's nodes, n + e for edge e (e < edge_capacity). Every
+/// operation but hang() is O(log n) amortized; splaying is iterative.
+class CoverForest {
+ public:
+  CoverForest(std::uint32_t node_count, std::uint32_t edge_capacity);
+
+  /// Set-up in O(1): hangs the tree rooted at `child` below `parent` by edge e labelled `cover`.
+  /// Only before any other operation, and `child` must not have been hung before.
+  void hang(NodeId child, EdgeId e, NodeId parent, EdgeId cover);
+
+  /// Adds edge e = {a, b} to the forest; a and b must be in different trees.
+  void link(EdgeId e, NodeId a, NodeId b);
+  /// Removes tree edge e = {a, b} from the forest.
+  void cut(EdgeId e, NodeId a, NodeId b);
+  bool connected(NodeId a, NodeId b) { return find_root(a) == find_root(b); }
+  /// Makes a the root of its tree.
+  void evert(NodeId a);
+  /// The lowest common ancestor of a and b under the current roots; they must be connected.
+  NodeId lca(NodeId a, NodeId b);
+  /// Labels every edge of the tree path between a and b (connected) with `cover`.
+  void cover_path(NodeId a, NodeId b, EdgeId cover);
+  /// The label of tree edge e.
+  EdgeId cover(EdgeId e);
+
+ private:
+  struct Node {
+    std::uint32_t child[2];
+    std::uint32_t parent;  // splay parent, or path parent for a splay root
+    EdgeId label;          // edge nodes: the cover; kNoEdge on graph nodes
+    EdgeId pending;        // a label still to be given to both subtrees, or kNoEdge
+    std::uint32_t reversed;
+  };
+  std::uint32_t edge_node(EdgeId e) const { return base_ + e; }
+  bool is_splay_root(std::uint32_t x) const;
+  void give_label(std::uint32_t x, EdgeId label);
+  void push(std::uint32_t x);
+  void rotate(std::uint32_t x);
+  void splay(std::uint32_t x);
+  std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
+  std::uint32_t find_root(std::uint32_t x);
+
+  std::vector<Node> nodes_;
+  std::uint32_t base_;               // the node of edge 0
+  std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
+};
+
+}  // namespace petersen::reduction

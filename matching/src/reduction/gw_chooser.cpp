@@ -1,0 +1,202 @@
+#include "reduction/gw_chooser.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+namespace petersen::reduction {
+
+namespace {
+
+bool contains(std::span<const EdgeId> edges, EdgeId e) {
+  return std::find(edges.begin(), edges.end(), e) != edges.end();
+}
+
+struct UnionFind {
+  explicit UnionFind(std::uint32_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::uint32_t find(std::uint32_t x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  bool unite(std::uint32_t a, std::uint32_t b) {
+    a = find(a), b = find(b);
+    parent[a] = b;
+    return a != b;
+  }
+  std::vector<std::uint32_t> parent;
+};
+
+}  // namespace
+
+GwChooser::GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
+    : forest_(graph.node_count(), edge_capacity), in_tree_(edge_capacity, 0) {
+  // Iterative depth-first search; low[v] is the smallest preorder number a back edge reaches from
+  // v's subtree, and low_edge[v] that back edge: it covers the tree edge above v.
+  const std::uint32_t n = graph.node_count();
+  constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> pre(n, kUnseen), low(n);
+  std::vector<EdgeId> parent_edge(n, kNoEdge), low_edge(n, kNoEdge);
+  std::vector<std::pair<NodeId, int>> stack;
+  std::uint32_t clock = 0;
+  for (NodeId root = 0; root < n; ++root) {
+    if (pre[root] != kUnseen) continue;
+    pre[root] = low[root] = clock++;
+    stack.push_back({root, 0});
+    while (!stack.empty()) {
+      auto& [v, k] = stack.back();
+      if (k == 3) {
+        const NodeId w = v;
+        stack.pop_back();
+        if (stack.empty()) break;
+        const NodeId p = stack.back().first;
+        if (low[w] < low[p]) low[p] = low[w], low_edge[p] = low_edge[w];
+        in_tree_[parent_edge[w]] = 1;
+        forest_.hang(w, parent_edge[w], p, low_edge[w]);
+        continue;
+      }
+      const EdgeId g = graph.incident_edge(v, k++);
+      if (g == parent_edge[v]) continue;
+      const NodeId w = graph.other_end(g, v);
+      if (pre[w] == kUnseen) {
+        pre[w] = low[w] = clock++;
+        parent_edge[w] = g;
+        stack.push_back({w, 0});
+      } else if (pre[w] < low[v]) {
+        low[v] = pre[w];
+        low_edge[v] = g;
+      }
+    }
+  }
+}
+
+void GwChooser::swap(const ReductionGraph& graph, EdgeId in, EdgeId out) {
+  forest_.cut(out, graph.end(out, 0), graph.end(out, 1));
+  in_tree_[out] = 0;
+  forest_.link(in, graph.end(in, 0), graph.end(in, 1));
+  in_tree_[in] = 1;
+  forest_.cover_path(graph.end(out, 0), graph.end(out, 1), out);
+  ++swaps_;
+}
+
+void GwChooser::remove(const ReductionGraph& graph, std::span<const EdgeId> edges) {
+  const EdgeId e = edges[0];
+  const NodeId u = graph.end(e, 0), v = graph.end(e, 1);
+  const auto internal = [&](EdgeId g) {
+    return (graph.end(g, 0) ^ graph.end(g, 1)) == (u ^ v) &&
+           (graph.end(g, 0) == u || graph.end(g, 0) == v);
+  };
+  // Stage 0: an edge between u and v in the tree.
+  if (std::none_of(edges.begin(), edges.end(),
+                   [&](EdgeId g) { return internal(g) && in_tree_[g]; })) {
+    forest_.evert(v);
+    for (EdgeId t : edges) {
+      if (internal(t) || !in_tree_[t]) continue;
+      const NodeId x = graph.other_end(t, u);
+      if ((graph.end(t, 0) == u || graph.end(t, 1) == u) && forest_.lca(u, x) != u) {
+        swap(graph, e, t);  // t leads from u toward the root v
+        break;
+      }
+    }
+  }
+  // Stage 1: merge pieces while a tree attachment has a cover outside the step.
+  for (bool merged = true; merged;) {
+    merged = false;
+    for (EdgeId t : edges) {
+      if (internal(t) || !in_tree_[t]) continue;
+      if (const EdgeId c = forest_.cover(t); !contains(edges, c)) {
+        swap(graph, c, t);
+        merged = true;
+        break;
+      }
+    }
+  }
+  // Stage 2: cut u and v out.
+  for (EdgeId t : edges) {
+    if (!in_tree_[t]) continue;
+    forest_.cut(t, graph.end(t, 0), graph.end(t, 1));
+    in_tree_[t] = 0;
+  }
+}
+
+bool GwChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
+  const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
+  const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
+  // Two pieces: they hold 13|24, 14|23 or 12|34 (see the header).
+  if (!forest_.connected(x1, x2)) return !forest_.connected(x1, x3);
+  if (!forest_.connected(x1, x3)) return true;
+  forest_.evert(x1);
+  const NodeId l23 = forest_.lca(x2, x3), l24 = forest_.lca(x2, x4), l34 = forest_.lca(x3, x4);
+  return !(l23 == l34 && l24 != l23);  // the ds rule: H2 exactly when the quartet is 13|24
+}
+
+void GwChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {
+  for (EdgeId g : edges) {
+    if (forest_.connected(graph.end(g, 0), graph.end(g, 1))) continue;
+    forest_.link(g, graph.end(g, 0), graph.end(g, 1));
+    in_tree_[g] = 1;
+  }
+  for (EdgeId g : edges)
+    if (!in_tree_[g]) forest_.cover_path(graph.end(g, 0), graph.end(g, 1), g);
+}
+
+void GwChooser::verify(const ReductionGraph& graph) {
+  const std::uint32_t n = graph.node_count(), m = graph.edge_count();
+  const auto fail = [](const std::string& what) { throw std::logic_error("gw chooser: " + what); };
+  std::vector<std::uint8_t> live(m, 0);
+  std::vector<std::vector<std::pair<NodeId, EdgeId>>> tree(n);
+  UnionFind graph_parts(n), tree_parts(n);
+  std::uint32_t graph_joins = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    if (!graph.alive(v)) continue;
+    for (int k = 0; k < 3; ++k) live[graph.slot(v, k)] = 1;
+  }
+  for (EdgeId g = 0; g < m; ++g) {
+    if (!live[g]) {
+      if (in_tree_[g]) fail("removed edge " + std::to_string(g) + " is in the forest");
+      continue;
+    }
+    const NodeId a = graph.end(g, 0), b = graph.end(g, 1);
+    graph_joins += graph_parts.unite(a, b);
+    if (!in_tree_[g]) continue;
+    if (!tree_parts.unite(a, b)) fail("the forest has a cycle through edge " + std::to_string(g));
+    tree[a].push_back({b, g});
+    tree[b].push_back({a, g});
+  }
+  std::uint32_t tree_edges = 0;
+  for (EdgeId g = 0; g < m; ++g) tree_edges += live[g] && in_tree_[g];
+  if (tree_edges != graph_joins) fail("the forest does not span the graph");
+  // Root every tree, then walk each cover's tree path.
+  std::vector<NodeId> parent(n, kNoNode);
+  std::vector<EdgeId> up(n, kNoEdge);
+  std::vector<std::uint32_t> depth(n, 0);
+  std::vector<std::uint8_t> seen(n, 0);
+  for (NodeId r = 0; r < n; ++r) {
+    if (!graph.alive(r) || seen[r]) continue;
+    std::vector<NodeId> queue = {r};
+    seen[r] = 1;
+    for (std::size_t i = 0; i < queue.size(); ++i)
+      for (auto [w, g] : tree[queue[i]])
+        if (!seen[w]) {
+          seen[w] = 1, parent[w] = queue[i], up[w] = g, depth[w] = depth[queue[i]] + 1;
+          queue.push_back(w);
+        }
+  }
+  for (EdgeId t = 0; t < m; ++t) {
+    if (!live[t] || !in_tree_[t]) continue;
+    const EdgeId c = forest_.cover(t);
+    if (c >= m || !live[c] || in_tree_[c])
+      fail("tree edge " + std::to_string(t) + " has no live non-tree cover");
+    NodeId a = graph.end(c, 0), b = graph.end(c, 1);
+    bool on_path = false;
+    while (a != b) {
+      if (depth[a] < depth[b]) std::swap(a, b);
+      on_path |= up[a] == t;
+      a = parent[a];
+    }
+    if (!on_path)
+      fail("cover " + std::to_string(c) + " of tree edge " + std::to_string(t) + " misses it");
+  }
+}
+
+}  // namespace petersen::reduction

@@ -1,0 +1,64 @@
+#pragma once
+// Gawrychowski and Wasylkiewicz's chooser (ESA 2024, arXiv 2405.03856): Frink's reductions with
+// one link-cut forest and no connectivity structure, O(n log n) in all. The forest T spans the
+// current graph; each tree edge t carries a cover, a non-tree edge whose fundamental cycle
+// passes through t (one exists exactly because t is no bridge). The derivation below is ours,
+// written from the paper's idea; every step is checked against brute force in the tests.
+//
+// Swap(c, t), for c covering t: T − t + c is again a spanning forest; the edges of T that c
+// covered now lie on t's fundamental cycle, so that path is relabelled t. Covers of other edges
+// stay valid (cycle space: only cycles through t change, by adding c's cycle).
+//
+// Removing u, v (Frink step on e = {u, v}; the four attachments are u's and v's other edges):
+//  0. If no edge between u and v is in T, swap e in for the tree edge at u on T's u–v path.
+//  1. Let the pieces be the subtrees of T − {u, v}; each hangs from u or v by one tree
+//     attachment. While some tree attachment t has a cover c that is not one of the step's
+//     edges, c joins t's piece to another piece (its cycle passes u or v): swap(c, t). Each swap
+//     merges two pieces; at most three happen.
+//  2. Cut u and v out. Now every remaining tree attachment's cover is a non-tree attachment into
+//     the same piece (no other edge at u or v covers it), so each piece holds two or more of the
+//     four attachments: there are one or two pieces.
+// Choosing: one piece spans H' = H − {u, v}, and the Diks–Stańczyk quartet rule of ds_chooser.hpp
+// applies. Two pieces holding {xa, xb} and {xc, xd}: whether or not H' joins them, a spanning
+// tree of H' (or forest) has quartet or split ab|cd, so H2 iff {a, b} = {1, 3}, as in ds; the
+// chosen pairing always joins the two pieces.
+// Adding: a new edge that joins two trees is linked; every other new edge relabels its path. Why
+// every cover is valid again: a cover that was one of the removed edges, or whose cycle passed u
+// or v, left its label only on tree paths between attachment ends xi, xj in one piece, and the
+// chosen pairing's new cycles cover every such path (a pairing leaves a Steiner-tree edge of
+// x1..x4 uncovered only when it pairs the two sides of that edge: the quartet it avoids).
+//
+// Digon steps (u and v joined twice, attachments a1 and b3) go through the same three stages and
+// end with one piece holding x1 and x3; the new edge x1x3 relabels their path.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "reduction/chooser.hpp"
+#include "reduction/cover_forest.hpp"
+
+namespace petersen::reduction {
+
+class GwChooser final : public Chooser {
+ public:
+  /// A depth-first spanning forest of `graph`, each tree edge covered by the back edge that
+  /// reaches highest from below it; O(n). `edge_capacity` bounds the ids of edges added later.
+  GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity);
+  void remove(const ReductionGraph& graph, std::span<const EdgeId> edges) override;
+  bool choose_h1(const ReductionGraph& graph, const Step& step) override;
+  void add(const ReductionGraph& graph, std::span<const EdgeId> edges) override;
+  /// Swaps of a cover into the forest (stage 0 and 1 above).
+  std::uint64_t replacement_searches() const override { return swaps_; }
+  /// Brute force: T is a spanning forest of the live graph and every cover is valid.
+  void verify(const ReductionGraph& graph) override;
+
+ private:
+  void swap(const ReductionGraph& graph, EdgeId in, EdgeId out);
+
+  CoverForest forest_;
+  std::vector<std::uint8_t> in_tree_;
+  std::uint64_t swaps_ = 0;
+};
+
+}  // namespace petersen::reduction
