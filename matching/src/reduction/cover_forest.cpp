@@ -115,8 +115,19 @@ void CoverForest::cut(EdgeId e, NodeId a, NodeId b) {
   }
 }
 
+void CoverForest::cut_above(EdgeId e) {
+  const std::uint32_t m = edge_node(e);
+  access(m);
+  nodes_[nodes_[m].child[0]].parent = kNil;
+  nodes_[m].child[0] = kNil;
+}
+
 NodeId CoverForest::lca(NodeId a, NodeId b) {
   access(a);
+  return access(b);
+}
+
+NodeId CoverForest::lca_after(NodeId b) {
   return access(b);
 }
 

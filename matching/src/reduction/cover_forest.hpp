@@ -25,11 +25,17 @@ class CoverForest {
   void link(EdgeId e, NodeId a, NodeId b);
   /// Removes tree edge e = {a, b} from the forest.
   void cut(EdgeId e, NodeId a, NodeId b);
+  /// Cuts tree edge e from its end nearer the root, which stays in e's tree no longer: e's node
+  /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
+  /// never read again).
+  void cut_above(EdgeId e);
   bool connected(NodeId a, NodeId b) { return find_root(a) == find_root(b); }
   /// Makes a the root of its tree.
   void evert(NodeId a);
   /// The lowest common ancestor of a and b under the current roots; they must be connected.
   NodeId lca(NodeId a, NodeId b);
+  /// lca(a, b) when the last call was lca(·, a) or lca_after(a): saves one access.
+  NodeId lca_after(NodeId b);
   /// Labels every edge of the tree path between a and b (connected) with `cover`.
   void cover_path(NodeId a, NodeId b, EdgeId cover);
   /// The label of tree edge e.

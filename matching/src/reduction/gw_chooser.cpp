@@ -86,58 +86,72 @@ void GwChooser::remove(const ReductionGraph& graph, std::span<const EdgeId> edge
     return (graph.end(g, 0) ^ graph.end(g, 1)) == (u ^ v) &&
            (graph.end(g, 0) == u || graph.end(g, 0) == v);
   };
+  const auto at_u = [&](EdgeId g) { return graph.end(g, 0) == u || graph.end(g, 1) == u; };
   // Stage 0: an edge between u and v in the tree.
   if (std::none_of(edges.begin(), edges.end(),
                    [&](EdgeId g) { return internal(g) && in_tree_[g]; })) {
     forest_.evert(v);
     for (EdgeId t : edges) {
-      if (internal(t) || !in_tree_[t]) continue;
-      const NodeId x = graph.other_end(t, u);
-      if ((graph.end(t, 0) == u || graph.end(t, 1) == u) && forest_.lca(u, x) != u) {
+      if (internal(t) || !in_tree_[t] || !at_u(t)) continue;
+      if (forest_.lca(u, graph.other_end(t, u)) != u) {
         swap(graph, e, t);  // t leads from u toward the root v
         break;
       }
     }
   }
-  // Stage 1: merge pieces while a tree attachment has a cover outside the step.
+  // Stage 1: merge pieces while a tree attachment has a cover outside the step. When none is
+  // left, each piece's tree attachment and its cover are the piece's two attachments.
   for (bool merged = true; merged;) {
     merged = false;
+    pieces_ = 0;
     for (EdgeId t : edges) {
       if (internal(t) || !in_tree_[t]) continue;
-      if (const EdgeId c = forest_.cover(t); !contains(edges, c)) {
+      const EdgeId c = forest_.cover(t);
+      if (!contains(edges, c)) {
         swap(graph, c, t);
         merged = true;
         break;
       }
+      if (pieces_ < 2) piece_[pieces_] = {t, c};
+      ++pieces_;
     }
   }
-  // Stage 2: cut u and v out.
-  for (EdgeId t : edges) {
-    if (!in_tree_[t]) continue;
-    forest_.cut(t, graph.end(t, 0), graph.end(t, 1));
-    in_tree_[t] = 0;
-  }
+  // Stage 2: cut u and v out. Rooted at u, the tree edges at u hang below u, and v's other tree
+  // edges below v.
+  forest_.evert(u);
+  for (bool side_u : {true, false})
+    for (EdgeId t : edges)
+      if (in_tree_[t] && (side_u ? at_u(t) : !at_u(t))) {
+        forest_.cut_above(t);
+        in_tree_[t] = 0;
+      }
 }
 
 bool GwChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
+  if (pieces_ == 2) {
+    // The pieces hold 13|24, 14|23 or 12|34 (see the header): H2 exactly for 13|24.
+    for (const auto& piece : piece_)
+      if ((piece[0] == step.a1 || piece[1] == step.a1))
+        return !(piece[0] == step.b3 || piece[1] == step.b3);
+  }
   const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
   const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
-  // Two pieces: they hold 13|24, 14|23 or 12|34 (see the header).
-  if (!forest_.connected(x1, x2)) return !forest_.connected(x1, x3);
-  if (!forest_.connected(x1, x3)) return true;
   forest_.evert(x1);
-  const NodeId l23 = forest_.lca(x2, x3), l24 = forest_.lca(x2, x4), l34 = forest_.lca(x3, x4);
+  const NodeId l23 = forest_.lca(x2, x3), l34 = forest_.lca_after(x4);
+  const NodeId l24 = forest_.lca(x2, x4);
   return !(l23 == l34 && l24 != l23);  // the ds rule: H2 exactly when the quartet is 13|24
 }
 
 void GwChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {
-  for (EdgeId g : edges) {
-    if (forest_.connected(graph.end(g, 0), graph.end(g, 1))) continue;
-    forest_.link(g, graph.end(g, 0), graph.end(g, 1));
-    in_tree_[g] = 1;
+  // With two pieces the chosen pairing joins them: one new edge links them, the other covers.
+  std::size_t first_cover = 0;
+  if (pieces_ == 2) {
+    forest_.link(edges[0], graph.end(edges[0], 0), graph.end(edges[0], 1));
+    in_tree_[edges[0]] = 1;
+    first_cover = 1;
   }
-  for (EdgeId g : edges)
-    if (!in_tree_[g]) forest_.cover_path(graph.end(g, 0), graph.end(g, 1), g);
+  for (std::size_t i = first_cover; i < edges.size(); ++i)
+    forest_.cover_path(graph.end(edges[i], 0), graph.end(edges[i], 1), edges[i]);
 }
 
 void GwChooser::verify(const ReductionGraph& graph) {

@@ -31,6 +31,7 @@
 // Digon steps (u and v joined twice, attachments a1 and b3) go through the same three stages and
 // end with one piece holding x1 and x3; the new edge x1x3 relabels their path.
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -58,6 +59,9 @@ class GwChooser final : public Chooser {
 
   CoverForest forest_;
   std::vector<std::uint8_t> in_tree_;
+  // After remove(): the pieces left (1 or 2) and, for two, each one's tree attachment and cover.
+  std::uint32_t pieces_ = 0;
+  std::array<std::array<EdgeId, 2>, 2> piece_{};
   std::uint64_t swaps_ = 0;
 };
 
