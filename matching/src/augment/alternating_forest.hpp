@@ -20,12 +20,14 @@
 // tree dies, so when the queue runs dry the forest is a complete Edmonds forest: no augmenting
 // path is left.
 //
-// Layout, for the cost per label: everything a scan reads or writes about a node (its mate, label,
-// tree, link and blossom base) sits in one 16-byte slot, so touching a node costs one cache line;
-// the matching is copied into the slots on entry and back on exit (two sequential passes). Trees
-// are numbered 0..k-1, and a tree's death is one byte in a k-byte array, not a walk over it.
-// The breadth-first queue is scanned a few entries ahead to prefetch the slots and incidence
-// lists the scan will need, since the queue order is the order of the scans.
+// Layout, for the cost per label: everything a scan reads or writes about a node (its mate node,
+// label, tree, link and blossom base) sits in one 16-byte slot, so touching a node costs one
+// cache line, and stepping from an odd node to its mate needs no edge lookup. The mate nodes are
+// read from the matching in one pass on entry; the caller's mate edges are written only where an
+// augmenting path flips them. Trees are numbered 0..k-1, and a tree's death is one byte in a
+// k-byte array, not a walk over it. The breadth-first queue is the exact order of the coming
+// scans, so it is read ahead in stages, each prefetching what the next stage will dereference:
+// incidence lists, then edge ends, then neighbour slots, then the slots of the neighbours' mates.
 
 #include <algorithm>
 #include <memory>
@@ -40,12 +42,13 @@ namespace petersen::augment_detail {
 enum Label : std::uint32_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-/// One node's search state. `tag` is tree << 3 | mark << 2 | label (0: never labelled). `link`
-/// is, for an odd or bridged node, the edge it was labelled over; for an even node (not a root),
-/// the even node two steps up its tree (the pred of its mate), so a blossom walk climbs one slot
-/// per step. `base` is the disjoint-set parent; a set's root is its blossom's base.
+/// One node's search state: `mate` is its mate node (kNoNode when free). `tag` is tree << 3 | mark
+/// << 2 | label (0: never labelled). `link` is, for an odd or bridged node, the edge it was
+/// labelled over; for an even node (not a root), the even node two steps up its tree (the pred of
+/// its mate), so a blossom walk climbs one slot per step. `base` is the disjoint-set parent; a
+/// set's root is its blossom's base.
 struct alignas(16) Slot {
-  EdgeId mate;
+  NodeId mate;
   std::uint32_t tag;
   std::uint32_t link;
   NodeId base;
@@ -57,17 +60,19 @@ inline constexpr std::uint32_t kMaxTrees = 1u << 29;
 template <class Graph>
 class AlternatingForest {
  public:
-  /// Copies the matching in; the free nodes, in id order, become free_nodes(). Throws
-  /// std::length_error past kMaxTrees free nodes.
-  AlternatingForest(const Graph& graph, const std::vector<EdgeId>& mate, AugmentStats& stats)
+  /// Reads the matching (mate edge per node), which each augmentation then updates; the free
+  /// nodes, in id order, become free_nodes(). Throws std::length_error past kMaxTrees free nodes.
+  AlternatingForest(const Graph& graph, std::vector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
+        mate_edge_(mate),
         stats_(stats),
         n_(mate.size()),
         slot_(std::make_unique_for_overwrite<Slot[]>(n_)),
         bridge_(std::make_unique_for_overwrite<Bridge[]>(n_)) {
     for (NodeId v = 0; v < n_; ++v) {
-      slot_[v] = {mate[v], 0, kNone, v};
-      if (mate[v] == kNoEdge) free_.push_back(v);
+      const bool free = mate[v] == kNoEdge;
+      slot_[v] = {free ? kNoNode : graph.other_end(mate[v], v), 0, kNone, v};
+      if (free) free_.push_back(v);
     }
     if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
     tree_alive_.resize(free_.size());
@@ -75,12 +80,7 @@ class AlternatingForest {
   }
 
   const std::vector<NodeId>& free_nodes() const { return free_; }
-  bool is_free(NodeId v) const { return slot_[v].mate == kNoEdge; }
-
-  /// Copies the matching out.
-  void store(std::vector<EdgeId>& mate) const {
-    for (NodeId v = 0; v < n_; ++v) mate[v] = slot_[v].mate;
-  }
+  bool is_free(NodeId v) const { return slot_[v].mate == kNoNode; }
 
   /// Forgets every label and tree: the paper's O(n) reset before each search.
   void clear_all() {
@@ -109,27 +109,27 @@ class AlternatingForest {
   /// unlabelled free node. Returns the number of augmentations; with `stop_at_first`, returns
   /// right after the first.
   std::uint64_t grow(bool stop_at_first) {
-    constexpr std::size_t kAhead = 8;  // queue entries between a prefetch and its scan
     std::uint64_t found = 0;
     while (head_ < queue_.size()) {
-      if (head_ + kAhead < queue_.size()) prefetch_scan(queue_[head_ + kAhead]);
-      if (head_ + kAhead / 2 < queue_.size()) prefetch_neighbours(queue_[head_ + kAhead / 2]);
+      prefetch_ahead();
       const NodeId x = queue_[head_++];
       const std::uint32_t tx = slot_[x].tag;
       // x's tree died after x was queued, or x has since been labelled odd in another tree.
       if (!alive(tx) || label_of(tx) == odd) continue;
       const std::uint32_t tree = tx >> 3;
       for (EdgeId e : graph_.incident_edges(x)) {
-        if (e == slot_[x].mate) continue;
         const NodeId y = graph_.other_end(e, x);
+        // Any edge to x's mate (a parallel copy included) leads inside x's blossom or to its
+        // odd parent: nothing to learn.
+        if (y == slot_[x].mate) continue;
         Slot& sy = slot_[y];
         const std::uint32_t ty = sy.tag;
         if (!alive(ty)) {
-          if (sy.mate == kNoEdge) {
+          if (sy.mate == kNoNode) {
             augment(x, y, e);
           } else {
             // The common step, no blossom work: y odd, its mate z even, both in x's tree.
-            const NodeId z = graph_.other_end(sy.mate, y);
+            const NodeId z = sy.mate;
             sy = {sy.mate, tree << 3 | odd, e, y};
             Slot& sz = slot_[z];
             sz = {sz.mate, tree << 3 | even, x, z};
@@ -169,14 +169,38 @@ class AlternatingForest {
   bool alive(std::uint32_t tag) const {
     return label_of(tag) != unlabelled && tree_alive_[tag >> 3];
   }
-  NodeId mate_node(NodeId v) const { return graph_.other_end(slot_[v].mate, v); }
 
-  void prefetch_scan(NodeId v) const {
-    __builtin_prefetch(&slot_[v]);
-    __builtin_prefetch(graph_.incident_edges(v).data());
-  }
-  void prefetch_neighbours(NodeId v) const {
-    for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[graph_.other_end(e, v)]);
+  // Stage k reads what stage k+1 prefetched (kStride queue entries earlier), so each line has
+  // about kStride scans to arrive: x's slot and incidence list, x's edge ends, the slots of x's
+  // neighbours, the slots of their mates.
+  // Always inlined: g++ 12's mod-ref analysis takes a prefetch-only function for one without
+  // effects and drops the call.
+  [[gnu::always_inline]] void prefetch_ahead() const {
+    constexpr std::size_t kStride = 4;
+    const std::size_t size = queue_.size();
+    if (head_ + 4 * kStride < size) {
+      const NodeId v = queue_[head_ + 4 * kStride];
+      __builtin_prefetch(&slot_[v]);
+      __builtin_prefetch(graph_.incident_edges(v).data());
+    }
+    if constexpr (requires { graph_.edge_ends(); }) {  // a graph that shows its edge-end array
+      if (head_ + 3 * kStride < size) {
+        const NodeId v = queue_[head_ + 3 * kStride];
+        for (EdgeId e : graph_.incident_edges(v))
+          __builtin_prefetch(&graph_.edge_ends()[2 * std::size_t{e}]);
+      }
+    }
+    if (head_ + 2 * kStride < size) {
+      const NodeId v = queue_[head_ + 2 * kStride];
+      for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[graph_.other_end(e, v)]);
+    }
+    if (head_ + kStride < size) {
+      const NodeId v = queue_[head_ + kStride];
+      for (EdgeId e : graph_.incident_edges(v)) {
+        const NodeId m = slot_[graph_.other_end(e, v)].mate;
+        if (m != kNoNode) __builtin_prefetch(&slot_[m]);
+      }
+    }
   }
 
   // The consumed front of the queue is dropped once it is half the queue, so the queue holds
@@ -212,7 +236,7 @@ class AlternatingForest {
         } else {
           set_mark(u);
           walked_.push_back(u);
-          u = slot_[u].mate == kNoEdge ? kNoNode : find(slot_[u].link);
+          u = slot_[u].mate == kNoNode ? kNoNode : find(slot_[u].link);
         }
       }
       std::swap(u, w);
@@ -226,7 +250,7 @@ class AlternatingForest {
   // Makes the odd nodes between base u and base b even, bridged by e with `side` on their side.
   void bridge(NodeId u, NodeId b, NodeId side, EdgeId e) {
     while (u != b) {
-      const NodeId o = mate_node(u);
+      const NodeId o = slot_[u].mate;
       slot_[o].tag |= bridged;
       bridge_[o] = {e, side};
       slot_[o].base = b;
@@ -250,7 +274,9 @@ class AlternatingForest {
     if (y_in_tree) collect(y);
     for (EdgeId f : path_edges_) {
       auto [a, c] = graph_.endpoints(f);
-      slot_[a].mate = slot_[c].mate = f;
+      slot_[a].mate = c;
+      slot_[c].mate = a;
+      mate_edge_[a] = mate_edge_[c] = f;
     }
     release(tree_x);
     if (y_in_tree) release(tree_y);
@@ -281,8 +307,8 @@ class AlternatingForest {
     while (!pending_.empty()) {
       auto [from, to] = pending_.back();
       pending_.pop_back();
-      while (from != to && slot_[from].mate != kNoEdge) {
-        const NodeId m = mate_node(from);
+      while (from != to && slot_[from].mate != kNoNode) {
+        const NodeId m = slot_[from].mate;
         if (label_of(slot_[from].tag) == even) {
           path_edges_.push_back(slot_[m].link);
           from = slot_[from].link;
@@ -297,6 +323,7 @@ class AlternatingForest {
   }
 
   const Graph& graph_;
+  std::vector<EdgeId>& mate_edge_;
   AugmentStats& stats_;
   std::size_t n_;
   std::unique_ptr<Slot[]> slot_;

@@ -13,8 +13,7 @@ namespace {
 template <class Graph>
 AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
   AugmentStats stats;
-  std::vector<EdgeId>& mate = matching.mate_edge;
-  augment_detail::AlternatingForest<Graph> forest(graph, mate, stats);
+  augment_detail::AlternatingForest<Graph> forest(graph, matching.mate_edge, stats);
   const std::vector<NodeId>& free_nodes = forest.free_nodes();
   if (free_nodes.size() < 2) return stats;
   if (variant == Augment::faithful) {
@@ -35,7 +34,6 @@ AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
     stats.searches = free_nodes.size();
     forest.grow(/*stop_at_first=*/false);
   }
-  forest.store(mate);
   return stats;
 }
 
