@@ -14,6 +14,7 @@ namespace {
 constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 constexpr int kNonTreeFlag = 0;  // a vertex node with non-tree edges of its level
 constexpr int kTreeFlag = 1;     // an arc of a tree edge whose level is this forest's level
+constexpr int kSampleSize = 8;   // non-tree edges tried before a search raises levels
 
 // Makes room for index `i` in the block (base, capacity) of a pool, moving it to the end.
 void reserve_block(std::vector<std::uint32_t>& pool, std::uint32_t& base, std::uint32_t& capacity,
@@ -142,6 +143,20 @@ EdgeId DynamicConnectivity::replace(NodeId u, NodeId v, int level) {
   EttNode small = vertex_node(u, level), large = vertex_node(v, level);
   if (ett_->vertex_count(ett_->root(small)) > ett_->vertex_count(ett_->root(large)))
     std::swap(small, large);
+  // Sampling (Iyer, Karger, Rahul and Thorup, JEA 2001): a few non-tree edges at the smaller
+  // tree's first vertex that has any; one that reconnects is taken before any level is raised.
+  if (const EttNode x = ett_->find_flagged(ett_->root(small), kNonTreeFlag); x != kNoEtt) {
+    int budget = kSampleSize;
+    for (std::uint32_t h = head_[x]; h != kNone && budget > 0; h = next_[h], --budget) {
+      const EdgeId g = h / 2;
+      const NodeId y = endpoint(g, 1 - static_cast<int>(h % 2));
+      if (ett_->same_tree(vertex_node(y, level), small)) continue;
+      remove_non_tree(g);
+      state_[g] = State::tree;
+      for (int i = 0; i <= level; ++i) link_tree_edge(g, i);
+      return g;
+    }
+  }
   // The smaller tree's tree edges of this level rise one level (it is at most half as large).
   for (EttNode a; (a = ett_->find_flagged(ett_->root(small), kTreeFlag)) != kNoEtt;) {
     const EdgeId f = ett_->owner(a);
