@@ -1,66 +1,101 @@
 #include "petersen/dualize/surface_generators.hpp"
 
+#include <algorithm>
+#include <array>
 #include <random>
 #include <unordered_map>
+#include <vector>
 
 namespace petersen {
 
 namespace {
 
-struct Lattice {
-  std::uint32_t nx, ny, nz;  // lattice points per axis
-  std::vector<VertexId> index;
-  TriangleMesh* mesh;
-  std::uint32_t scale;
-
-  VertexId vertex(std::uint32_t x, std::uint32_t y, std::uint32_t z) {
-    VertexId& id = index[(std::size_t{z} * ny + y) * nx + x];
-    if (id == 0xFFFFFFFFu) {
-      id = static_cast<VertexId>(mesh->positions.size());
-      mesh->positions.push_back({double(x) / scale, double(y) / scale, double(z) / scale});
-    }
-    return id;
-  }
-};
+// Lattice offsets of the cell boundaries along one axis: cells alternate wall, hole, ..., wall.
+std::vector<std::uint32_t> cell_offsets(std::uint32_t holes, std::uint32_t wall,
+                                        std::uint32_t hole) {
+  std::vector<std::uint32_t> offsets{0};
+  for (std::uint32_t i = 0; i < 2 * holes + 1; ++i)
+    offsets.push_back(offsets.back() + (i % 2 ? hole : wall));
+  return offsets;
+}
 
 }  // namespace
 
-TriangleMesh voxel_plate(const PlateSpec& spec) {
-  const std::uint32_t cx = 2 * spec.holes_x + 1, cy = 2 * spec.holes_y + 1, cz = spec.dents ? 2 : 1;
-  const std::uint32_t s = std::max<std::uint32_t>(spec.subdivision, 1);
-  auto filled = [&](std::int64_t x, std::int64_t y, std::int64_t z) {
-    if (x < 0 || y < 0 || z < 0 || x >= cx || y >= cy || z >= cz) return false;
-    bool hole_column = x % 2 == 1 && y % 2 == 1;
-    return !(hole_column && (!spec.dents || z == 1));
+std::uint64_t PlateShape::triangle_count() const {
+  const std::uint64_t x = std::uint64_t{holes_x + 1} * wall_x + std::uint64_t{holes_x} * hole_x;
+  const std::uint64_t y = std::uint64_t{holes_y + 1} * wall_y + std::uint64_t{holes_y} * hole_y;
+  const std::uint64_t holes = std::uint64_t{holes_x} * holes_y;
+  const std::uint64_t hole_perimeter = 2 * std::uint64_t{hole_x + hole_y};
+  // Unit squares: bottom and top (less the holes' openings, or plus the dents' floors), the
+  // outer walls, and the walls of every hole or dent; two triangles each.
+  const std::uint64_t squares =
+      dents
+          ? 2 * x * y + 2 * (x + y) * (thickness + dent_depth) + hole_perimeter * dent_depth * holes
+          : 2 * (x * y - holes * hole_x * hole_y) + 2 * (x + y) * thickness +
+                hole_perimeter * thickness * holes;
+  return 2 * squares;
+}
+
+std::uint64_t PlateShape::genus() const {
+  return dents ? 0 : std::uint64_t{holes_x} * holes_y;
+}
+
+TriangleMesh plate_mesh(const PlateShape& shape) {
+  const std::array<std::vector<std::uint32_t>, 3> offsets = {
+      cell_offsets(shape.holes_x, shape.wall_x, shape.hole_x),
+      cell_offsets(shape.holes_y, shape.wall_y, shape.hole_y),
+      shape.dents
+          ? std::vector<std::uint32_t>{0, shape.thickness, shape.thickness + shape.dent_depth}
+          : std::vector<std::uint32_t>{0, shape.thickness}};
+  const std::int64_t cells[3] = {std::int64_t(offsets[0].size()) - 1,
+                                 std::int64_t(offsets[1].size()) - 1,
+                                 std::int64_t(offsets[2].size()) - 1};
+  auto filled = [&](const std::int64_t c[3]) {
+    for (int axis = 0; axis < 3; ++axis)
+      if (c[axis] < 0 || c[axis] >= cells[axis]) return false;
+    const bool hole_column = c[0] % 2 == 1 && c[1] % 2 == 1;
+    return !(hole_column && (!shape.dents || c[2] == 1));
   };
+
   TriangleMesh mesh;
-  Lattice lattice{cx * s + 1, cy * s + 1, cz * s + 1, {}, &mesh, s};
-  lattice.index.assign(std::size_t{lattice.nx} * lattice.ny * lattice.nz, 0xFFFFFFFFu);
-  for (std::int64_t z = 0; z < cz; ++z) {
-    for (std::int64_t y = 0; y < cy; ++y) {
-      for (std::int64_t x = 0; x < cx; ++x) {
-        if (!filled(x, y, z)) continue;
-        const std::int64_t cell[3] = {x, y, z};
+  mesh.triangles.reserve(shape.triangle_count());
+  mesh.positions.reserve(shape.triangle_count() / 2 + 2);
+  std::unordered_map<std::uint64_t, VertexId> vertex_at;
+  vertex_at.reserve(shape.triangle_count() / 2 + 2);
+  auto vertex = [&](const std::uint32_t p[3]) {
+    const std::uint64_t key = (std::uint64_t{p[0]} << 42) | (std::uint64_t{p[1]} << 21) | p[2];
+    auto [it, inserted] = vertex_at.try_emplace(key, static_cast<VertexId>(mesh.positions.size()));
+    if (inserted) mesh.positions.push_back({double(p[0]), double(p[1]), double(p[2])});
+    return it->second;
+  };
+
+  std::int64_t c[3];
+  for (c[2] = 0; c[2] < cells[2]; ++c[2]) {
+    for (c[1] = 0; c[1] < cells[1]; ++c[1]) {
+      for (c[0] = 0; c[0] < cells[0]; ++c[0]) {
+        if (!filled(c)) continue;
         for (int axis = 0; axis < 3; ++axis) {
-          for (int side : {-1, 1}) {
-            std::int64_t n[3] = {x, y, z};
-            n[axis] += side;
-            if (filled(n[0], n[1], n[2])) continue;
-            // The face lies at cell[axis] (+1 for side +1); (b, c, axis) is right-handed, so
-            // corners in (b, c) order are counter-clockwise seen along +axis.
-            const int b = (axis + 1) % 3, c = (axis + 2) % 3;
-            for (std::uint32_t i = 0; i < s; ++i) {
-              for (std::uint32_t j = 0; j < s; ++j) {
+          for (int side : {0, 1}) {
+            std::int64_t n[3] = {c[0], c[1], c[2]};
+            n[axis] += side ? 1 : -1;
+            if (filled(n)) continue;
+            // The face lies at the cell's lower or upper boundary along `axis`; (b, c, axis) is
+            // right-handed, so corners in (b, c) order run counter-clockwise seen along +axis.
+            const int b = (axis + 1) % 3, d = (axis + 2) % 3;
+            const std::uint32_t b0 = offsets[b][c[b]], b1 = offsets[b][c[b] + 1];
+            const std::uint32_t d0 = offsets[d][c[d]], d1 = offsets[d][c[d] + 1];
+            for (std::uint32_t i = b0; i < b1; ++i) {
+              for (std::uint32_t j = d0; j < d1; ++j) {
                 VertexId quad[4];
-                const std::uint32_t du[4] = {0, 1, 1, 0}, dv[4] = {0, 0, 1, 1};
+                const std::uint32_t di[4] = {0, 1, 1, 0}, dj[4] = {0, 0, 1, 1};
                 for (int k = 0; k < 4; ++k) {
                   std::uint32_t p[3];
-                  p[axis] = static_cast<std::uint32_t>((cell[axis] + (side > 0)) * s);
-                  p[b] = static_cast<std::uint32_t>(cell[b] * s + i + du[k]);
-                  p[c] = static_cast<std::uint32_t>(cell[c] * s + j + dv[k]);
-                  quad[k] = lattice.vertex(p[0], p[1], p[2]);
+                  p[axis] = offsets[axis][c[axis] + side];
+                  p[b] = i + di[k];
+                  p[d] = j + dj[k];
+                  quad[k] = vertex(p);
                 }
-                if (side > 0) {
+                if (side) {
                   mesh.triangles.push_back({quad[0], quad[1], quad[2]});
                   mesh.triangles.push_back({quad[0], quad[2], quad[3]});
                 } else {
@@ -75,6 +110,15 @@ TriangleMesh voxel_plate(const PlateSpec& spec) {
     }
   }
   return mesh;
+}
+
+PlateShape uniform_plate(std::uint32_t holes_x, std::uint32_t holes_y, bool dents,
+                         std::uint32_t units) {
+  return {holes_x, holes_y, units, units, units, units, units, dents ? units : 0, dents};
+}
+
+TriangleMesh voxel_plate(const PlateSpec& spec) {
+  return plate_mesh(uniform_plate(spec.holes_x, spec.holes_y, spec.dents, spec.subdivision));
 }
 
 TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,

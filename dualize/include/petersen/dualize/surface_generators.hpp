@@ -5,11 +5,34 @@
 
 namespace petersen {
 
-/// A box-shaped plate made of unit voxels whose boundary is triangulated: (2·holes_x+1) by
-/// (2·holes_y+1) cells, one cell thick, with a square through-hole at every (odd, odd) cell
-/// (genus holes_x·holes_y, the paper's family B) — or, with `dents`, two cells thick with a
-/// cavity dug into the top layer there instead (genus 0, the paper's family A). Every voxel face
-/// is cut into subdivision² squares, two triangles each: a regular triangulation.
+/// A box-shaped plate on an integer lattice whose unit squares are cut into two triangles each:
+/// the paper's synthetic families (Table 4.2). Along x the plate alternates walls of wall_x units
+/// and holes of hole_x units, starting and ending with a wall (holes_x holes); likewise along y.
+/// Without dents it is `thickness` units thick and every hole goes through (genus
+/// holes_x·holes_y, family B); with dents it is thickness + dent_depth units thick and every hole
+/// is a cavity dent_depth deep dug into the top (genus 0, family A). A regular triangulation.
+struct PlateShape {
+  std::uint32_t holes_x = 1, holes_y = 1;
+  std::uint32_t wall_x = 1, hole_x = 1, wall_y = 1, hole_y = 1;
+  std::uint32_t thickness = 1;
+  std::uint32_t dent_depth = 0;
+  bool dents = false;
+
+  /// Triangles of the plate, from the formula (no mesh built). O(1).
+  std::uint64_t triangle_count() const;
+  /// Genus of the plate's surface: 0 with dents, holes_x·holes_y without.
+  std::uint64_t genus() const;
+};
+
+/// The closed, consistently oriented triangulation of the plate's surface. O(triangles).
+TriangleMesh plate_mesh(const PlateShape& shape);
+
+/// The plate with every width and depth equal to `units` (a regular, isotropic refinement).
+PlateShape uniform_plate(std::uint32_t holes_x, std::uint32_t holes_y, bool dents,
+                         std::uint32_t units);
+
+/// The uniform plate in short: plate_mesh(uniform_plate(holes_x, holes_y, dents, subdivision)).
+/// holes_x = holes_y = 0 gives a cube's surface.
 struct PlateSpec {
   std::uint32_t holes_x = 1;
   std::uint32_t holes_y = 1;
