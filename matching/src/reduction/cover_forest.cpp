@@ -86,14 +86,6 @@ std::uint32_t CoverForest::access(std::uint32_t x) {
   return last;
 }
 
-std::uint32_t CoverForest::find_root(std::uint32_t x) {
-  access(x);
-  std::uint32_t r = x;
-  for (push(r); nodes_[r].child[0] != kNil; push(r)) r = nodes_[r].child[0];
-  splay(r);
-  return r;
-}
-
 void CoverForest::evert(NodeId a) {
   access(a);
   nodes_[a].reversed ^= 1;

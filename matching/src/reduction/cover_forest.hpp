@@ -29,7 +29,6 @@ class CoverForest {
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
   /// never read again).
   void cut_above(EdgeId e);
-  bool connected(NodeId a, NodeId b) { return find_root(a) == find_root(b); }
   /// Makes a the root of its tree.
   void evert(NodeId a);
   /// The lowest common ancestor of a and b under the current roots; they must be connected.
@@ -56,7 +55,6 @@ class CoverForest {
   void rotate(std::uint32_t x);
   void splay(std::uint32_t x);
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
-  std::uint32_t find_root(std::uint32_t x);
 
   std::vector<Node> nodes_;
   std::uint32_t base_;               // the node of edge 0

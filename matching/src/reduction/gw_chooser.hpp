@@ -17,7 +17,9 @@
 //     merges two pieces; at most three happen.
 //  2. Cut u and v out. Now every remaining tree attachment's cover is a non-tree attachment into
 //     the same piece (no other edge at u or v covers it), so each piece holds two or more of the
-//     four attachments: there are one or two pieces.
+//     four attachments: there are one or two pieces, and for two, each piece's attachments are
+//     its tree attachment and that one's cover (no connectivity query needed). Rooted at u (one
+//     evert), every tree edge at u or v is cut from above with one access.
 // Choosing: one piece spans H' = H − {u, v}, and the Diks–Stańczyk quartet rule of ds_chooser.hpp
 // applies. Two pieces holding {xa, xb} and {xc, xd}: whether or not H' joins them, a spanning
 // tree of H' (or forest) has quartet or split ab|cd, so H2 iff {a, b} = {1, 3}, as in ds; the
@@ -27,6 +29,8 @@
 // or v, left its label only on tree paths between attachment ends xi, xj in one piece, and the
 // chosen pairing's new cycles cover every such path (a pairing leaves a Steiner-tree edge of
 // x1..x4 uncovered only when it pairs the two sides of that edge: the quartet it avoids).
+//
+// Each reduction costs O(1) link-cut operations, so O(log n) amortized; set-up is O(n).
 //
 // Digon steps (u and v joined twice, attachments a1 and b3) go through the same three stages and
 // end with one piece holding x1 and x3; the new edge x1x3 relabels their path.
