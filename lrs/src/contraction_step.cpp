@@ -1,5 +1,7 @@
 #include "petersen/lrs/contraction_step.hpp"
 
+#include <algorithm>
+
 namespace petersen::lrs {
 namespace {
 
@@ -21,36 +23,52 @@ ContractionResult contract_to_irreducible(Triangulation& tri) {
   ContractionResult result;
   result.stack.reserve(tri.live_vertices());
   VertexMarks neighbours(tri.vertex_capacity());
+  std::vector<std::uint8_t> processed(tri.vertex_capacity(), 0);
+  // Edges [u, w] whose contractibility may have changed, last in first out, pushed so that they
+  // come out in counter-clockwise order round u: u sweeps round and round, as a walk round its
+  // rotation would, which keeps the expansion's flips few.
+  std::vector<EdgeId> untested;
+  std::vector<EdgeId> gained;  // the edges u gains from one contraction, in rotation order
   for (VertexId u = 0; u < tri.vertex_capacity(); ++u) {
     if (!tri.vertex_alive(u)) continue;  // contracted into an earlier vertex, or unreferenced
+    processed[u] = 1;
     result.processed.push_back(u);
     neighbours.clear();
+    untested.clear();
     Halfedge g = tri.out(u);
     do {
       neighbours.mark(tri.destination(g));
+      untested.push_back(Triangulation::edge(g));
       g = tri.rotate(g);
     } while (g != tri.out(u));
-    // Walk round u; u is trapped once degree(u) edges in a row fail the link condition.
-    std::uint32_t fails = 0;
-    while (fails < tri.degree(u)) {
+    std::reverse(untested.begin(), untested.end());
+    // Process u until it is trapped (Definition 3.1). Contracting [u, v] changes the common
+    // neighbours of u and w, or the apexes of [u, w], only when w is an apex x or y of [u, v]; any
+    // other edge [u, w] can only gain common neighbours. So an edge found non-contractible is
+    // tested again only after its end became an apex, and u is trapped when none is left.
+    while (!untested.empty()) {
+      const EdgeId e = untested.back();
+      untested.pop_back();
+      if (!tri.edge_alive(e)) continue;
+      g = tri.origin(2 * e) == u ? 2 * e : 2 * e + 1;
       const VertexId w = tri.destination(g);
-      // Link condition with N(u) marked: the two apexes are the only common neighbours. The
-      // tetrahedron has none contractible (Proposition 3.1).
-      if (tri.live_vertices() > 4 && marked_neighbours(tri, w, neighbours) == 2) {
-        Halfedge k = tri.out(w);
-        do {
-          if (tri.destination(k) != u) neighbours.mark(tri.destination(k));
-          k = tri.rotate(k);
-        } while (k != tri.out(w));
-        neighbours.unmark(w);
-        const Halfedge next_at_u = tri.next(Triangulation::twin(g));  // u→y survives
-        result.stack.push_back(contract(tri, g));
-        g = next_at_u;
-        fails = 0;
-      } else {
-        ++fails;
-        g = tri.rotate(g);
+      if (processed[w]) continue;  // trapped, and stays trapped (Lemma 3.1)
+      // Link condition with N(u) marked: the two apexes are the only common neighbours; the
+      // tetrahedron has no contractible edge (Proposition 3.1).
+      if (tri.live_vertices() <= 4 || marked_neighbours(tri, w, neighbours) != 2) continue;
+      // w's edges from [w, y] round to [w, x] become u's; all but those two are new to u.
+      const Halfedge t1 = tri.next(Triangulation::twin(g));  // u→y
+      const Halfedge wx = tri.next(g);                       // w→x
+      gained.clear();
+      for (Halfedge k = tri.rotate(Triangulation::twin(tri.next(t1))); k != wx; k = tri.rotate(k)) {
+        neighbours.mark(tri.destination(k));
+        gained.push_back(Triangulation::edge(k));
       }
+      neighbours.unmark(w);
+      untested.push_back(Triangulation::edge(tri.prev(g)));  // [u, x], an apex: test again
+      untested.insert(untested.end(), gained.rbegin(), gained.rend());
+      untested.push_back(Triangulation::edge(t1));  // [u, y], an apex: test again, first
+      result.stack.push_back(contract(tri, g));
     }
   }
   return result;

@@ -1,0 +1,101 @@
+// The expansion step (paper §3.3.1, Algorithms 3.1–3.4) on generated closed surfaces of genus 0
+// to 30: K is a triangulation of the same surface on the same vertices, M pairs every face but
+// the faces of T′, the flips are exactly the edges K does not share with T, and augmenting M gives
+// a perfect matching whose quads pass the quad check.
+
+#include "petersen/lrs/expansion_step.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/surface_check.hpp"
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/lrs/contraction_step.hpp"
+#include "petersen/matching/augment.hpp"
+#include "small_meshes.hpp"
+
+namespace petersen::lrs {
+namespace {
+
+std::vector<std::pair<VertexId, VertexId>> edge_set(const TriangleMesh& mesh) {
+  std::vector<std::pair<VertexId, VertexId>> edges;
+  for (const auto& t : mesh.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const VertexId a = t[k], b = t[(k + 1) % 3];
+      if (a < b) edges.emplace_back(a, b);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
+
+void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
+  Triangulation tri = Triangulation::from_mesh(mesh);
+  const std::uint32_t vertices = tri.live_vertices(), faces = tri.live_faces();
+  const ContractionResult contraction = contract_to_irreducible(tri);
+  const std::uint32_t irreducible_faces = tri.live_faces();
+  const ExpansionResult expansion = expand_and_match(tri, contraction.stack);
+
+  RC_ASSERT(tri.check() == "");
+  RC_ASSERT(tri.live_vertices() == vertices);
+  RC_ASSERT(tri.live_faces() == faces);
+  RC_ASSERT(tri.genus() == genus);
+  const TriangleMesh k = tri.to_mesh(mesh.positions);
+  const SurfaceReport report = inspect_surface(k);
+  RC_ASSERT(report.closed());
+  RC_ASSERT(report.pinched_vertices.empty());
+  RC_ASSERT(report.components == 1u);
+  RC_ASSERT(report.genus == std::optional<std::uint32_t>(genus));
+  RC_ASSERT(report.vertices == vertices);
+
+  // The flipped edges are exactly the edges of K that T does not have.
+  const auto t_edges = edge_set(mesh), k_edges = edge_set(k);
+  std::vector<std::pair<VertexId, VertexId>> new_edges;
+  std::set_difference(k_edges.begin(), k_edges.end(), t_edges.begin(), t_edges.end(),
+                      std::back_inserter(new_edges));
+  RC_ASSERT(new_edges.size() == std::size_t{expansion.flipped_edges});
+
+  const CubicGraph dual = tri.dual_graph();
+  Matching matching = matching_of(dual, expansion);
+  RC_ASSERT(verify_matching(dual, matching).ok());
+  RC_ASSERT(matching.unmatched_count() == irreducible_faces);
+  if (genus == 0) RC_ASSERT(matching.unmatched_count() == 4u);
+  if (genus > 0) RC_ASSERT(matching.unmatched_count() <= 56 * genus - 12);
+
+  augment_matching(dual, matching);
+  RC_ASSERT(verify_perfect_matching(dual, matching).ok());
+  RC_ASSERT(check_quad_mesh(mesh, quads_from_matching(k, dual, matching)).ok());
+}
+
+RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
+  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  check_expansion(random_closed_surface(genus, splits, flips, seed), genus);
+}
+
+RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
+  PlateSpec spec;
+  spec.holes_x = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.dents = *rc::gen::arbitrary<bool>();
+  check_expansion(voxel_plate(spec), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+}
+
+TEST(ExpansionStep, OctahedronLeavesTheFourTetrahedronFaces) {
+  Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  const ContractionResult contraction = contract_to_irreducible(tri);
+  const ExpansionResult expansion = expand_and_match(tri, contraction.stack);
+  EXPECT_EQ(tri.check(), "");
+  EXPECT_EQ(expansion.matched_edges, 2u);
+  EXPECT_EQ(matching_of(tri.dual_graph(), expansion).unmatched_count(), 4u);
+}
+
+}  // namespace
+}  // namespace petersen::lrs

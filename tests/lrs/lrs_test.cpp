@@ -1,0 +1,133 @@
+// The LRS front door: quads on generated and shared surfaces, statistics in the paper's terms, and
+// clear refusals of inputs that are not closed orientable manifold surfaces.
+
+#include "petersen/lrs/lrs.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cstdio>
+
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/dualize/surface_generators.hpp"
+#include "shared_meshes.hpp"
+#include "small_meshes.hpp"
+
+namespace petersen {
+namespace {
+
+#ifdef PETERSEN_SANITIZE
+constexpr std::uint32_t kMaxTriangles = 200000;
+#else
+constexpr std::uint32_t kMaxTriangles = 0xFFFFFFFFu;
+#endif
+
+void check_result(const TriangleMesh& mesh, const LrsResult& result, std::uint32_t genus) {
+  const LrsStats& s = result.stats;
+  RC_ASSERT(verify_perfect_matching(result.dual, result.matching).ok());
+  const QuadCheck quads = check_quad_mesh(mesh, result.quads);
+  RC_ASSERT(quads.ok());
+  RC_ASSERT(result.quads.quads.size() == mesh.triangles.size() / 2);
+  RC_ASSERT(s.genus == genus);
+  RC_ASSERT(s.unpaired_after_expansion == s.irreducible_faces);
+  RC_ASSERT(s.augmenting_paths == s.unpaired_after_expansion / 2);
+  RC_ASSERT(s.contractions == std::uint64_t{s.vertices} - s.irreducible_vertices);
+  if (genus == 0) {
+    RC_ASSERT(s.irreducible_vertices == 4u);
+    RC_ASSERT(s.unpaired_after_expansion == 4u);
+  } else {
+    RC_ASSERT(s.irreducible_vertices <= 26 * genus - 4);
+    RC_ASSERT(s.unpaired_after_expansion <= 56 * genus - 12);
+  }
+  RC_ASSERT(s.expansion_cases[0] + s.expansion_cases[1] + s.expansion_cases[2] +
+                s.expansion_cases[3] ==
+            s.contractions);
+  RC_ASSERT(s.total_seconds >= s.matching_seconds());
+}
+
+RC_GTEST_PROP(Lrs, RandomClosedSurfacesOfGenusUpTo30, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
+  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const TriangleMesh mesh = random_closed_surface(genus, splits, flips, seed);
+  const auto augment = *rc::gen::element(Augment::local, Augment::faithful);
+  check_result(mesh, quadrangulate_lrs(mesh, {.augment = augment}), genus);
+}
+
+RC_GTEST_PROP(Lrs, VoxelPlates, ()) {
+  PlateSpec spec;
+  spec.holes_x = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
+  spec.dents = *rc::gen::arbitrary<bool>();
+  const TriangleMesh mesh = voxel_plate(spec);
+  check_result(mesh, quadrangulate_lrs(mesh), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+}
+
+TEST(Lrs, EveryExpansionCaseRunsOnAnIrregularSphere) {
+  const TriangleMesh mesh = random_closed_surface(0, 3000, 3000, 7);
+  const LrsResult result = quadrangulate_lrs(mesh);
+  for (int c = 0; c < 4; ++c) EXPECT_GT(result.stats.expansion_cases[c], 0u) << "case " << c;
+  EXPECT_GT(result.stats.flipped_edges, 0u);
+  EXPECT_TRUE(check_quad_mesh(mesh, result.quads).ok());
+}
+
+TEST(Lrs, RefusesWhatIsNotAClosedOrientableManifold) {
+  const auto refuses = [](const TriangleMesh& mesh, const std::string& names) {
+    try {
+      quadrangulate_lrs(mesh);
+      ADD_FAILURE() << "accepted a mesh that should name " << names;
+    } catch (const MeshError& error) {
+      EXPECT_NE(std::string(error.what()).find(names), std::string::npos) << error.what();
+    }
+  };
+  // Two tetrahedra sharing vertex 0.
+  refuses(
+      lrs::testing::mesh_of(
+          7,
+          {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}}),
+      "vertex 0");
+  TriangleMesh open = lrs::testing::tetrahedron();
+  open.triangles.pop_back();
+  refuses(open, "edge");
+  TriangleMesh flipped = lrs::testing::tetrahedron();
+  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  refuses(flipped, "edge");
+  // Two disjoint tetrahedra.
+  refuses(
+      lrs::testing::mesh_of(
+          8,
+          {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {4, 6, 5}, {4, 5, 7}, {5, 6, 7}, {4, 7, 6}}),
+      "component");
+}
+
+TEST(Lrs, SharedMeshesConvert) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  for (const auto& expected : testing::shared_meshes_up_to(kMaxTriangles)) {
+    SCOPED_TRACE(expected.file);
+    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
+    const LrsResult result = quadrangulate_lrs(mesh);
+    const LrsStats& s = result.stats;
+    ASSERT_TRUE(verify_perfect_matching(result.dual, result.matching).ok());
+    const QuadCheck quads = check_quad_mesh(mesh, result.quads);
+    EXPECT_TRUE(quads.ok()) << quads.problem;
+    EXPECT_EQ(s.genus, expected.genus);
+    if (expected.genus == 0) {
+      EXPECT_EQ(s.unpaired_after_expansion, 4u);
+    } else {
+      EXPECT_LE(s.unpaired_after_expansion, 56 * expected.genus - 12);
+    }
+    std::printf(
+        "%-24s g=%-3u F=%-8u |T'|=%-4u l=%-4u flipped=%u (%.2f%% of edges) "
+        "contract %.3fs expand %.3fs augment %.3fs total %.3fs\n",
+        expected.file.c_str(), s.genus, s.faces, s.irreducible_vertices, s.unpaired_after_expansion,
+        s.flipped_edges, s.flipped_percent(), s.contraction_seconds, s.expansion_seconds,
+        s.augment_seconds, s.total_seconds);
+  }
+}
+
+}  // namespace
+}  // namespace petersen
