@@ -11,8 +11,8 @@
 
 namespace petersen::reduction {
 
-/// Nodes 0..n-1 stand for the graph's nodes, n + e for edge e (e < edge_capacity). Every
-/// operation but hang() is O(log n) amortized; splaying is iterative.
+/// Nodes 0..n-1 stand for the graph's nodes, n + e for edge e (e < edge_capacity), fewer than
+/// 2^30 in all. Every operation but hang() is O(log n) amortized; splaying is iterative.
 class CoverForest {
  public:
   CoverForest(std::uint32_t node_count, std::uint32_t edge_capacity);
@@ -41,13 +41,20 @@ class CoverForest {
   EdgeId cover(EdgeId e);
 
  private:
+  // 16 bytes, four to a cache line. The two high bits of `up` are the lazy flags: the subtree's
+  // children are to be swapped, or `label` is to be given to both subtrees. A pending label equals
+  // an edge node's own label, and graph nodes have none of their own, so one field holds both.
   struct Node {
     std::uint32_t child[2];
-    std::uint32_t parent;  // splay parent, or path parent for a splay root
-    EdgeId label;          // edge nodes: the cover; kNoEdge on graph nodes
-    EdgeId pending;        // a label still to be given to both subtrees, or kNoEdge
-    std::uint32_t reversed;
+    std::uint32_t up;     // splay parent, or path parent for a splay root; flags in bits 30, 31
+    std::uint32_t label;  // edge nodes: the cover; graph nodes: the pending label
   };
+  static constexpr std::uint32_t kReversed = 1u << 31, kPending = 1u << 30;
+  static constexpr std::uint32_t kIdMask = kPending - 1, kNil = kIdMask;
+  std::uint32_t parent(std::uint32_t x) const { return nodes_[x].up & kIdMask; }
+  void set_parent(std::uint32_t x, std::uint32_t p) {
+    nodes_[x].up = (nodes_[x].up & ~kIdMask) | p;
+  }
   std::uint32_t edge_node(EdgeId e) const { return base_ + e; }
   bool is_splay_root(std::uint32_t x) const;
   void give_label(std::uint32_t x, EdgeId label);
