@@ -15,8 +15,13 @@
 // when it leaves priority 0 (its free edges fall from 3 to 2): that one pass both decides between
 // priorities 1 and 2 and moves its priority-1 neighbours to 2 (they no longer share both free
 // edges with priority-0 nodes). Every other change is a counter decrement.
+// The neighbours are copied once into a flat array, three per node, so a scan reads one line
+// instead of an incidence list and three edges' ends (the scans of the nodes leaving priority 0
+// dominated the profile, stalled on exactly those loads).
 
 #include <array>
+#include <memory>
+#include <span>
 #include <vector>
 
 #include "greedy.hpp"
@@ -38,37 +43,43 @@ class PuliSegal {
   PuliSegal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
       : graph_(graph),
         mate_(matching.mate_edge),
+        neighbours_(std::make_unique_for_overwrite<NodeId[]>(3 * std::size_t{graph.node_count()})),
         state_(graph.node_count(), kStart),
         random_(seed),
-        cursor_(graph.node_count() == 0 ? 0 : random_.below(graph.node_count())) {}
+        cursor_(graph.node_count() == 0 ? 0 : random_.below(graph.node_count())) {
+    for (NodeId v = 0; v < graph.node_count(); ++v) {
+      const std::span<const EdgeId, 3> edges = graph.incident_edges(v);
+      for (int i = 0; i < 3; ++i)
+        neighbours_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
+    }
+  }
 
   void run() {
     for (NodeId v = draw(); v != kNoNode; v = draw()) {
       // A highest-priority neighbour over a free edge (the first one met on ties).
-      EdgeId best = kNoEdge;
+      int best = -1;
       int best_priority = -1;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        const std::uint8_t s = state_[graph_.other_end(e, v)];
+      for (int i = 0; i < 3; ++i) {
+        const std::uint8_t s = state_[neighbours(v)[i]];
         if (!(s & kOut) && priority(s) > best_priority) {
-          best = e;
+          best = i;
           best_priority = priority(s);
         }
       }
       state_[v] |= kOut;
-      if (best == kNoEdge) continue;  // every neighbour is paired: v stays unpaired
-      const NodeId u = graph_.other_end(best, v);
+      if (best < 0) continue;  // every neighbour is paired: v stays unpaired
+      const NodeId u = neighbours(v)[best];
       state_[u] |= kOut;
-      mate_[u] = mate_[v] = best;
+      mate_[u] = mate_[v] = graph_.incident_edges(v)[best];
       // The neighbours that lose a free edge, their incidence lists and edge ends fetched
       // together before any is updated, so the cache misses overlap instead of queueing.
       std::array<NodeId, 6> losers;
       int count = 0;
       for (NodeId w : {v, u}) {
-        for (EdgeId e : graph_.incident_edges(w)) {
-          const NodeId z = graph_.other_end(e, w);
+        for (NodeId z : neighbours(w)) {
           if (state_[z] & kOut) continue;
           losers[count++] = z;
-          __builtin_prefetch(graph_.incident_edges(z).data());
+          __builtin_prefetch(neighbours(z).data());
         }
       }
       for (int i = 0; i < count; ++i) lose_free_edge(losers[i]);
@@ -77,6 +88,9 @@ class PuliSegal {
 
  private:
   static int priority(std::uint8_t s) { return (s & kPriorityMask) >> 2; }
+  std::span<const NodeId, 3> neighbours(NodeId v) const {
+    return std::span<const NodeId, 3>(&neighbours_[3 * std::size_t{v}], 3);
+  }
 
   void enter(NodeId v, std::uint8_t state, int p) {
     state_[v] = static_cast<std::uint8_t>((state & ~kPriorityMask) | p << 2);
@@ -98,8 +112,7 @@ class PuliSegal {
     int now = 1;
     std::array<NodeId, 3> demoted;
     int demotions = 0;
-    for (EdgeId e : graph_.incident_edges(z)) {
-      const NodeId w = graph_.other_end(e, z);
+    for (NodeId w : neighbours(z)) {
       const std::uint8_t sw = state_[w];
       if ((sw & kOut) || priority(sw) == 0) continue;
       now = 2;
@@ -136,6 +149,7 @@ class PuliSegal {
 
   const CubicGraph& graph_;
   std::vector<EdgeId>& mate_;
+  std::unique_ptr<NodeId[]> neighbours_;     // v's three neighbours at 3v..3v+2, in edge order
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;
