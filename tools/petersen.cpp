@@ -11,6 +11,7 @@
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "run_report.hpp"
 
@@ -37,41 +38,52 @@ int info(const std::string& path) {
   return 0;
 }
 
+// The verifier is O(n): every answer is checked before anything is written.
+void verify_or_throw(const CubicGraph& graph, const Matching& matching,
+                     const std::string& algorithm) {
+  if (MatchingCheck check = verify_perfect_matching(graph, matching); !check.ok()) {
+    throw std::logic_error("internal error: " + algorithm +
+                           " returned a matching that is not perfect: " + check.message);
+  }
+}
+
 struct QuadArgs {
   std::string input, output, algorithm = "ps", augment = "local", stats_json;
   std::uint64_t seed = 1;
 };
 
-int quad(const QuadArgs& args) {
-  RunReport report;
-  report.input = args.input;
-  report.output = args.output;
-  mesh_format_of(args.output);  // an unknown output format fails before any work
-  Clock total, clock;
-  TriangleMesh mesh = read_triangle_mesh(args.input);
-  report.load_seconds = clock.lap();
+// Checks, matches, verifies and writes; MeshErrors are prefixed with the input by the caller.
+void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, Clock& total) {
+  Clock clock;
   SurfaceReport surface = inspect_surface(mesh);
-  try {
-    require_closed_surface(surface);
-  } catch (const MeshError& e) {
-    throw MeshError(args.input + ": " + e.what());
-  }
+  require_closed_surface(surface);
   report.vertices = surface.vertices;
   report.triangles = mesh.triangles.size();
   report.genus = surface.genus.value_or(0);
   report.components = surface.components;
 
   QuadMesh quads;
-  {
+  auto augment = parse_augment(args.augment);
+  if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
+  report.augment = args.augment;
+  if (args.algorithm == "lrs") {
+    report.algorithm = "lrs";
+    LrsResult result = quadrangulate_lrs(mesh, {.augment = *augment});
+    report.initial_seconds = result.stats.contraction_seconds + result.stats.expansion_seconds;
+    report.unpaired_after_initial = result.stats.unpaired_after_expansion;
+    report.augment_seconds = result.stats.augment_seconds;
+    report.augmenting_paths = result.stats.augmenting_paths;
+    report.flipped_edges = result.stats.flipped_edges;
+    report.irreducible_vertices = result.stats.irreducible_vertices;
+    verify_or_throw(result.dual, result.matching, report.algorithm);
+    quads = std::move(result.quads);
+  } else {
     auto algorithm = parse_algorithm(args.algorithm);
-    auto augment = parse_augment(args.augment);
-    if (!algorithm)
+    if (!algorithm) {
       throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
-    if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
-    report.algorithm = args.algorithm;
-    if (*algorithm == Algorithm::sg || *algorithm == Algorithm::ps) {
-      report.augment = args.augment;
     }
+    report.algorithm = args.algorithm;
+    if (*algorithm != Algorithm::sg && *algorithm != Algorithm::ps) report.augment.clear();
     clock.lap();
     Dual dual = build_dual(mesh);
     report.dual_seconds = clock.lap();
@@ -85,11 +97,7 @@ int quad(const QuadArgs& args) {
     report.blossoms = result.stats.blossoms;
     report.nodes_labelled = result.stats.nodes_labelled;
     report.reductions = result.stats.reductions;
-    // The verifier is O(n): every answer is checked before anything is written.
-    if (MatchingCheck check = verify_perfect_matching(dual.graph, result.matching); !check.ok()) {
-      throw std::logic_error("internal error: " + report.algorithm +
-                             " returned a matching that is not perfect: " + check.message);
-    }
+    verify_or_throw(dual.graph, result.matching, report.algorithm);
     quads = quads_from_matching(mesh, dual.graph, result.matching);
   }
   if (QuadCheck check = check_quad_mesh(mesh, quads); !check.ok()) {
@@ -106,6 +114,21 @@ int quad(const QuadArgs& args) {
                                                          &std::fclose);
     if (!file) throw std::runtime_error("cannot write " + args.stats_json);
     write_json(file.get(), report);
+  }
+}
+
+int quad(const QuadArgs& args) {
+  RunReport report;
+  report.input = args.input;
+  report.output = args.output;
+  mesh_format_of(args.output);  // an unknown output format fails before any work
+  Clock total, clock;
+  TriangleMesh mesh = read_triangle_mesh(args.input);
+  report.load_seconds = clock.lap();
+  try {
+    convert(args, mesh, report, total);
+  } catch (const MeshError& e) {
+    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
   return 0;
 }
