@@ -60,8 +60,9 @@ struct LrsResult {
 /// Converts a closed, connected, orientable manifold triangle mesh into a quad mesh with the same
 /// vertex set (see the limitation above). Throws MeshError naming the element (triangle, edge or
 /// vertex) when the input is not such a surface: boundary, non-manifold or inconsistently oriented
-/// edges, pinched vertices, several components. Time O(n) at genus 0 and O(g·n + g²) otherwise,
-/// plus the augmentation of ℓ free faces; O(n) memory; iterative throughout.
+/// edges, pinched vertices, several components. Contraction and expansion take O(n·d) for maximum
+/// input degree d (measured linear, bench/lrs_speed), the augmentation of the ℓ free faces O(ℓ·n)
+/// at worst; the surface check O(n log d); O(n) memory; iterative throughout.
 LrsResult quadrangulate_lrs(const TriangleMesh& mesh, const LrsOptions& options = {});
 
 }  // namespace petersen
