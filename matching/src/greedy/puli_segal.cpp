@@ -61,6 +61,7 @@ class PuliSegal {
       int best_priority = -1;
       for (int i = 0; i < 3; ++i) {
         const std::uint8_t s = state_[neighbours(v)[i]];
+        __builtin_prefetch(neighbours(neighbours(v)[i]).data());  // u's, and the other losers'
         if (!(s & kOut) && priority(s) > best_priority) {
           best = i;
           best_priority = priority(s);
