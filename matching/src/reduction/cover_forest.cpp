@@ -43,16 +43,17 @@ void CoverForest::push(std::uint32_t x) {
   n.up &= kIdMask;
 }
 
-void CoverForest::rotate(std::uint32_t x) {
+void CoverForest::rotate(std::uint32_t x, bool parent_is_root) {
+  // x, its parent y and y's parent z were pushed by splay: their flags are clear.
   const std::uint32_t y = parent(x), z = parent(y);
   const int side = nodes_[y].child[1] == x ? 1 : 0;
-  if (!is_splay_root(y)) nodes_[z].child[nodes_[z].child[1] == y ? 1 : 0] = x;
-  set_parent(x, z);
+  if (!parent_is_root) nodes_[z].child[nodes_[z].child[1] == y ? 1 : 0] = x;
+  nodes_[x].up = z;
   const std::uint32_t moved = nodes_[x].child[1 - side];
   nodes_[y].child[side] = moved;
   if (moved != kNil) set_parent(moved, y);
   nodes_[x].child[1 - side] = y;
-  set_parent(y, x);
+  nodes_[y].up = x;
 }
 
 void CoverForest::splay(std::uint32_t x) {
@@ -62,15 +63,18 @@ void CoverForest::splay(std::uint32_t x) {
     if (is_splay_root(y)) break;
   }
   for (auto it = path_.rbegin(); it != path_.rend(); ++it) push(*it);
-  while (!is_splay_root(x)) {
-    const std::uint32_t y = parent(x);
-    if (!is_splay_root(y)) {
-      const std::uint32_t z = parent(y);
-      const bool zigzig = (nodes_[y].child[0] == x) == (nodes_[z].child[0] == y);
-      rotate(zigzig ? y : x);
-    }
-    rotate(x);
+  // x's depth in its splay tree is known, so no step asks again where the root is.
+  std::size_t depth = path_.size() - 1;
+  for (; depth >= 2; depth -= 2) {
+    const std::uint32_t y = parent(x), z = parent(y);
+    const bool zigzig = (nodes_[y].child[0] == x) == (nodes_[z].child[0] == y);
+    if (zigzig)
+      rotate(y, depth == 2);
+    else
+      rotate(x, false);
+    rotate(x, depth == 2);
   }
+  if (depth == 1) rotate(x, true);
 }
 
 std::uint32_t CoverForest::access(std::uint32_t x) {
@@ -96,13 +100,19 @@ void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
   set_parent(a, m);  // a's tree below m
 }
 
-void CoverForest::cut(EdgeId e, NodeId a, NodeId b) {
-  evert(edge_node(e));
-  for (std::uint32_t x : {a, b}) {  // x hangs right below e's node: detach it from the root
-    access(x);
-    set_parent(nodes_[x].child[0], kNil);
-    nodes_[x].child[0] = kNil;
-  }
+void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
+  // Label the path a..b first, then split it at out's node: the part from a (the root) hangs
+  // below in's node, which hangs below b.
+  evert(a);
+  access(b);
+  give_label(b, out);
+  const std::uint32_t m = edge_node(out);
+  splay(m);
+  const std::uint32_t above = nodes_[m].child[0];
+  set_parent(above, edge_node(in));
+  set_parent(nodes_[m].child[1], kNil);
+  nodes_[m].child[0] = nodes_[m].child[1] = kNil;
+  nodes_[edge_node(in)] = Node{{kNil, kNil}, b, out};
 }
 
 void CoverForest::cut_above(EdgeId e) {

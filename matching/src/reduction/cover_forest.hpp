@@ -23,8 +23,10 @@ class CoverForest {
 
   /// Adds edge e = {a, b} to the forest; a and b must be in different trees.
   void link(EdgeId e, NodeId a, NodeId b);
-  /// Removes tree edge e = {a, b} from the forest.
-  void cut(EdgeId e, NodeId a, NodeId b);
+  /// Puts non-tree edge in = {a, b} into the forest in place of tree edge out, which must lie on
+  /// the tree path between a and b; that path's other edges and in are labelled out (out's
+  /// fundamental cycle after the swap). Two accesses.
+  void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
   /// Cuts tree edge e from its end nearer the root, which stays in e's tree no longer: e's node
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
   /// never read again).
@@ -58,8 +60,8 @@ class CoverForest {
   std::uint32_t edge_node(EdgeId e) const { return base_ + e; }
   bool is_splay_root(std::uint32_t x) const;
   void give_label(std::uint32_t x, EdgeId label);
-  void push(std::uint32_t x);
-  void rotate(std::uint32_t x);
+  [[gnu::always_inline]] inline void push(std::uint32_t x);
+  void rotate(std::uint32_t x, bool parent_is_root);
   void splay(std::uint32_t x);
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
 

@@ -71,11 +71,9 @@ GwChooser::GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
 }
 
 void GwChooser::swap(const ReductionGraph& graph, EdgeId in, EdgeId out) {
-  forest_.cut(out, graph.end(out, 0), graph.end(out, 1));
+  forest_.swap(in, graph.end(in, 0), graph.end(in, 1), out);
   in_tree_[out] = 0;
-  forest_.link(in, graph.end(in, 0), graph.end(in, 1));
   in_tree_[in] = 1;
-  forest_.cover_path(graph.end(out, 0), graph.end(out, 1), out);
   ++swaps_;
 }
 
@@ -136,10 +134,12 @@ bool GwChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
   }
   const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
   const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
+  // The ds rule: H2 exactly when the quartet is 13|24, i.e. rooted at x1, x3 joins x2 and x4
+  // where they meet x1 (l23 == l34) and x2 and x4 meet below that.
   forest_.evert(x1);
   const NodeId l23 = forest_.lca(x2, x3), l34 = forest_.lca_after(x4);
-  const NodeId l24 = forest_.lca(x2, x4);
-  return !(l23 == l34 && l24 != l23);  // the ds rule: H2 exactly when the quartet is 13|24
+  if (l23 != l34) return true;
+  return forest_.lca_after(x2) == l23;
 }
 
 void GwChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {
