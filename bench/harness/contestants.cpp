@@ -3,17 +3,12 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <chrono>
-#include <cstring>
 #include <stdexcept>
 
 #include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "verification_error.hpp"
-// LRS joins once petersen::lrs has its front door (quadrangulate_lrs).
-#if defined(PETERSEN_BENCH_HAS_LRS) && __has_include("petersen/lrs/lrs.hpp")
-#include "petersen/lrs/lrs.hpp"
-#define PETERSEN_BENCH_LRS_CONTESTANT 1
-#endif
 
 namespace petersen::bench {
 
@@ -128,7 +123,6 @@ Measures boost_peer(const BenchInput& input, std::uint64_t) {
   return measures;
 }
 
-#ifdef PETERSEN_BENCH_LRS_CONTESTANT
 // LRS (paper §3.3–3.4) on the mesh: (a) contraction + expansion, (c) ℓ, (d) augmentation. Its
 // matching pairs the triangles of K (the input with some edges flipped), so it is verified on
 // K's dual graph.
@@ -144,7 +138,6 @@ Measures lrs_contestant(const BenchInput& input, std::uint64_t) {
   measures.flips = result.stats.flipped_edges;
   return measures;
 }
-#endif
 
 }  // namespace
 
@@ -168,26 +161,10 @@ std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
                       return petersen_algorithm(input, algorithm, Augment::local, seed);
                     }});
   }
-#ifdef PETERSEN_BENCH_LRS_CONTESTANT
   list.push_back({"lrs", "LRS", false, false, 0xFFFFFFFFu, lrs_contestant});
-#endif
   list.push_back({"lemon", "", false, false, 0xFFFFFFFFu, lemon_peer});
   list.push_back({"boost", "", false, false, 0xFFFFFFFFu, boost_peer});
   return list;
-}
-
-bool is_available(const Contestant& contestant) {
-  // A tetrahedron, consistently oriented; its dual is K4.
-  const TriangleMesh tetrahedron{{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
-                                 {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}};
-  const Dual dual = build_dual(tetrahedron);
-  try {
-    contestant.run({tetrahedron, dual}, 1);
-  } catch (const std::invalid_argument& e) {
-    if (std::strstr(e.what(), "not built yet") != nullptr) return false;
-    throw;
-  }
-  return true;
 }
 
 }  // namespace petersen::bench

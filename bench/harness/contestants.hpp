@@ -25,16 +25,11 @@ struct Contestant {
   bool floor = false;      ///< the BFS every total is compared with
   std::uint32_t max_nodes = 0xFFFFFFFFu;  ///< larger inputs are skipped (quadratic oracles)
   /// Runs once and returns the measures; every matching is checked by verify_perfect_matching
-  /// first, and a failure throws VerificationError. Throws std::invalid_argument("... not built
-  /// yet") when this build lacks the algorithm.
+  /// first, and a failure throws VerificationError.
   std::function<Measures(const BenchInput&, std::uint64_t seed)> run;
 };
 
 /// All contestants, floor first. `frink_max_nodes` bounds the O(n^2) Frink oracle.
 std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes);
-
-/// Whether this build has the contestant: it is run in-process on the dual of a tetrahedron
-/// (K4), and only a "not built yet" answer counts as absent.
-bool is_available(const Contestant& contestant);
 
 }  // namespace petersen::bench

@@ -7,9 +7,7 @@
 
 #include "petersen/dualize/read_mesh.hpp"
 #include "plate.hpp"
-#ifdef PETERSEN_BENCH_HAS_LRS
 #include "simplify.hpp"
-#endif
 
 namespace petersen::bench {
 
@@ -76,7 +74,6 @@ std::vector<InputSpec> family_inputs(char family, const std::vector<int>& member
     name += std::to_string(member);
     const std::optional<PaperMesh> paper = paper_mesh(name);
     if (!paper) throw std::invalid_argument("no family member " + name + " in Table 4.2");
-#ifdef PETERSEN_BENCH_HAS_LRS
     // As in the paper, the smaller members are simplifications of the largest one.
     if (member > 1) {
       const std::uint64_t target = paper->triangles;
@@ -88,9 +85,7 @@ std::vector<InputSpec> family_inputs(char family, const std::vector<int>& member
                         [largest, target] { return simplify(plate_mesh(largest), target); }});
       continue;
     }
-#endif
-    inputs.push_back(plate_input(name, std::string(1, family), "regular (not simplified)",
-                                 fit(paper->triangles)));
+    inputs.push_back(plate_input(name, std::string(1, family), "regular", fit(paper->triangles)));
   }
   return inputs;
 }

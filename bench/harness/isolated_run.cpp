@@ -44,8 +44,7 @@ std::int64_t status_bytes(const char* field) {
     record.status = RunRecord::Status::invalid_matching;
     set_message(record, e.what());
   } catch (const std::exception& e) {
-    const bool unbuilt = std::strstr(e.what(), "not built yet") != nullptr;
-    record.status = unbuilt ? RunRecord::Status::unavailable : RunRecord::Status::error;
+    record.status = RunRecord::Status::error;
     set_message(record, e.what());
   }
   record.peak_extra_bytes = status_bytes("VmHWM") - rss_before;

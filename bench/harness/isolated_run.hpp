@@ -11,8 +11,7 @@ namespace petersen::bench {
 /// resident-memory high-water mark (/proc/self/clear_refs), runs `body`, adds the growth of VmHWM
 /// over the VmRSS it started from, and writes the record to a pipe. The parent waits at most
 /// `cap_seconds`, then SIGKILLs the child (Status::timeout). A child that dies without reporting is
-/// Status::crashed; an exception from `body` is Status::error (or Status::unavailable when its
-/// message says "not built yet").
+/// Status::crashed; an exception from `body` is Status::error.
 RunRecord run_isolated(const std::function<Measures()>& body, double cap_seconds);
 
 /// Copies `text` into the record's message, truncated to fit.

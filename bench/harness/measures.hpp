@@ -19,7 +19,7 @@ struct Measures {
 
 /// The outcome of one run in its own process.
 struct RunRecord {
-  enum class Status : std::int32_t { ok, unavailable, error, invalid_matching, timeout, crashed };
+  enum class Status : std::int32_t { ok, error, invalid_matching, timeout, crashed };
   Status status = Status::ok;
   Measures measures;
   std::int64_t peak_extra_bytes = 0;  ///< VmHWM after the run minus VmRSS before it

@@ -42,9 +42,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 Runner::Runner(std::vector<Contestant> contestants, RunnerOptions options)
-    : contestants_(std::move(contestants)), options_(options) {
-  for (const Contestant& c : contestants_) available_[c.name] = is_available(c);
-}
+    : contestants_(std::move(contestants)), options_(options) {}
 
 InputResult Runner::run(const InputSpec& spec, const TriangleMesh& mesh, double load_seconds) {
   InputResult result{spec, {}, 0, load_seconds, 0, {}};
@@ -78,11 +76,6 @@ Cell Runner::run_contestant(const Contestant& contestant, const BenchInput& inpu
   Cell cell{contestant.name, contestant.paper_name, Cell::Status::ok, "", 0, {}, 0, 0, 0};
   const std::uint32_t nodes = input.dual.graph.node_count();
   const auto cap_key = std::make_pair(result.spec.group, contestant.name);
-  if (!available_[contestant.name]) {
-    cell.status = Cell::Status::unavailable;
-    cell.message = "n/a (not built yet)";
-    return cell;
-  }
   if (nodes > contestant.max_nodes) {
     cell.status = Cell::Status::skipped;
     cell.message = "skipped (n > " + std::to_string(contestant.max_nodes) + ")";
@@ -111,10 +104,6 @@ Cell Runner::run_contestant(const Contestant& contestant, const BenchInput& inpu
         cell.status = Cell::Status::capped;
         cell.message = "> cap";
         capped_at_[cap_key] = nodes;
-        break;
-      case RunRecord::Status::unavailable:
-        cell.status = Cell::Status::unavailable;
-        cell.message = "n/a (not built yet)";
         break;
       case RunRecord::Status::invalid_matching:
         cell.status = Cell::Status::failed;

@@ -20,7 +20,7 @@ struct RunnerOptions {
 
 /// One contestant on one input.
 struct Cell {
-  enum class Status { ok, unavailable, capped, capped_before, skipped, failed };
+  enum class Status { ok, capped, capped_before, skipped, failed };
   std::string contestant, paper_name;
   Status status = Status::ok;
   std::string message;  ///< why it failed or was skipped
@@ -60,7 +60,6 @@ class Runner {
 
   std::vector<Contestant> contestants_;
   RunnerOptions options_;
-  std::map<std::string, bool> available_;
   std::map<std::pair<std::string, std::string>, std::uint64_t> capped_at_;  // (group, name) -> F
   bool any_failure_ = false;
 };
