@@ -1,5 +1,6 @@
 #include "reduction/cover_forest.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <utility>
 
@@ -9,14 +10,16 @@ CoverForest::CoverForest(std::uint32_t node_count, std::uint32_t edge_capacity)
     : base_(node_count) {
   if (std::uint64_t{node_count} + edge_capacity >= kNil)
     throw std::length_error("CoverForest: more than 2^30 nodes and edges");
-  nodes_.assign(std::size_t{node_count} + edge_capacity, Node{{kNil, kNil}, kNil, kNoEdge});
+  // An edge's node is written when the edge enters the forest (hang, link, swap) and not read
+  // before: the pages of edges that never do are never touched.
+  nodes_ = std::make_unique_for_overwrite<Node[]>(std::size_t{node_count} + edge_capacity);
+  std::fill_n(nodes_.get(), node_count, Node{{kNil, kNil}, kNil, kNoEdge});
 }
 
 void CoverForest::hang(NodeId child, EdgeId e, NodeId parent, EdgeId cover) {
   // Path-parent pointers alone are a valid link-cut forest: every splay tree a single node.
   nodes_[child].up = edge_node(e);
-  nodes_[edge_node(e)].up = parent;
-  nodes_[edge_node(e)].label = cover;
+  nodes_[edge_node(e)] = Node{{kNil, kNil}, parent, cover};
 }
 
 bool CoverForest::is_splay_root(std::uint32_t x) const {

@@ -5,6 +5,7 @@
 // whole tree path is relabelled at once by a lazy assignment.
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
@@ -65,7 +66,7 @@ class CoverForest {
   void splay(std::uint32_t x);
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
 
-  std::vector<Node> nodes_;
+  std::unique_ptr<Node[]> nodes_;
   std::uint32_t base_;               // the node of edge 0
   std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
 };

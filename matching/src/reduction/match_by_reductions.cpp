@@ -7,7 +7,6 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/graph/connectivity.hpp"
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
@@ -21,25 +20,35 @@ namespace {
 // The graph renumbered in depth-first order (nodes in preorder, edges as first traversed), each
 // node's edges kept in their order, so a depth-first search of the copy follows the same tree. A
 // tree path is then mostly a run of consecutive ids, which the choosers' link-cut trees and the
-// reduction graph walk with few cache misses whatever the input order was. O(n).
+// reduction graph walk with few cache misses whatever the input order was. One pass, O(n); the
+// components come out as runs of ids.
 struct DepthFirstCopy {
   CubicGraph graph;
-  std::vector<NodeId> old_node;  // by new id
-  std::vector<EdgeId> old_edge;  // by new id
+  std::vector<NodeId> old_node;          // by new id
+  std::vector<EdgeId> old_edge;          // by new id
+  std::vector<std::uint32_t> component;  // by new id
+  std::uint32_t components = 0;
 };
 
 DepthFirstCopy depth_first_copy(const CubicGraph& graph) {
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
   std::vector<NodeId> new_node(n, kNoNode);
   std::vector<EdgeId> new_edge(m, kNoEdge);
+  std::vector<EdgeId> node_edges(3 * std::size_t{n});
+  std::vector<NodeId> edge_ends(2 * std::size_t{m});
   DepthFirstCopy copy;
   copy.old_node.reserve(n);
   copy.old_edge.reserve(m);
-  std::vector<std::pair<NodeId, int>> stack;
+  copy.component.reserve(n);
+  const auto visit = [&](NodeId v) {
+    new_node[v] = static_cast<NodeId>(copy.old_node.size());
+    copy.old_node.push_back(v);
+    copy.component.push_back(copy.components);
+  };
+  std::vector<std::pair<NodeId, int>> stack;  // old id, next slot
   for (NodeId root = 0; root < n; ++root) {
     if (new_node[root] != kNoNode) continue;
-    new_node[root] = static_cast<NodeId>(copy.old_node.size());
-    copy.old_node.push_back(root);
+    visit(root);
     stack.push_back({root, 0});
     while (!stack.empty()) {
       auto& [v, k] = stack.back();
@@ -47,26 +56,23 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph) {
         stack.pop_back();
         continue;
       }
-      const EdgeId e = graph.incident_edge(v, k++);
-      if (new_edge[e] != kNoEdge) continue;
-      new_edge[e] = static_cast<EdgeId>(copy.old_edge.size());
+      const EdgeId e = graph.incident_edge(v, k);
+      EdgeId& id = node_edges[3 * std::size_t{new_node[v]} + k++];
+      if (new_edge[e] != kNoEdge) {
+        id = new_edge[e];
+        continue;
+      }
+      id = new_edge[e] = static_cast<EdgeId>(copy.old_edge.size());
       copy.old_edge.push_back(e);
-      const NodeId w = graph.other_end(e, v);
-      if (new_node[w] != kNoNode) continue;
-      new_node[w] = static_cast<NodeId>(copy.old_node.size());
-      copy.old_node.push_back(w);
-      stack.push_back({w, 0});
+      const auto [a, b] = graph.endpoints(e);
+      const NodeId w = a ^ b ^ v;
+      const bool tree_edge = new_node[w] == kNoNode;
+      if (tree_edge) visit(w);
+      edge_ends[2 * std::size_t{id}] = new_node[a];
+      edge_ends[2 * std::size_t{id} + 1] = new_node[b];
+      if (tree_edge) stack.push_back({w, 0});  // after the last use of the reference v
     }
-  }
-  std::vector<EdgeId> node_edges(3 * std::size_t{n});
-  std::vector<NodeId> edge_ends(2 * std::size_t{m});
-  for (NodeId v = 0; v < n; ++v)
-    for (int k = 0; k < 3; ++k)
-      node_edges[3 * std::size_t{v} + k] = new_edge[graph.incident_edge(copy.old_node[v], k)];
-  for (EdgeId e = 0; e < m; ++e) {
-    const auto [a, b] = graph.endpoints(copy.old_edge[e]);
-    edge_ends[2 * std::size_t{e}] = new_node[a];
-    edge_ends[2 * std::size_t{e} + 1] = new_node[b];
+    ++copy.components;
   }
   copy.graph = CubicGraph::from_incidence(std::move(node_edges), std::move(edge_ends));
   return copy;
@@ -83,9 +89,8 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   if (forbidden != kNoEdge)
     forbidden = static_cast<EdgeId>(
         std::find(copy.old_edge.begin(), copy.old_edge.end(), forbidden) - copy.old_edge.begin());
-  const std::vector<std::uint32_t> component = component_ids(renumbered);
-  const std::uint32_t components =
-      component.empty() ? 0 : *std::max_element(component.begin(), component.end()) + 1;
+  const std::vector<std::uint32_t>& component = copy.component;
+  const std::uint32_t components = copy.components;
   std::unique_ptr<Chooser> chooser;
   switch (options.chooser) {
     case Algorithm::frink:
