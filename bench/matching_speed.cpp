@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "bfs_floor.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
@@ -30,31 +31,6 @@ double seconds_of(const std::function<void()>& run) {
   const auto start = std::chrono::steady_clock::now();
   run();
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-// Breadth-first search from every unvisited node: visits all nodes and edges once.
-std::uint32_t plain_bfs(const CubicGraph& g, std::vector<NodeId>& queue,
-                        std::vector<std::uint8_t>& seen) {
-  std::fill(seen.begin(), seen.end(), 0);
-  queue.clear();
-  std::uint32_t components = 0;
-  for (NodeId s = 0; s < g.node_count(); ++s) {
-    if (seen[s]) continue;
-    ++components;
-    seen[s] = 1;
-    queue.push_back(s);
-    for (std::size_t head = queue.size() - 1; head < queue.size(); ++head) {
-      const NodeId v = queue[head];
-      for (EdgeId e : g.incident_edges(v)) {
-        const NodeId u = g.other_end(e, v);
-        if (!seen[u]) {
-          seen[u] = 1;
-          queue.push_back(u);
-        }
-      }
-    }
-  }
-  return components;
 }
 
 double median(std::vector<double> values) {
@@ -89,15 +65,12 @@ void measure(const std::string& name, const CubicGraph& g) {
   constexpr int kRounds = 5;
   const std::uint32_t n = g.node_count();
   std::printf("\n== %s: %u nodes\n", name.c_str(), n);
-  std::vector<NodeId> queue;
-  queue.reserve(n);
-  std::vector<std::uint8_t> seen(n);
   constexpr Algorithm kGreedy[] = {Algorithm::ps, Algorithm::sg};
   std::vector<double> bfs;
   std::vector<double> seconds[2], ratio[2], initial[2], augment[2];
   Result local[2];
   for (int round = 0; round < kRounds; ++round) {
-    bfs.push_back(seconds_of([&] { plain_bfs(g, queue, seen); }));
+    bfs.push_back(seconds_of([&] { petersen::bench::bfs_floor(g); }));
     for (int a = 0; a < 2; ++a) {
       local[a] = run_checked(g, kGreedy[a], Augment::local);
       seconds[a].push_back(local[a].stats.matching_seconds());

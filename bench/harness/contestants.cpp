@@ -5,6 +5,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "bfs_floor.hpp"
 #include "petersen/lemon_adapter/lemon_matching.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -23,32 +24,13 @@ void require_perfect(const CubicGraph& graph, const Matching& matching) {
   if (!check.ok()) throw VerificationError(check.message);
 }
 
-// The floor: one breadth-first search over every component of the dual graph.
+// The floor (bfs_floor.hpp).
 Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
-  const CubicGraph& graph = input.dual.graph;
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::uint8_t> seen(graph.node_count(), 0);
-  std::vector<NodeId> queue(graph.node_count());
-  std::size_t tail = 0;
-  for (NodeId root = 0; root < graph.node_count(); ++root) {
-    if (seen[root]) continue;
-    seen[root] = 1;
-    std::size_t head = tail;
-    queue[tail++] = root;
-    while (head < tail) {
-      const NodeId v = queue[head++];
-      for (EdgeId e : graph.incident_edges(v)) {
-        const NodeId w = graph.other_end(e, v);
-        if (!seen[w]) {
-          seen[w] = 1;
-          queue[tail++] = w;
-        }
-      }
-    }
-  }
+  const std::uint32_t reached = bfs_floor(input.dual.graph);
   Measures measures;
   measures.initial_seconds = seconds_since(start);
-  if (tail != graph.node_count()) throw std::logic_error("BFS missed nodes");
+  if (reached != input.dual.graph.node_count()) throw std::logic_error("BFS missed nodes");
   return measures;
 }
 
