@@ -92,15 +92,19 @@ std::uint32_t CoverForest::access(std::uint32_t x) {
 }
 
 void CoverForest::evert(NodeId a) {
+  if (a == root_) return;
   access(a);
   nodes_[a].up ^= kReversed;
+  root_ = a;
 }
 
 void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
   const std::uint32_t m = edge_node(e);
   nodes_[m] = Node{{kNil, kNil}, b, kNoEdge};  // m below b
-  evert(a);
-  set_parent(a, m);  // a's tree below m
+  access(a);
+  nodes_[a].up ^= kReversed;  // a is the root of its tree, and alone in its splay tree
+  set_parent(a, m);           // a's tree below m
+  root_ = kNil;
 }
 
 void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
@@ -116,6 +120,7 @@ void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
   set_parent(nodes_[m].child[1], kNil);
   nodes_[m].child[0] = nodes_[m].child[1] = kNil;
   nodes_[edge_node(in)] = Node{{kNil, kNil}, b, out};
+  root_ = kNil;
 }
 
 void CoverForest::cut_above(EdgeId e) {

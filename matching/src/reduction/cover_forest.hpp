@@ -32,7 +32,8 @@ class CoverForest {
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
   /// never read again).
   void cut_above(EdgeId e);
-  /// Makes a the root of its tree.
+  /// Makes a the root of its tree; free when a is the node last everted and no link or swap came
+  /// since.
   void evert(NodeId a);
   /// The lowest common ancestor of a and b under the current roots; they must be connected.
   NodeId lca(NodeId a, NodeId b);
@@ -69,6 +70,7 @@ class CoverForest {
   std::unique_ptr<Node[]> nodes_;
   std::uint32_t base_;               // the node of edge 0
   std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
+  std::uint32_t root_ = kNil;        // the node last everted while it is still its tree's root
 };
 
 }  // namespace petersen::reduction
