@@ -12,7 +12,8 @@ CoverForest::CoverForest(std::uint32_t node_count, std::uint32_t edge_capacity)
     throw std::length_error("CoverForest: more than 2^30 nodes and edges");
   // An edge's node is written when the edge enters the forest (hang, link, swap) and not read
   // before: the pages of edges that never do are never touched.
-  nodes_ = std::make_unique_for_overwrite<Node[]>(std::size_t{node_count} + edge_capacity);
+  const std::size_t size = std::size_t{node_count} + edge_capacity;
+  nodes_ = {HugePageAllocator<Node>().allocate(size), Release{size}};
   std::fill_n(nodes_.get(), node_count, Node{{kNil, kNil}, kNil, kNoEdge});
 }
 

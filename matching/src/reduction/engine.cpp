@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "reduction/brute_force.hpp"
+#include "reduction/huge_pages.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen::reduction {
@@ -60,7 +61,7 @@ Matching reduce_and_lift(const CubicGraph& graph, std::span<const std::uint32_t>
   if (forbidden != kNoEdge) first[component[graph.endpoints(forbidden)[0]]] = forbidden;
 
   ReductionGraph g(graph, n);  // a reduction adds at most two edges and removes two nodes
-  std::vector<Step> steps;
+  HugeVector<Step> steps;
   steps.reserve(n / 2);
   std::vector<EdgeId> mate(n, kNoEdge);
   for (std::uint32_t c = 0; c < components; ++c) {

@@ -35,8 +35,8 @@ GwChooser::GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
   // v's subtree, and low_edge[v] that back edge: it covers the tree edge above v.
   const std::uint32_t n = graph.node_count();
   constexpr std::uint32_t kUnseen = 0xFFFFFFFFu;
-  std::vector<std::uint32_t> pre(n, kUnseen), low(n);
-  std::vector<EdgeId> parent_edge(n, kNoEdge), low_edge(n, kNoEdge);
+  HugeVector<std::uint32_t> pre(n, kUnseen), low(n);
+  HugeVector<EdgeId> parent_edge(n, kNoEdge), low_edge(n, kNoEdge);
   std::vector<std::pair<NodeId, int>> stack;
   std::uint32_t clock = 0;
   for (NodeId root = 0; root < n; ++root) {

@@ -42,6 +42,7 @@
 
 #include "reduction/chooser.hpp"
 #include "reduction/cover_forest.hpp"
+#include "reduction/huge_pages.hpp"
 
 namespace petersen::reduction {
 
@@ -62,7 +63,7 @@ class GwChooser final : public Chooser {
   void swap(const ReductionGraph& graph, EdgeId in, EdgeId out);
 
   CoverForest forest_;
-  std::vector<std::uint8_t> in_tree_;
+  HugeVector<std::uint8_t> in_tree_;
   // After remove(): the pieces left (1 or 2) and, for two, each one's tree attachment and cover.
   std::uint32_t pieces_ = 0;
   std::array<std::array<EdgeId, 2>, 2> piece_{};

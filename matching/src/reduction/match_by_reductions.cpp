@@ -11,6 +11,7 @@
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
 #include "reduction/gw_chooser.hpp"
+#include "reduction/huge_pages.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen::reduction {
@@ -24,16 +25,16 @@ namespace {
 // components come out as runs of ids.
 struct DepthFirstCopy {
   CubicGraph graph;
-  std::vector<NodeId> old_node;          // by new id
-  std::vector<EdgeId> old_edge;          // by new id
-  std::vector<std::uint32_t> component;  // by new id
+  HugeVector<NodeId> old_node;          // by new id
+  HugeVector<EdgeId> old_edge;          // by new id
+  HugeVector<std::uint32_t> component;  // by new id
   std::uint32_t components = 0;
 };
 
 DepthFirstCopy depth_first_copy(const CubicGraph& graph) {
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
-  std::vector<NodeId> new_node(n, kNoNode);
-  std::vector<EdgeId> new_edge(m, kNoEdge);
+  HugeVector<NodeId> new_node(n, kNoNode);
+  HugeVector<EdgeId> new_edge(m, kNoEdge);
   std::vector<EdgeId> node_edges(3 * std::size_t{n});
   std::vector<NodeId> edge_ends(2 * std::size_t{m});
   DepthFirstCopy copy;
@@ -89,7 +90,7 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   if (forbidden != kNoEdge)
     forbidden = static_cast<EdgeId>(
         std::find(copy.old_edge.begin(), copy.old_edge.end(), forbidden) - copy.old_edge.begin());
-  const std::vector<std::uint32_t>& component = copy.component;
+  const HugeVector<std::uint32_t>& component = copy.component;
   const std::uint32_t components = copy.components;
   std::unique_ptr<Chooser> chooser;
   switch (options.chooser) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "reduction/huge_pages.hpp"
 
 namespace petersen::reduction {
 
@@ -39,9 +40,9 @@ class ReductionGraph {
   EdgeId add_edge(NodeId a, NodeId b);
   void replace_slot(NodeId v, EdgeId old_edge, EdgeId new_edge);
 
-  std::vector<NodeId> ends_;
-  std::vector<EdgeId> slots_;
-  std::vector<std::uint8_t> alive_;
+  HugeVector<NodeId> ends_;
+  HugeVector<EdgeId> slots_;
+  HugeVector<std::uint8_t> alive_;
 };
 
 }  // namespace petersen::reduction
