@@ -1,7 +1,4 @@
 #include "petersen/lrs/contraction_step.hpp"
-
-#include <algorithm>
-
 namespace petersen::lrs {
 namespace {
 
@@ -12,7 +9,7 @@ std::uint32_t marked_neighbours(const Triangulation& tri, VertexId w, const Vert
   Halfedge g = first;
   do {
     count += marks.marked(tri.destination(g));
-    g = tri.rotate(g);
+    g = tri.rotate_cw(g);
   } while (g != first);
   return count;
 }
@@ -22,26 +19,26 @@ std::uint32_t marked_neighbours(const Triangulation& tri, VertexId w, const Vert
 ContractionResult contract_to_irreducible(Triangulation& tri) {
   ContractionResult result;
   result.stack.reserve(tri.live_vertices());
+  result.processed.reserve(tri.live_vertices());
   VertexMarks neighbours(tri.vertex_capacity());
   std::vector<std::uint8_t> processed(tri.vertex_capacity(), 0);
   // Edges [u, w] whose contractibility may have changed, last in first out, pushed so that they
   // come out in counter-clockwise order round u: u sweeps round and round, as a walk round its
   // rotation would, which keeps the expansion's flips few.
   std::vector<EdgeId> untested;
-  std::vector<EdgeId> gained;  // the edges u gains from one contraction, in rotation order
   for (VertexId u = 0; u < tri.vertex_capacity(); ++u) {
     if (!tri.vertex_alive(u)) continue;  // contracted into an earlier vertex, or unreferenced
     processed[u] = 1;
     result.processed.push_back(u);
     neighbours.clear();
     untested.clear();
+    // Pushed clockwise from out(u)'s predecessor, out(u) last, so they pop counter-clockwise.
     Halfedge g = tri.out(u);
     do {
+      g = tri.rotate_cw(g);
       neighbours.mark(tri.destination(g));
       untested.push_back(Triangulation::edge(g));
-      g = tri.rotate(g);
     } while (g != tri.out(u));
-    std::reverse(untested.begin(), untested.end());
     // Process u until it is trapped (Definition 3.1). Contracting [u, v] changes the common
     // neighbours of u and w, or the apexes of [u, w], only when w is an apex x or y of [u, v]; any
     // other edge [u, w] can only gain common neighbours. So an edge found non-contractible is
@@ -59,14 +56,14 @@ ContractionResult contract_to_irreducible(Triangulation& tri) {
       // w's edges from [w, y] round to [w, x] become u's; all but those two are new to u.
       const Halfedge t1 = tri.next(Triangulation::twin(g));  // u→y
       const Halfedge wx = tri.next(g);                       // w→x
-      gained.clear();
-      for (Halfedge k = tri.rotate(Triangulation::twin(tri.next(t1))); k != wx; k = tri.rotate(k)) {
+      // Walked clockwise from [w, x] to [w, y], so that they pop counter-clockwise round u.
+      untested.push_back(Triangulation::edge(tri.prev(g)));  // [u, x], an apex: test again
+      const Halfedge wy = Triangulation::twin(tri.next(t1));
+      for (Halfedge k = tri.rotate_cw(wx); k != wy; k = tri.rotate_cw(k)) {
         neighbours.mark(tri.destination(k));
-        gained.push_back(Triangulation::edge(k));
+        untested.push_back(Triangulation::edge(k));
       }
       neighbours.unmark(w);
-      untested.push_back(Triangulation::edge(tri.prev(g)));  // [u, x], an apex: test again
-      untested.insert(untested.end(), gained.rbegin(), gained.rend());
       untested.push_back(Triangulation::edge(t1));  // [u, y], an apex: test again, first
       result.stack.push_back(contract(tri, g));
     }

@@ -11,39 +11,40 @@ bool is_contractible(const Triangulation& tri, Halfedge h, VertexMarks& marks) {
   Halfedge g = tri.out(u);
   do {
     marks.mark(tri.destination(g));
-    g = tri.rotate(g);
+    g = tri.rotate_cw(g);
   } while (g != tri.out(u));
   // The two apexes are always common neighbours; a third closes a non-facial 3-cycle.
   std::uint32_t common = 0;
   g = tri.out(v);
   do {
     common += marks.marked(tri.destination(g));
-    g = tri.rotate(g);
+    g = tri.rotate_cw(g);
   } while (g != tri.out(v));
   return common == 2;
 }
 
 ContractionRecord contract(Triangulation& tri, Halfedge h) {
-  auto& next = tri.next_;
-  auto& origin = tri.origin_;
-  const Halfedge h1 = next[h], h2 = next[h1];  // face [u, v, x]: u→v, v→x, x→u
+  auto& links = tri.links_;
+  const Halfedge h1 = links[h].next, h2 = links[h1].next;  // face [u, v, x]: u→v, v→x, x→u
   const Halfedge t = Triangulation::twin(h);
-  const Halfedge t1 = next[t], t2 = next[t1];  // face [v, u, y]: v→u, u→y, y→v
-  const VertexId u = origin[h], v = origin[h1], x = origin[h2], y = origin[t2];
+  const Halfedge t1 = links[t].next, t2 = links[t1].next;  // face [v, u, y]: v→u, u→y, y→v
+  const VertexId u = links[h].origin, v = links[h1].origin, x = links[h2].origin,
+                 y = links[t2].origin;
   const Halfedge a = Triangulation::twin(h1);  // x→v, dies with [v, x]
   const Halfedge d = Triangulation::twin(t2);  // v→y, dies with [v, y]
 
-  // v's outgoing halfedges outside the two faces, from v→y round to the one before v→x, go to u.
+  // v's outgoing halfedges outside the two faces, from v→y round to the one before v→x, go to u
+  // (walked clockwise from v→x, ending at v→u).
   std::uint32_t moved = 0;
-  for (Halfedge g = d; g != h1; g = tri.rotate(g), ++moved) origin[g] = u;
+  for (Halfedge g = tri.rotate_cw(h1); g != t; g = tri.rotate_cw(g), ++moved) links[g].origin = u;
   // x→u takes the place of x→v, u→y the place of v→y (order matters when v has degree 3).
-  Halfedge p = next[next[a]];
-  next[p] = h2;
-  next[h2] = next[a];
+  Halfedge p = links[links[a].next].next;
+  links[p].next = h2;
+  links[h2].next = links[a].next;
   tri.face_[h2] = tri.face_[a];
-  p = next[next[d]];
-  next[p] = t1;
-  next[t1] = next[d];
+  p = links[links[d].next].next;
+  links[p].next = t1;
+  links[t1].next = links[d].next;
   tri.face_[t1] = tri.face_[d];
 
   const std::uint32_t removed_degree = moved + 2;
@@ -64,47 +65,47 @@ ContractionRecord contract(Triangulation& tri, Halfedge h) {
 }
 
 void split(Triangulation& tri, const ContractionRecord& record) {
-  auto& next = tri.next_;
-  auto& origin = tri.origin_;
+  auto& links = tri.links_;
   // Dead halfedges kept their last values: h→h1→h2 and t→t1 are still linked, origins intact.
   const Halfedge h = record.h, t2 = record.t2;
-  const Halfedge h1 = next[h], h2 = next[h1];
+  const Halfedge h1 = links[h].next, h2 = links[h1].next;
   const Halfedge t = Triangulation::twin(h);
-  const Halfedge t1 = next[t];
-  const VertexId u = origin[h], v = origin[h1], x = origin[h2], y = origin[t2];
+  const Halfedge t1 = links[t].next;
+  const VertexId u = links[h].origin, v = links[h1].origin, x = links[h2].origin,
+                 y = links[t2].origin;
   const Halfedge a = Triangulation::twin(h1);
   const Halfedge d = Triangulation::twin(t2);
 
-  // u's outgoing halfedges strictly between u→y and u→x (v's side) go to v.
+  // u's outgoing halfedges strictly between u→y and u→x (v's side) go to v (walked clockwise).
   const Halfedge b = Triangulation::twin(h2);  // u→x
   std::uint32_t moved = 0;
-  for (Halfedge g = tri.rotate(t1); g != b; g = tri.rotate(g), ++moved) origin[g] = v;
+  for (Halfedge g = tri.rotate_cw(b); g != t1; g = tri.rotate_cw(g), ++moved) links[g].origin = v;
   // v→y takes the place of u→y, then x→v the place of x→u (the reverse of contract's order).
-  Halfedge p = next[next[t1]];
-  next[p] = d;
-  next[d] = next[t1];
+  Halfedge p = links[links[t1].next].next;
+  links[p].next = d;
+  links[d].next = links[t1].next;
   tri.face_[d] = tri.face_[t1];
-  origin[d] = v;
-  p = next[next[h2]];
-  next[p] = a;
-  next[a] = next[h2];
+  links[d].origin = v;
+  p = links[links[h2].next].next;
+  links[p].next = a;
+  links[a].next = links[h2].next;
   tri.face_[a] = tri.face_[h2];
-  origin[a] = x;
+  links[a].origin = x;
 
   const FaceId f0 = tri.face_[h], f1 = tri.face_[t];
-  next[h] = h1;
-  next[h1] = h2;
-  next[h2] = h;
+  links[h].next = h1;
+  links[h1].next = h2;
+  links[h2].next = h;
   tri.face_[h2] = f0;
-  next[t] = t1;
-  next[t1] = t2;
-  next[t2] = t;
+  links[t].next = t1;
+  links[t1].next = t2;
+  links[t2].next = t;
   tri.face_[t1] = f1;
-  origin[h] = u;
-  origin[h1] = v;
-  origin[t] = v;
-  origin[t1] = u;
-  origin[t2] = y;
+  links[h].origin = u;
+  links[h1].origin = v;
+  links[t].origin = v;
+  links[t1].origin = u;
+  links[t2].origin = y;
 
   tri.out_[u] = h;
   tri.out_[v] = h1;

@@ -9,30 +9,30 @@ bool is_flippable(const Triangulation& tri, Halfedge h) {
   Halfedge k = tri.out(c);
   do {
     if (tri.destination(k) == d) return false;
-    k = tri.rotate(k);
+    k = tri.rotate_cw(k);
   } while (k != tri.out(c));
   return true;
 }
 
 void flip(Triangulation& tri, Halfedge h) {
-  auto& next = tri.next_;
+  auto& links = tri.links_;
   const Halfedge g = Triangulation::twin(h);
-  const Halfedge hn = next[h], hp = next[hn];  // b→c, c→a
-  const Halfedge gn = next[g], gp = next[gn];  // a→d, d→b
-  const VertexId a = tri.origin_[h], b = tri.origin_[g];
-  const VertexId c = tri.origin_[hp], d = tri.origin_[gp];
+  const Halfedge hn = links[h].next, hp = links[hn].next;  // b→c, c→a
+  const Halfedge gn = links[g].next, gp = links[gn].next;  // a→d, d→b
+  const VertexId a = links[h].origin, b = links[g].origin;
+  const VertexId c = links[hp].origin, d = links[gp].origin;
   const FaceId f = tri.face_[h], f2 = tri.face_[g];
   // Face f becomes [c, a, d] = c→a, a→d, d→c; face f2 becomes [d, b, c] = d→b, b→c, c→d.
-  next[h] = hp;
-  next[hp] = gn;
-  next[gn] = h;
-  next[g] = gp;
-  next[gp] = hn;
-  next[hn] = g;
+  links[h].next = hp;
+  links[hp].next = gn;
+  links[gn].next = h;
+  links[g].next = gp;
+  links[gp].next = hn;
+  links[hn].next = g;
   tri.face_[gn] = f;
   tri.face_[hn] = f2;
-  tri.origin_[h] = d;
-  tri.origin_[g] = c;
+  links[h].origin = d;
+  links[g].origin = c;
   if (tri.out_[a] == h) tri.out_[a] = gn;
   if (tri.out_[b] == g) tri.out_[b] = hn;
   --tri.degree_[a];

@@ -15,8 +15,7 @@ Triangulation Triangulation::from_mesh(const TriangleMesh& mesh) {
   const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
 
   Triangulation tri;
-  tri.origin_.resize(2 * std::size_t{edges});
-  tri.next_.resize(2 * std::size_t{edges});
+  tri.links_.resize(2 * std::size_t{edges});
   tri.face_.resize(2 * std::size_t{edges});
   tri.edge_alive_.assign(edges, 1);
   tri.out_.assign(mesh.positions.size(), kNoHalfedge);
@@ -32,8 +31,7 @@ Triangulation Triangulation::from_mesh(const TriangleMesh& mesh) {
     for (std::uint32_t k = 0; k < 3; ++k) {
       const Halfedge h = ours[3 * std::size_t{t} + k];
       const VertexId v = mesh.triangles[t][k];
-      tri.origin_[h] = v;
-      tri.next_[h] = ours[3 * std::size_t{t} + (k + 1) % 3];
+      tri.links_[h] = {v, ours[3 * std::size_t{t} + (k + 1) % 3]};
       tri.face_[h] = t;
       tri.out_[v] = h;
       ++tri.degree_[v];
@@ -47,14 +45,13 @@ Triangulation Triangulation::from_mesh(const TriangleMesh& mesh) {
 
 namespace {
 
-// The smallest halfedge of every live face, kNoHalfedge for dead faces.
+// The smallest halfedge of every live face, kNoHalfedge for dead faces: the first met in id order.
 std::vector<Halfedge> face_starts(const Triangulation& tri) {
   std::vector<Halfedge> start(tri.face_capacity(), kNoHalfedge);
-  for (EdgeId e = 0; e < tri.edge_capacity(); ++e) {
-    if (!tri.edge_alive(e)) continue;
-    for (Halfedge h = 2 * e; h < 2 * e + 2; ++h) {
-      if (h < tri.next(h) && h < tri.prev(h)) start[tri.face(h)] = h;
-    }
+  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
+    if (!tri.edge_alive(Triangulation::edge(h))) continue;
+    Halfedge& s = start[tri.face(h)];
+    if (s == kNoHalfedge) s = h;
   }
   return start;
 }
@@ -76,11 +73,16 @@ CubicGraph Triangulation::dual_graph() const {
   if (live_faces_ != face_capacity_) {
     throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
   }
-  const std::vector<Halfedge> start = face_starts(*this);
-  std::vector<EdgeId> node_edges(3 * std::size_t{face_capacity_});
-  for (FaceId f = 0; f < face_capacity_; ++f) {
-    Halfedge h = start[f];
-    for (int k = 0; k < 3; ++k, h = next(h)) node_edges[3 * std::size_t{f} + k] = edge(h);
+  // One pass in halfedge order: the first halfedge met of a face is its smallest, and fills the
+  // face's three slots.
+  std::vector<EdgeId> node_edges(3 * std::size_t{face_capacity_}, kNoEdge);
+  for (Halfedge h = 0; h < links_.size(); ++h) {
+    EdgeId* slots = node_edges.data() + 3 * std::size_t{face_[h]};
+    if (slots[0] != kNoEdge) continue;
+    const Halfedge n = next(h);
+    slots[0] = edge(h);
+    slots[1] = edge(n);
+    slots[2] = edge(next(n));
   }
   return CubicGraph::from_incidence(std::move(node_edges), face_);
 }
