@@ -35,6 +35,7 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "petersen/matching/augment.hpp"
 
 namespace petersen::augment_detail {
@@ -67,9 +68,15 @@ class AlternatingForest {
         mate_edge_(mate),
         stats_(stats),
         n_(mate.size()),
-        slot_(std::make_unique_for_overwrite<Slot[]>(n_)),
-        bridge_(std::make_unique_for_overwrite<Bridge[]>(n_)) {
+        slot_(make_huge_array<Slot>(n_)),
+        bridge_(make_huge_array<Bridge>(n_)) {
+    // Every node's mate is read through its mate edge's ends, a random access: the ends of the
+    // edge kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
+    constexpr NodeId kReadAhead = 16;
     for (NodeId v = 0; v < n_; ++v) {
+      if (v + kReadAhead < n_ && mate[v + kReadAhead] != kNoEdge) {
+        __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{mate[v + kReadAhead]}]);
+      }
       const bool free = mate[v] == kNoEdge;
       slot_[v] = {free ? kNoNode : graph.other_end(mate[v], v), 0, kNone, v};
       if (free) free_.push_back(v);
@@ -326,8 +333,8 @@ class AlternatingForest {
   std::vector<EdgeId>& mate_edge_;
   AugmentStats& stats_;
   std::size_t n_;
-  std::unique_ptr<Slot[]> slot_;
-  std::unique_ptr<Bridge[]> bridge_;  // bridged node: its bridge and the end on its side
+  HugeArray<Slot> slot_;
+  HugeArray<Bridge> bridge_;  // bridged node: its bridge and the end on its side
   std::vector<NodeId> free_;
   std::vector<std::uint8_t> tree_alive_;     // per tree: its root is still free
   std::vector<std::uint32_t> blocked_head_;  // per tree: first entry of its blocked list

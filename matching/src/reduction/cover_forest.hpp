@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "petersen/graph/cubic_graph.hpp"
-#include "reduction/huge_pages.hpp"
 
 namespace petersen::reduction {
 
@@ -68,11 +68,7 @@ class CoverForest {
   void splay(std::uint32_t x);
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
 
-  struct Release {
-    std::size_t size;
-    void operator()(Node* nodes) const { HugePageAllocator<Node>().deallocate(nodes, size); }
-  };
-  std::unique_ptr<Node[], Release> nodes_;
+  HugeArray<Node> nodes_;
   std::uint32_t base_;               // the node of edge 0
   std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
   std::uint32_t root_ = kNil;        // the node last everted while it is still its tree's root

@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "reduction/brute_force.hpp"
-#include "reduction/huge_pages.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen::reduction {

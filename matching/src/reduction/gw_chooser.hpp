@@ -40,9 +40,9 @@
 #include <span>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "reduction/chooser.hpp"
 #include "reduction/cover_forest.hpp"
-#include "reduction/huge_pages.hpp"
 
 namespace petersen::reduction {
 

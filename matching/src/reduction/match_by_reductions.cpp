@@ -8,12 +8,12 @@
 #include <utility>
 #include <vector>
 
+#include "huge_pages.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
 #include "reduction/gw_chooser.hpp"
-#include "reduction/huge_pages.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen::reduction {

@@ -33,6 +33,7 @@ class CsrGraph {
     return edge_ends_[2 * e] ^ edge_ends_[2 * e + 1] ^ v;
   }
   /// The edges at v; a parallel edge appears once per copy.
+  std::span<const NodeId> edge_ends() const { return edge_ends_; }
   std::span<const EdgeId> incident_edges(NodeId v) const {
     return std::span<const EdgeId>(node_edges_.data() + offsets_[v], offsets_[v + 1] - offsets_[v]);
   }

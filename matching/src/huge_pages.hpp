@@ -6,6 +6,7 @@
 
 #include <cstddef>
 #include <cstdlib>
+#include <memory>
 #include <new>
 #include <vector>
 
@@ -13,7 +14,7 @@
 #include <sys/mman.h>
 #endif
 
-namespace petersen::reduction {
+namespace petersen {
 
 template <class T>
 struct HugePageAllocator {
@@ -51,4 +52,18 @@ struct HugePageAllocator {
 template <class T>
 using HugeVector = std::vector<T, HugePageAllocator<T>>;
 
-}  // namespace petersen::reduction
+/// A fixed-size array on huge pages whose elements the owner writes before reading (no
+/// initialising pass): for trivially constructible T.
+template <class T>
+struct HugeArrayRelease {
+  std::size_t size = 0;
+  void operator()(T* p) const { HugePageAllocator<T>().deallocate(p, size); }
+};
+template <class T>
+using HugeArray = std::unique_ptr<T[], HugeArrayRelease<T>>;
+template <class T>
+HugeArray<T> make_huge_array(std::size_t size) {
+  return HugeArray<T>(HugePageAllocator<T>().allocate(size), HugeArrayRelease<T>{size});
+}
+
+}  // namespace petersen
