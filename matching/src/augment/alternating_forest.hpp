@@ -43,11 +43,12 @@ namespace petersen::augment_detail {
 enum Label : std::uint32_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-/// One node's search state: `mate` is its mate node (kNoNode when free). `tag` is tree << 3 | mark
-/// << 2 | label (0: never labelled). `link` is, for an odd or bridged node, the edge it was
-/// labelled over; for an even node (not a root), the even node two steps up its tree (the pred of
-/// its mate), so a blossom walk climbs one slot per step. `base` is the disjoint-set parent; a
-/// set's root is its blossom's base.
+/// One node's search state: `mate` is its mate node (kNoNode when free). `tag` is tree << 4 | side
+/// << 3 | mark << 2 | label (0: never labelled). `link` is, for an odd node, the edge it was
+/// labelled over; for a bridged node, its bridge, with `side` telling which end is on its side;
+/// for an even node (not a root), the even node two steps up its tree (the pred of its mate), so a
+/// blossom walk climbs one slot per step. `base` is the disjoint-set parent; a set's root is its
+/// blossom's base.
 struct alignas(16) Slot {
   NodeId mate;
   std::uint32_t tag;
@@ -55,8 +56,10 @@ struct alignas(16) Slot {
   NodeId base;
 };
 
-/// Most trees one forest can hold (the tree number has 29 bits of the tag).
-inline constexpr std::uint32_t kMaxTrees = 1u << 29;
+/// Most trees one forest can hold (the tree number has the tag's top 28 bits).
+inline constexpr int kTreeShift = 4;
+inline constexpr std::uint32_t kSide = 8;
+inline constexpr std::uint32_t kMaxTrees = 1u << (32 - kTreeShift);
 
 template <class Graph>
 class AlternatingForest {
@@ -68,8 +71,7 @@ class AlternatingForest {
         mate_edge_(mate),
         stats_(stats),
         n_(mate.size()),
-        slot_(make_huge_array<Slot>(n_)),
-        bridge_(make_huge_array<Bridge>(n_)) {
+        slot_(make_huge_array<Slot>(n_)) {
     // Every node's mate is read through its mate edge's ends, a random access: the ends of the
     // edge kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
     constexpr NodeId kReadAhead = 16;
@@ -106,7 +108,7 @@ class AlternatingForest {
     const std::uint32_t tree = trees_++;
     tree_alive_[tree] = 1;
     blocked_head_[tree] = kNone;
-    slot_[r].tag = tree << 3 | even;
+    slot_[r].tag = tree << kTreeShift | even;
     slot_[r].base = r;
     ++stats_.nodes_labelled;
     queue_.push_back(r);
@@ -123,7 +125,7 @@ class AlternatingForest {
       const std::uint32_t tx = slot_[x].tag;
       // x's tree died after x was queued, or x has since been labelled odd in another tree.
       if (!alive(tx) || label_of(tx) == odd) continue;
-      const std::uint32_t tree = tx >> 3;
+      const std::uint32_t tree = tx >> kTreeShift;
       for (EdgeId e : graph_.incident_edges(x)) {
         const NodeId y = graph_.other_end(e, x);
         // Any edge to x's mate (a parallel copy included) leads inside x's blossom or to its
@@ -137,17 +139,17 @@ class AlternatingForest {
           } else {
             // The common step, no blossom work: y odd, its mate z even, both in x's tree.
             const NodeId z = sy.mate;
-            sy = {sy.mate, tree << 3 | odd, e, y};
+            sy = {sy.mate, tree << kTreeShift | odd, e, y};
             Slot& sz = slot_[z];
-            sz = {sz.mate, tree << 3 | even, x, z};
+            sz = {sz.mate, tree << kTreeShift | even, x, z};
             stats_.nodes_labelled += 2;
             queue_.push_back(z);
             continue;
           }
         } else if (label_of(ty) == odd) {
-          if (ty >> 3 != tree) block(x, ty >> 3);
+          if (ty >> kTreeShift != tree) block(x, ty >> kTreeShift);
           continue;
-        } else if (ty >> 3 != tree) {
+        } else if (ty >> kTreeShift != tree) {
           augment(x, y, e);
         } else {
           if (find(x) != find(y)) shrink(x, y, e);
@@ -163,10 +165,6 @@ class AlternatingForest {
   }
 
  private:
-  struct Bridge {
-    EdgeId edge;
-    NodeId side;
-  };
   struct Blocked {
     NodeId node;
     std::uint32_t next;
@@ -174,7 +172,7 @@ class AlternatingForest {
 
   static Label label_of(std::uint32_t tag) { return static_cast<Label>(tag & 3); }
   bool alive(std::uint32_t tag) const {
-    return label_of(tag) != unlabelled && tree_alive_[tag >> 3];
+    return label_of(tag) != unlabelled && tree_alive_[tag >> kTreeShift];
   }
 
   // Stage k reads what stage k+1 prefetched (kStride queue entries earlier), so each line has
@@ -255,11 +253,15 @@ class AlternatingForest {
   }
 
   // Makes the odd nodes between base u and base b even, bridged by e with `side` on their side.
+  // The bridge takes the odd node's link (its pred edge, which collect() finds again among its
+  // edges, from its mate's link), so a shrink writes only slots: a separate bridge array was an
+  // n-sized array faulted in page by page during the search.
   void bridge(NodeId u, NodeId b, NodeId side, EdgeId e) {
+    const std::uint32_t side_bit = graph_.endpoints(e)[1] == side ? kSide : 0;
     while (u != b) {
       const NodeId o = slot_[u].mate;
-      slot_[o].tag |= bridged;
-      bridge_[o] = {e, side};
+      slot_[o].tag |= bridged | side_bit;
+      slot_[o].link = e;
       slot_[o].base = b;
       const NodeId up = slot_[u].link;
       slot_[u].base = b;
@@ -274,10 +276,10 @@ class AlternatingForest {
     ++stats_.augmenting_paths;
     path_edges_.clear();
     path_edges_.push_back(e);
-    const std::uint32_t tree_x = slot_[x].tag >> 3;
+    const std::uint32_t tree_x = slot_[x].tag >> kTreeShift;
     collect(x);
     const bool y_in_tree = alive(slot_[y].tag);
-    const std::uint32_t tree_y = slot_[y].tag >> 3;
+    const std::uint32_t tree_y = slot_[y].tag >> kTreeShift;
     if (y_in_tree) collect(y);
     for (EdgeId f : path_edges_) {
       auto [a, c] = graph_.endpoints(f);
@@ -317,10 +319,14 @@ class AlternatingForest {
       while (from != to && slot_[from].mate != kNoNode) {
         const NodeId m = slot_[from].mate;
         if (label_of(slot_[from].tag) == even) {
-          path_edges_.push_back(slot_[m].link);
-          from = slot_[from].link;
+          // m's pred edge: its link while m is odd; a bridge took that link if m is bridged.
+          const NodeId up = slot_[from].link;
+          path_edges_.push_back(label_of(slot_[m].tag) == odd ? slot_[m].link
+                                                              : edge_between(m, up));
+          from = up;
         } else {
-          const auto [edge, s] = bridge_[from];
+          const EdgeId edge = slot_[from].link;
+          const NodeId s = graph_.endpoints(edge)[(slot_[from].tag & kSide) ? 1 : 0];
           path_edges_.push_back(edge);
           pending_.push_back({s, m});
           from = graph_.other_end(edge, s);
@@ -329,12 +335,18 @@ class AlternatingForest {
     }
   }
 
+  // An edge joining m and w (any copy of a parallel edge: none of them is a matching edge here).
+  EdgeId edge_between(NodeId m, NodeId w) const {
+    for (EdgeId e : graph_.incident_edges(m))
+      if (graph_.other_end(e, m) == w) return e;
+    return kNoEdge;  // unreachable: m was labelled over an edge from w
+  }
+
   const Graph& graph_;
   std::vector<EdgeId>& mate_edge_;
   AugmentStats& stats_;
   std::size_t n_;
   HugeArray<Slot> slot_;
-  HugeArray<Bridge> bridge_;  // bridged node: its bridge and the end on its side
   std::vector<NodeId> free_;
   std::vector<std::uint8_t> tree_alive_;     // per tree: its root is still free
   std::vector<std::uint32_t> blocked_head_;  // per tree: first entry of its blocked list
