@@ -28,8 +28,31 @@ ExpansionResult expand_and_match(Triangulation& tri, std::span<const Contraction
     state[edge(h)] ^= kFlipped;
   };
 
-  for (auto it = stack.rbegin(); it != stack.rend(); ++it) {
-    const ContractionRecord& record = *it;
+  // Splits are undone in stack order, so the halfedges of later splits are known ahead: ask for
+  // them in three stages, each reading only what the previous stage's hints brought in (the
+  // records' halfedges, then their successors, then the second successor and the vertices).
+  constexpr std::size_t kAhead = 8;
+  const auto ahead = [&](std::size_t k) -> const ContractionRecord* {
+    return k < stack.size() ? &stack[stack.size() - 1 - k] : nullptr;
+  };
+  for (std::size_t i = 0; i < stack.size(); ++i) {
+    if (const ContractionRecord* far = ahead(i + 3 * kAhead)) {
+      tri.prefetch(far->h);
+      tri.prefetch(far->t2);
+    }
+    if (const ContractionRecord* mid = ahead(i + 2 * kAhead)) {
+      tri.prefetch(tri.next(mid->h));
+      tri.prefetch(tri.next(Triangulation::twin(mid->h)));
+    }
+    if (const ContractionRecord* near = ahead(i + kAhead)) {
+      const Halfedge h2 = tri.next(tri.next(near->h));
+      tri.prefetch(h2);
+      __builtin_prefetch(&state[edge(h2)]);
+      tri.prefetch_vertex(tri.origin(near->h));
+      tri.prefetch_vertex(tri.origin(h2));
+      tri.prefetch_vertex(tri.origin(near->t2));
+    }
+    const ContractionRecord& record = *ahead(i);
     // Halfedges of the faces the split revives: [u, v, x] = h, h1, h2 and [v, u, y] = t, t1, t2.
     const Halfedge h = record.h, t2 = record.t2;
     const Halfedge h1 = tri.next(h), h2 = tri.next(h1);

@@ -84,7 +84,9 @@ CubicGraph Triangulation::dual_graph() const {
     slots[1] = edge(n);
     slots[2] = edge(next(n));
   }
-  return CubicGraph::from_incidence(std::move(node_edges), face_);
+  // Valid by construction: every live halfedge lies in one face cycle of length 3 (check()), so
+  // each slot of face f names an edge with an end f, once per end.
+  return CubicGraph::from_valid_incidence(std::move(node_edges), face_);
 }
 
 std::string Triangulation::check() const {

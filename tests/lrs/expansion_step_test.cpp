@@ -9,6 +9,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <span>
 #include <utility>
 
 #include "petersen/dualize/quads.hpp"
@@ -60,6 +61,11 @@ void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
   RC_ASSERT(new_edges.size() == std::size_t{expansion.flipped_edges});
 
   const CubicGraph dual = tri.dual_graph();
+  // dual_graph skips from_incidence's checks (valid by construction): run them here.
+  const std::span<const EdgeId> slots = dual.node_edges();
+  const std::span<const NodeId> ends = dual.edge_ends();
+  RC_ASSERT(CubicGraph::from_incidence({slots.begin(), slots.end()}, {ends.begin(), ends.end()})
+                .edge_count() == dual.edge_count());
   Matching matching = matching_of(dual, expansion);
   RC_ASSERT(verify_matching(dual, matching).ok());
   RC_ASSERT(matching.unmatched_count() == irreducible_faces);

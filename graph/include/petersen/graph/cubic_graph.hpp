@@ -6,6 +6,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace petersen {
@@ -39,6 +40,18 @@ class CubicGraph {
   /// disagrees: an edge out of range, a loop, an edge listed at a node that is not its endpoint,
   /// or an edge not listed exactly once at each end. O(n).
   static CubicGraph from_incidence(std::vector<EdgeId> node_edges, std::vector<NodeId> edge_ends);
+
+  /// from_incidence without its checks, for arrays that form a cubic graph by construction (the
+  /// dual of a triangulation's halfedge structure, lrs::Triangulation::dual_graph): the checks
+  /// read edge_ends at every slot's edge, a random access that costs as much as building the
+  /// arrays. The caller's tests check such arrays with from_incidence. O(1).
+  static CubicGraph from_valid_incidence(std::vector<EdgeId> node_edges,
+                                         std::vector<NodeId> edge_ends) {
+    CubicGraph g;
+    g.node_edges_ = std::move(node_edges);
+    g.edge_ends_ = std::move(edge_ends);
+    return g;
+  }
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(node_edges_.size() / 3); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends_.size() / 2); }
