@@ -11,13 +11,19 @@ namespace {
 
 using EdgeList = std::vector<std::array<NodeId, 2>>;
 
-CubicGraph build(std::uint32_t n, const EdgeList& edges) { return CubicGraph::from_edges(n, edges); }
+CubicGraph build(std::uint32_t n, const EdgeList& edges) {
+  return CubicGraph::from_edges(n, edges);
+}
 
 }  // namespace
 
-CubicGraph theta_graph() { return build(2, {{0, 1}, {0, 1}, {0, 1}}); }
+CubicGraph theta_graph() {
+  return build(2, {{0, 1}, {0, 1}, {0, 1}});
+}
 
-CubicGraph complete_k4() { return build(4, {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}}); }
+CubicGraph complete_k4() {
+  return build(4, {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}});
+}
 
 CubicGraph complete_k33() {
   EdgeList edges;

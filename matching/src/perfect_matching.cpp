@@ -15,8 +15,8 @@ constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
     {Algorithm::sg, "sg"}, {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
     {Algorithm::gw, "gw"}, {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
 };
-constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {
-    {Augment::local, "local"}, {Augment::faithful, "faithful"}};
+constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::local, "local"},
+                                                                  {Augment::faithful, "faithful"}};
 
 // LEMON's MaxMatching on a copy of the graph: a one-step algorithm, so all of it is "initial".
 void match_with_lemon(const CubicGraph& graph, Result& result) {
@@ -47,9 +47,11 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
 
 // Frink's reductions (paper §3.2, Appendix A): a one-step algorithm, all of it "initial".
 void match_by_reductions(const CubicGraph& graph, const Options& options, Result& result) {
-  ReductionResult r = reduction::match_by_reductions(graph, kNoEdge, {.chooser = options.algorithm});
+  ReductionResult r =
+      reduction::match_by_reductions(graph, kNoEdge, {.chooser = options.algorithm});
   result.matching = std::move(r.matching);
-  result.stats.initial_seconds = r.stats.setup_seconds + r.stats.reduce_seconds + r.stats.lift_seconds;
+  result.stats.initial_seconds =
+      r.stats.setup_seconds + r.stats.reduce_seconds + r.stats.lift_seconds;
   result.stats.reductions = r.stats.reductions + r.stats.digon_reductions;
   for (int k = 0; k < 3; ++k) result.stats.lift_cases[k] = r.stats.lift_cases[k];
   result.stats.replacement_searches = r.stats.replacement_searches;

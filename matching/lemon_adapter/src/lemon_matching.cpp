@@ -26,7 +26,8 @@ std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
   std::vector<std::uint32_t> mate_edge(node_count, kUnmatched);
   for (std::uint32_t v = 0; v < node_count; ++v) {
     auto arc = matcher.matching(graph.nodeFromId(static_cast<int>(v)));
-    if (arc != lemon::INVALID) mate_edge[v] = static_cast<std::uint32_t>(graph.id(lemon::SmartGraph::Edge(arc)));
+    if (arc != lemon::INVALID)
+      mate_edge[v] = static_cast<std::uint32_t>(graph.id(lemon::SmartGraph::Edge(arc)));
   }
   return mate_edge;
 }

@@ -84,6 +84,7 @@ struct SurfaceRequirements {
 /// findings. O(F log d).
 void require_closed_surface(const TriangleMesh& mesh, const SurfaceRequirements& requirements = {});
 /// The same judgement on a report already made (no second pass over the mesh). O(1).
-void require_closed_surface(const SurfaceReport& report, const SurfaceRequirements& requirements = {});
+void require_closed_surface(const SurfaceReport& report,
+                            const SurfaceRequirements& requirements = {});
 
 }  // namespace petersen

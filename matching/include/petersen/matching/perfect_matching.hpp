@@ -39,18 +39,18 @@ struct Options {
 /// Statistics of one run, in the columns of the paper's Table 4.3 plus per-algorithm counts.
 struct Stats {
   double validate_seconds = 0;
-  double initial_seconds = 0;        ///< (a) initial pairing, or the whole one-step algorithm
+  double initial_seconds = 0;  ///< (a) initial pairing, or the whole one-step algorithm
   std::uint32_t unpaired_after_initial = 0;  ///< (c)
-  double augment_seconds = 0;        ///< (d) time to make the initial pairing perfect
+  double augment_seconds = 0;                ///< (d) time to make the initial pairing perfect
   std::uint64_t augmenting_paths = 0;
   std::uint64_t blossoms = 0;
   std::uint64_t nodes_labelled = 0;
-  std::uint64_t reductions = 0;            ///< Frink reductions (ds, gw, frink)
+  std::uint64_t reductions = 0;             ///< Frink reductions (ds, gw, frink)
   std::uint64_t lift_cases[3] = {0, 0, 0};  ///< Appendix A cases (i), (ii), (iii)
-  std::uint64_t replacement_searches = 0;  ///< dynamic-connectivity replacement searches (ds)
+  std::uint64_t replacement_searches = 0;   ///< dynamic-connectivity replacement searches (ds)
 
   double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)
-  double paired_percent(std::uint32_t node_count) const {  ///< (b)
+  double paired_percent(std::uint32_t node_count) const {                        ///< (b)
     return node_count == 0 ? 100.0
                            : 100.0 * (node_count - unpaired_after_initial) / double(node_count);
   }
