@@ -1,9 +1,11 @@
 #include "petersen/matching/perfect_matching.hpp"
 
+#include <optional>
+
+#include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_adapter/lemon_matching.hpp"
-#include "petersen/matching/augment.hpp"
 #include "reduction/match_by_reductions.hpp"
 #include "stopwatch.hpp"
 
@@ -27,18 +29,22 @@ void match_with_lemon(const CubicGraph& graph, Result& result) {
   result.stats.initial_seconds = clock.seconds();
 }
 
-// SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect.
+// SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect. PS and
+// the augmentation share one NeighbourTable, built in PS's time; SG does not read neighbours,
+// so for SG it is built in the augmentation's time.
 void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
   Stopwatch initial;
+  std::optional<NeighbourTable> table;
   if (options.algorithm == Algorithm::sg) {
     simple_greedy(graph, result.matching, options.seed);
   } else {
-    puli_segal(graph, result.matching, options.seed);
+    puli_segal(table.emplace(graph), result.matching, options.seed);
   }
   result.stats.initial_seconds = initial.seconds();
   result.stats.unpaired_after_initial = result.matching.unmatched_count();
   Stopwatch augment;
-  const AugmentStats augmented = augment_matching(graph, result.matching, options.augment);
+  if (!table) table.emplace(graph);
+  const AugmentStats augmented = augment_matching(*table, result.matching, options.augment);
   result.stats.augment_seconds = augment.seconds();
   result.stats.augmenting_paths = augmented.augmenting_paths;
   result.stats.blossoms = augmented.blossoms;

@@ -1,7 +1,9 @@
 #pragma once
 // The alternating forest of Tarjan's augmenting-path procedure (paper §3.1, reference [21]),
 // shared by the cubic and the general (CSR) entry points: any Graph with incident_edges(v),
-// other_end(e, v) and endpoints(e).
+// other_end(e, v) and endpoints(e). A cubic graph is searched through its NeighbourTable, whose
+// edges are half-edges: it also names the graph edge behind each (graph_edge), reads a mate
+// without the edge's ends (mate_node), and shows where a node's neighbours lie (neighbours).
 //
 // Roots are free nodes, labelled even. Scanning an even node x along a non-matching edge to y:
 //   y unlabelled and free        -> augmenting path (single-root searches);
@@ -72,15 +74,16 @@ class AlternatingForest {
         stats_(stats),
         n_(mate.size()),
         slot_(make_huge_array<Slot>(n_)) {
-    // Every node's mate is read through its mate edge's ends, a random access: the ends of the
-    // edge kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
+    // A mate read through its mate edge's ends is a random access: the ends of the edge
+    // kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
     constexpr NodeId kReadAhead = 16;
     for (NodeId v = 0; v < n_; ++v) {
-      if (v + kReadAhead < n_ && mate[v + kReadAhead] != kNoEdge) {
-        __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{mate[v + kReadAhead]}]);
+      if constexpr (requires { graph.edge_ends(); }) {
+        if (v + kReadAhead < n_ && mate[v + kReadAhead] != kNoEdge)
+          __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{mate[v + kReadAhead]}]);
       }
       const bool free = mate[v] == kNoEdge;
-      slot_[v] = {free ? kNoNode : graph.other_end(mate[v], v), 0, kNone, v};
+      slot_[v] = {free ? kNoNode : mate_across(v, mate[v]), 0, kNone, v};
       if (free) free_.push_back(v);
     }
     if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
@@ -126,8 +129,11 @@ class AlternatingForest {
       // x's tree died after x was queued, or x has since been labelled odd in another tree.
       if (!alive(tx) || label_of(tx) == odd) continue;
       const std::uint32_t tree = tx >> kTreeShift;
+      // find(x), taken at x's first contact inside its tree and kept: x's blossom changes only
+      // when x's own scan shrinks one (most contacts fall inside x's blossom: two finds each).
+      NodeId x_base = kNoNode;
       for (EdgeId e : graph_.incident_edges(x)) {
-        const NodeId y = graph_.other_end(e, x);
+        const NodeId y = far_end(e, x);
         // Any edge to x's mate (a parallel copy included) leads inside x's blossom or to its
         // odd parent: nothing to learn.
         if (y == slot_[x].mate) continue;
@@ -152,7 +158,11 @@ class AlternatingForest {
         } else if (ty >> kTreeShift != tree) {
           augment(x, y, e);
         } else {
-          if (find(x) != find(y)) shrink(x, y, e);
+          if (x_base == kNoNode) x_base = find(x);
+          if (x_base != find(y)) {
+            shrink(x, y, e);
+            x_base = kNoNode;
+          }
           continue;
         }
         ++found;
@@ -170,14 +180,48 @@ class AlternatingForest {
     std::uint32_t next;
   };
 
+  // v's mate across its mate edge e: from v's own row of a NeighbourTable, else from e's ends.
+  NodeId mate_across(NodeId v, EdgeId e) const {
+    if constexpr (requires { graph_.mate_node(v, e); }) {
+      return graph_.mate_node(v, e);
+    } else {
+      return graph_.other_end(e, v);
+    }
+  }
+  // The end of x's incident edge e away from x.
+  NodeId far_end(EdgeId e, NodeId x) const {
+    if constexpr (requires { graph_.far_end(e); }) {
+      return graph_.far_end(e);
+    } else {
+      return graph_.other_end(e, x);
+    }
+  }
+  // The caller's edge behind the forest's edge e.
+  EdgeId graph_edge(EdgeId e) const {
+    if constexpr (requires { graph_.graph_edge(e); }) {
+      return graph_.graph_edge(e);
+    } else {
+      return e;
+    }
+  }
+  // Where the scan of v starts reading: its row of neighbours, else its incidence list.
+  const void* row_of(NodeId v) const {
+    if constexpr (requires { graph_.neighbours(v); }) {
+      return graph_.neighbours(v).data();
+    } else {
+      return graph_.incident_edges(v).data();
+    }
+  }
+
   static Label label_of(std::uint32_t tag) { return static_cast<Label>(tag & 3); }
   bool alive(std::uint32_t tag) const {
     return label_of(tag) != unlabelled && tree_alive_[tag >> kTreeShift];
   }
 
   // Stage k reads what stage k+1 prefetched (kStride queue entries earlier), so each line has
-  // about kStride scans to arrive: x's slot and incidence list, x's edge ends, the slots of x's
-  // neighbours, the slots of their mates.
+  // about kStride scans to arrive: x's slot and row (neighbours or incidence list), x's edge ends
+  // (for a graph that keeps them apart from the row), the slots of x's neighbours, the slots of
+  // their mates.
   // Always inlined: g++ 12's mod-ref analysis takes a prefetch-only function for one without
   // effects and drops the call.
   [[gnu::always_inline]] void prefetch_ahead() const {
@@ -186,7 +230,7 @@ class AlternatingForest {
     if (head_ + 4 * kStride < size) {
       const NodeId v = queue_[head_ + 4 * kStride];
       __builtin_prefetch(&slot_[v]);
-      __builtin_prefetch(graph_.incident_edges(v).data());
+      __builtin_prefetch(row_of(v));
     }
     if constexpr (requires { graph_.edge_ends(); }) {  // a graph that shows its edge-end array
       if (head_ + 3 * kStride < size) {
@@ -197,12 +241,12 @@ class AlternatingForest {
     }
     if (head_ + 2 * kStride < size) {
       const NodeId v = queue_[head_ + 2 * kStride];
-      for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[graph_.other_end(e, v)]);
+      for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[far_end(e, v)]);
     }
     if (head_ + kStride < size) {
       const NodeId v = queue_[head_ + kStride];
       for (EdgeId e : graph_.incident_edges(v)) {
-        const NodeId m = slot_[graph_.other_end(e, v)].mate;
+        const NodeId m = slot_[far_end(e, v)].mate;
         if (m != kNoNode) __builtin_prefetch(&slot_[m]);
       }
     }
@@ -285,7 +329,7 @@ class AlternatingForest {
       auto [a, c] = graph_.endpoints(f);
       slot_[a].mate = c;
       slot_[c].mate = a;
-      mate_edge_[a] = mate_edge_[c] = f;
+      mate_edge_[a] = mate_edge_[c] = graph_edge(f);
     }
     release(tree_x);
     if (y_in_tree) release(tree_y);

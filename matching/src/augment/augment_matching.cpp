@@ -4,6 +4,7 @@
 #include <algorithm>
 
 #include "alternating_forest.hpp"
+#include "augment_cubic.hpp"
 #include "petersen/matching/augment.hpp"
 
 namespace petersen {
@@ -39,8 +40,12 @@ AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
 
 }  // namespace
 
-AugmentStats augment_matching(const CubicGraph& graph, Matching& matching, Augment variant) {
+AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching, Augment variant) {
   return augment(graph, matching, variant);
+}
+
+AugmentStats augment_matching(const CubicGraph& graph, Matching& matching, Augment variant) {
+  return augment_matching(NeighbourTable(graph), matching, variant);
 }
 
 AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment variant) {

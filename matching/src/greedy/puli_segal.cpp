@@ -15,16 +15,16 @@
 // when it leaves priority 0 (its free edges fall from 3 to 2): that one pass both decides between
 // priorities 1 and 2 and moves its priority-1 neighbours to 2 (they no longer share both free
 // edges with priority-0 nodes). Every other change is a counter decrement.
-// The neighbours are copied once into a flat array, three per node, so a scan reads one line
-// instead of an incidence list and three edges' ends (the scans of the nodes leaving priority 0
-// dominated the profile, stalled on exactly those loads).
+// The neighbours are read from a NeighbourTable, three per node side by side, so a scan reads one
+// line instead of an incidence list and three edges' ends (the scans of the nodes leaving
+// priority 0 dominated the profile, stalled on exactly those loads).
 
 #include <array>
-#include <memory>
 #include <span>
 #include <vector>
 
 #include "greedy.hpp"
+#include "neighbour_table.hpp"
 #include "seeded_random.hpp"
 
 namespace petersen {
@@ -43,26 +43,12 @@ constexpr std::uint8_t kStart = 3;
 
 class PuliSegal {
  public:
-  PuliSegal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
-      : graph_(graph),
+  PuliSegal(const NeighbourTable& table, Matching& matching, std::uint64_t seed)
+      : table_(table),
         mate_(matching.mate_edge),
-        neighbours_(std::make_unique_for_overwrite<NodeId[]>(3 * std::size_t{graph.node_count()})),
-        state_(graph.node_count(), kStart),
+        state_(table.node_count(), kStart),
         random_(seed),
-        cursor_(graph.node_count() == 0 ? 0 : random_.below(graph.node_count())) {
-    // The edges' ends are a random access: those of the node kReadAhead on are prefetched, so
-    // the misses overlap instead of queueing (this pass was 15 % of PS on armadillo-sub2).
-    constexpr NodeId kReadAhead = 16;
-    for (NodeId v = 0; v < graph.node_count(); ++v) {
-      if (v + kReadAhead < graph.node_count()) {
-        for (EdgeId e : graph.incident_edges(v + kReadAhead))
-          __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{e}]);
-      }
-      const std::span<const EdgeId, 3> edges = graph.incident_edges(v);
-      for (int i = 0; i < 3; ++i)
-        neighbours_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
-    }
-  }
+        cursor_(table.node_count() == 0 ? 0 : random_.below(table.node_count())) {}
 
   void run() {
     for (NodeId v = draw(); v != kNoNode; v = draw()) {
@@ -99,18 +85,16 @@ class PuliSegal {
     }
     // The mate edges, in one sequential pass: looked up at pairing time, v's incidence list was
     // a cache miss of its own on every pairing (a third of the pass).
-    for (NodeId v = 0; v < graph_.node_count(); ++v) {
+    for (NodeId v = 0; v < table_.node_count(); ++v) {
       if (!(state_[v] & kDrew)) continue;
       const int i = state_[v] & kFreeMask;
-      mate_[v] = mate_[neighbours(v)[i]] = graph_.incident_edges(v)[i];
+      mate_[v] = mate_[neighbours(v)[i]] = table_.graph().incident_edges(v)[i];
     }
   }
 
  private:
   static int priority(std::uint8_t s) { return (s & kPriorityMask) >> 2; }
-  std::span<const NodeId, 3> neighbours(NodeId v) const {
-    return std::span<const NodeId, 3>(&neighbours_[3 * std::size_t{v}], 3);
-  }
+  std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
 
   void enter(NodeId v, std::uint8_t state, int p) {
     state_[v] = static_cast<std::uint8_t>((state & ~kPriorityMask) | p << 2);
@@ -164,7 +148,7 @@ class PuliSegal {
         if (!(state_[v] & kOut) && priority(state_[v]) == p) return v;
       }
     }
-    const std::uint32_t n = graph_.node_count();
+    const std::uint32_t n = table_.node_count();
     while (scanned_ < n) {  // each node is met once: a node past the cursor never returns to 0
       const NodeId v = cursor_;
       cursor_ = cursor_ + 1 == n ? 0 : cursor_ + 1;
@@ -174,9 +158,8 @@ class PuliSegal {
     return kNoNode;
   }
 
-  const CubicGraph& graph_;
+  const NeighbourTable& table_;
   std::vector<EdgeId>& mate_;
-  std::unique_ptr<NodeId[]> neighbours_;     // v's three neighbours at 3v..3v+2, in edge order
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;
@@ -186,8 +169,12 @@ class PuliSegal {
 
 }  // namespace
 
+void puli_segal(const NeighbourTable& table, Matching& matching, std::uint64_t seed) {
+  PuliSegal(table, matching, seed).run();
+}
+
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed) {
-  PuliSegal(graph, matching, seed).run();
+  puli_segal(NeighbourTable(graph), matching, seed);
 }
 
 }  // namespace petersen

@@ -1,0 +1,14 @@
+#pragma once
+// Tarjan's augmentation of a cubic graph's matching over a NeighbourTable the caller already
+// built (PS builds one for its own pass, paper §3.1), so the table is paid for once.
+
+#include "neighbour_table.hpp"
+#include "petersen/matching/augment.hpp"
+
+namespace petersen {
+
+/// augment_matching(graph, ...) on the table's graph.
+AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching,
+                              Augment variant = Augment::local);
+
+}  // namespace petersen
