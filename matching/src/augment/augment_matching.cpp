@@ -44,8 +44,11 @@ AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching, A
   return augment(graph, matching, variant);
 }
 
+// Straight on the graph: a table costs a pass over the nodes, which pays only when the searches
+// label about every node (as after a greedy pairing; perfect_matching builds one then). LRS's
+// expansion leaves a few free nodes and short searches.
 AugmentStats augment_matching(const CubicGraph& graph, Matching& matching, Augment variant) {
-  return augment_matching(NeighbourTable(graph), matching, variant);
+  return augment(graph, matching, variant);
 }
 
 AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment variant) {

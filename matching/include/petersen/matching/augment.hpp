@@ -22,8 +22,7 @@ struct AugmentStats {
 /// perfect. `faithful` is the paper's procedure: one breadth-first search per free node, each
 /// after an O(n) reset, O(k·n) for k free nodes. `local` grows the alternating trees of all free
 /// nodes at once, so the nearest free nodes meet first; its cost follows the region it labels
-/// (plus one sequential pass setting up 28 bytes per node: the neighbour table and the search
-/// state). Iterative, O(n) extra memory.
+/// (plus one pass setting up 16 bytes of search state per node). Iterative, O(n) extra memory.
 AugmentStats augment_matching(const CubicGraph& graph, Matching& matching,
                               Augment variant = Augment::local);
 
