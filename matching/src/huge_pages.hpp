@@ -5,6 +5,7 @@
 // "always" or "madvise" mode; elsewhere these are plain allocations.
 
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <memory>
 #include <new>
@@ -28,20 +29,48 @@ struct HugePageAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kHugePage) return static_cast<T*>(::operator new(bytes));
-    const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* p = std::aligned_alloc(kHugePage, rounded);
-    if (p == nullptr) throw std::bad_alloc();
+    const std::size_t rounded = round_up(bytes);
+#if defined(__linux__)
+    // Straight from the kernel, not through malloc: malloc hands a freed block out again as it
+    // is, and a block that was first touched without the advice stays on 4 KiB pages. Measured
+    // on armadillo-sub2's dual: the augmentation took 0.12 s in such a reused block and 0.07 s
+    // in fresh huge pages, every other run, alternating as malloc reused or returned the block.
+    // The mapping is over-allocated by a huge page and trimmed to a 2 MiB-aligned range.
+    void* mapped = mmap(nullptr, rounded + kHugePage, PROT_READ | PROT_WRITE,
+                        MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (mapped == MAP_FAILED) throw std::bad_alloc();
+    const auto start = reinterpret_cast<std::uintptr_t>(mapped);
+    const std::uintptr_t aligned = (start + kHugePage - 1) & ~(kHugePage - 1);
+    if (aligned > start) munmap(mapped, aligned - start);
+    const std::uintptr_t end = aligned + rounded;
+    if (start + rounded + kHugePage > end)
+      munmap(reinterpret_cast<void*>(end), start + rounded + kHugePage - end);
+    void* p = reinterpret_cast<void*>(aligned);
 #if defined(MADV_HUGEPAGE)
     madvise(p, rounded, MADV_HUGEPAGE);  // advice only: a refusal leaves ordinary pages
+#endif
+#else
+    void* p = std::aligned_alloc(kHugePage, rounded);
+    if (p == nullptr) throw std::bad_alloc();
 #endif
     return static_cast<T*>(p);
   }
   void deallocate(T* p, std::size_t n) {
-    if (n * sizeof(T) < kHugePage)
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < kHugePage) {
       ::operator delete(p);
-    else
-      std::free(p);
+      return;
+    }
+#if defined(__linux__)
+    munmap(p, round_up(bytes));
+#else
+    std::free(p);
+#endif
   }
+  static std::size_t round_up(std::size_t bytes) {
+    return (bytes + kHugePage - 1) / kHugePage * kHugePage;
+  }
+
   template <class U>
   bool operator==(const HugePageAllocator<U>&) const {
     return true;
