@@ -28,7 +28,8 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes < kHugePage) return static_cast<T*>(::operator new(bytes));
+    if (bytes < kHugePage)
+      return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
     const std::size_t rounded = round_up(bytes);
 #if defined(__linux__)
     // Straight from the kernel, not through malloc: malloc hands a freed block out again as it
@@ -58,7 +59,7 @@ struct HugePageAllocator {
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kHugePage) {
-      ::operator delete(p);
+      ::operator delete (p, std::align_val_t{alignof(T)});
       return;
     }
 #if defined(__linux__)

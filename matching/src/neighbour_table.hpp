@@ -1,11 +1,16 @@
 #pragma once
 // A cubic graph's working copy for the pairing and augmentation passes (paper §3.1): each node's
-// three neighbours side by side, in the order of its incident edges. A CubicGraph reaches a
-// neighbour through the incident edge and then that edge's ends, two dependent loads at random
-// places; here it is one load from the line that holds the node's other two neighbours. Built in
-// one pass whose random loads (the edges' ends) are prefetched ahead, so PS and the augmenting
-// searches, which visit about every node once each, pay for the indirection once instead of at
-// every scan.
+// three neighbours side by side, in the order of its incident edges, and the node's search state
+// for the augmentation (augment/search_slot.hpp).
+//
+// Why: a CubicGraph reaches a neighbour through the incident edge and then that edge's ends, two
+// dependent loads at random places; here it is one load from the line that holds the node's
+// other neighbours. PS and the augmenting searches visit about every node once each, so the
+// indirection is paid once, in one pass whose random loads (the edges' ends) are prefetched
+// ahead. The search state lives here so that PS writes it in the sequential pass in which it
+// writes the matching, instead of the forest reading the matching again in a pass of its own.
+// (Neighbours and state in one 32-byte record, one line per scanned node, made the searches
+// 15 % faster and PS, at the wider stride, as much slower: measured on armadillo-sub2's dual.)
 //
 // The table is also a graph for the alternating forest (augment/alternating_forest.hpp), whose
 // edges are half-edges: h = 3v + i is v's i-th edge, seen from v, and its far end is at [h]. An
@@ -16,7 +21,9 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include "augment/search_slot.hpp"
 #include "huge_pages.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 
@@ -24,9 +31,13 @@ namespace petersen {
 
 class NeighbourTable {
  public:
-  explicit NeighbourTable(const CubicGraph& graph)
-      : graph_(graph), next_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})) {
-    // Half-edge ids 0..3n-1 must stay below kNoEdge.
+  /// With `mate` (a mate edge per node, kNoEdge when free), the search state starts from that
+  /// matching; without it, it is left for start_search() to write, node by node.
+  explicit NeighbourTable(const CubicGraph& graph, const std::vector<EdgeId>* mate = nullptr)
+      : graph_(graph),
+        next_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
+        slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {
+    // Half-edge ids 3v + i must stay below kNoEdge.
     if (graph.node_count() > kNoEdge / 3)
       throw std::length_error("NeighbourTable: more than " + std::to_string(kNoEdge / 3) +
                               " nodes");
@@ -39,6 +50,10 @@ class NeighbourTable {
       }
       const std::span<const EdgeId, 3> edges = graph.incident_edges(v);
       for (int i = 0; i < 3; ++i) next_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
+      if (mate != nullptr) {
+        const EdgeId e = (*mate)[v];
+        start_search(v, e == kNoEdge ? -1 : edges[0] == e ? 0 : edges[1] == e ? 1 : 2);
+      }
     }
   }
 
@@ -49,6 +64,12 @@ class NeighbourTable {
   std::span<const NodeId, 3> neighbours(NodeId v) const {
     return std::span<const NodeId, 3>(&next_[3 * std::size_t{v}], 3);
   }
+  /// Writes v's fresh search state, v matched to its i-th neighbour (free when i < 0).
+  void start_search(NodeId v, int i) {
+    slots_[v] = {i < 0 ? kNoNode : next_[3 * std::size_t{v} + i], 0, augment_detail::kNone, v};
+  }
+  /// v's search state: the forest's scratch, not the graph, so a const table hands it out.
+  augment_detail::Slot& slot(NodeId v) const { return slots_[v]; }
 
   // The half-edge graph.
   std::array<EdgeId, 3> incident_edges(NodeId v) const { return {3 * v, 3 * v + 1, 3 * v + 2}; }
@@ -57,17 +78,11 @@ class NeighbourTable {
   NodeId far_end(EdgeId h) const { return next_[h]; }
   std::array<NodeId, 2> endpoints(EdgeId h) const { return {h / 3, next_[h]}; }
   EdgeId graph_edge(EdgeId h) const { return graph_.incident_edges(h / 3)[h % 3]; }
-  /// v's mate across the graph edge `mate_edge`: a look at v's own incidence list, not at the
-  /// edge's ends elsewhere in memory.
-  NodeId mate_node(NodeId v, EdgeId mate_edge) const {
-    const std::span<const EdgeId, 3> edges = graph_.incident_edges(v);
-    const int i = edges[0] == mate_edge ? 0 : edges[1] == mate_edge ? 1 : 2;
-    return next_[3 * std::size_t{v} + i];
-  }
 
  private:
   const CubicGraph& graph_;
   HugeArray<NodeId> next_;
+  HugeArray<augment_detail::Slot> slots_;
 };
 
 }  // namespace petersen

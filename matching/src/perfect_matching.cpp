@@ -43,7 +43,7 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
   result.stats.initial_seconds = initial.seconds();
   result.stats.unpaired_after_initial = result.matching.unmatched_count();
   Stopwatch augment;
-  if (!table) table.emplace(graph);
+  if (!table) table.emplace(graph, &result.matching.mate_edge);
   const AugmentStats augmented = augment_matching(*table, result.matching, options.augment);
   result.stats.augment_seconds = augment.seconds();
   result.stats.augmenting_paths = augmented.augmenting_paths;

@@ -2,8 +2,8 @@
 // The alternating forest of Tarjan's augmenting-path procedure (paper §3.1, reference [21]),
 // shared by the cubic and the general (CSR) entry points: any Graph with incident_edges(v),
 // other_end(e, v) and endpoints(e). A cubic graph is searched through its NeighbourTable, whose
-// edges are half-edges: it also names the graph edge behind each (graph_edge), reads a mate
-// without the edge's ends (mate_node), and shows where a node's neighbours lie (neighbours).
+// edges are half-edges: it also names the graph edge behind each (graph_edge), shows where a
+// node's neighbours lie (neighbours), and keeps the search state itself (slot).
 //
 // Roots are free nodes, labelled even. Scanning an even node x along a non-matching edge to y:
 //   y unlabelled and free        -> augmenting path (single-root searches);
@@ -24,12 +24,14 @@
 //
 // Layout, for the cost per label: everything a scan reads or writes about a node (its mate node,
 // label, tree, link and blossom base) sits in one 16-byte slot, so touching a node costs one
-// cache line, and stepping from an odd node to its mate needs no edge lookup. The mate nodes are
-// read from the matching in one pass on entry; the caller's mate edges are written only where an
-// augmenting path flips them. Trees are numbered 0..k-1, and a tree's death is one byte in a
+// cache line, and stepping from an odd node to its mate needs no edge lookup. The slots are set
+// up from the matching in one pass on entry (for a NeighbourTable, before: PS writes them as it
+// writes the matching); the caller's mate edges are written only where an augmenting path flips
+// them. Trees are numbered 0..k-1, and a tree's death is one byte in a
 // k-byte array, not a walk over it. The breadth-first queue is the exact order of the coming
 // scans, so it is read ahead in stages, each prefetching what the next stage will dereference:
-// incidence lists, then edge ends, then neighbour slots, then the slots of the neighbours' mates.
+// rows or incidence lists, then edge ends (if apart from the rows), then neighbour slots, then
+// the slots of the neighbours' mates.
 
 #include <algorithm>
 #include <memory>
@@ -39,24 +41,9 @@
 
 #include "huge_pages.hpp"
 #include "petersen/matching/augment.hpp"
+#include "search_slot.hpp"
 
 namespace petersen::augment_detail {
-
-enum Label : std::uint32_t { unlabelled = 0, even = 1, odd = 2, bridged = 3 };
-inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-
-/// One node's search state: `mate` is its mate node (kNoNode when free). `tag` is tree << 4 | side
-/// << 3 | mark << 2 | label (0: never labelled). `link` is, for an odd node, the edge it was
-/// labelled over; for a bridged node, its bridge, with `side` telling which end is on its side;
-/// for an even node (not a root), the even node two steps up its tree (the pred of its mate), so a
-/// blossom walk climbs one slot per step. `base` is the disjoint-set parent; a set's root is its
-/// blossom's base.
-struct alignas(16) Slot {
-  NodeId mate;
-  std::uint32_t tag;
-  std::uint32_t link;
-  NodeId base;
-};
 
 /// Most trees one forest can hold (the tree number has the tag's top 28 bits).
 inline constexpr int kTreeShift = 4;
@@ -68,23 +55,29 @@ class AlternatingForest {
  public:
   /// Reads the matching (mate edge per node), which each augmentation then updates; the free
   /// nodes, in id order, become free_nodes(). Throws std::length_error past kMaxTrees free nodes.
+  /// A graph that keeps the search state (NeighbourTable) must hold fresh slots for `mate`.
   AlternatingForest(const Graph& graph, std::vector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
         mate_edge_(mate),
         stats_(stats),
         n_(mate.size()),
-        slot_(make_huge_array<Slot>(n_)) {
-    // A mate read through its mate edge's ends is a random access: the ends of the edge
-    // kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
-    constexpr NodeId kReadAhead = 16;
-    for (NodeId v = 0; v < n_; ++v) {
-      if constexpr (requires { graph.edge_ends(); }) {
-        if (v + kReadAhead < n_ && mate[v + kReadAhead] != kNoEdge)
-          __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{mate[v + kReadAhead]}]);
+        slot_(kStateInGraph ? HugeArray<Slot>() : make_huge_array<Slot>(n_)) {
+    if constexpr (kStateInGraph) {
+      for (NodeId v = 0; v < n_; ++v)
+        if (mate[v] == kNoEdge) free_.push_back(v);
+    } else {
+      // A mate read through its mate edge's ends is a random access: the ends of the edge
+      // kReadAhead nodes on are prefetched, so the misses overlap instead of queueing.
+      constexpr NodeId kReadAhead = 16;
+      for (NodeId v = 0; v < n_; ++v) {
+        if constexpr (requires { graph.edge_ends(); }) {
+          if (v + kReadAhead < n_ && mate[v + kReadAhead] != kNoEdge)
+            __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{mate[v + kReadAhead]}]);
+        }
+        const bool free = mate[v] == kNoEdge;
+        slot(v) = {free ? kNoNode : graph.other_end(mate[v], v), 0, kNone, v};
+        if (free) free_.push_back(v);
       }
-      const bool free = mate[v] == kNoEdge;
-      slot_[v] = {free ? kNoNode : mate_across(v, mate[v]), 0, kNone, v};
-      if (free) free_.push_back(v);
     }
     if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
     tree_alive_.resize(free_.size());
@@ -92,13 +85,13 @@ class AlternatingForest {
   }
 
   const std::vector<NodeId>& free_nodes() const { return free_; }
-  bool is_free(NodeId v) const { return slot_[v].mate == kNoNode; }
+  bool is_free(NodeId v) const { return slot(v).mate == kNoNode; }
 
   /// Forgets every label and tree: the paper's O(n) reset before each search.
   void clear_all() {
     for (NodeId v = 0; v < n_; ++v) {
-      slot_[v].tag = 0;
-      slot_[v].base = v;
+      slot(v).tag = 0;
+      slot(v).base = v;
     }
     trees_ = 0;
     blocked_.clear();
@@ -111,8 +104,8 @@ class AlternatingForest {
     const std::uint32_t tree = trees_++;
     tree_alive_[tree] = 1;
     blocked_head_[tree] = kNone;
-    slot_[r].tag = tree << kTreeShift | even;
-    slot_[r].base = r;
+    slot(r).tag = tree << kTreeShift | even;
+    slot(r).base = r;
     ++stats_.nodes_labelled;
     queue_.push_back(r);
   }
@@ -125,7 +118,7 @@ class AlternatingForest {
     while (head_ < queue_.size()) {
       prefetch_ahead();
       const NodeId x = queue_[head_++];
-      const std::uint32_t tx = slot_[x].tag;
+      const std::uint32_t tx = slot(x).tag;
       // x's tree died after x was queued, or x has since been labelled odd in another tree.
       if (!alive(tx) || label_of(tx) == odd) continue;
       const std::uint32_t tree = tx >> kTreeShift;
@@ -136,8 +129,8 @@ class AlternatingForest {
         const NodeId y = far_end(e, x);
         // Any edge to x's mate (a parallel copy included) leads inside x's blossom or to its
         // odd parent: nothing to learn.
-        if (y == slot_[x].mate) continue;
-        Slot& sy = slot_[y];
+        if (y == slot(x).mate) continue;
+        Slot& sy = slot(y);
         const std::uint32_t ty = sy.tag;
         if (!alive(ty)) {
           if (sy.mate == kNoNode) {
@@ -146,7 +139,7 @@ class AlternatingForest {
             // The common step, no blossom work: y odd, its mate z even, both in x's tree.
             const NodeId z = sy.mate;
             sy = {sy.mate, tree << kTreeShift | odd, e, y};
-            Slot& sz = slot_[z];
+            Slot& sz = slot(z);
             sz = {sz.mate, tree << kTreeShift | even, x, z};
             stats_.nodes_labelled += 2;
             queue_.push_back(z);
@@ -180,12 +173,12 @@ class AlternatingForest {
     std::uint32_t next;
   };
 
-  // v's mate across its mate edge e: from v's own row of a NeighbourTable, else from e's ends.
-  NodeId mate_across(NodeId v, EdgeId e) const {
-    if constexpr (requires { graph_.mate_node(v, e); }) {
-      return graph_.mate_node(v, e);
+  static constexpr bool kStateInGraph = requires(const Graph& g) { g.slot(NodeId{}); };
+  Slot& slot(NodeId v) const {
+    if constexpr (kStateInGraph) {
+      return graph_.slot(v);
     } else {
-      return graph_.other_end(e, v);
+      return slot_[v];
     }
   }
   // The end of x's incident edge e away from x.
@@ -229,7 +222,7 @@ class AlternatingForest {
     const std::size_t size = queue_.size();
     if (head_ + 4 * kStride < size) {
       const NodeId v = queue_[head_ + 4 * kStride];
-      __builtin_prefetch(&slot_[v]);
+      __builtin_prefetch(&slot(v));
       __builtin_prefetch(row_of(v));
     }
     if constexpr (requires { graph_.edge_ends(); }) {  // a graph that shows its edge-end array
@@ -241,13 +234,13 @@ class AlternatingForest {
     }
     if (head_ + 2 * kStride < size) {
       const NodeId v = queue_[head_ + 2 * kStride];
-      for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot_[far_end(e, v)]);
+      for (EdgeId e : graph_.incident_edges(v)) __builtin_prefetch(&slot(far_end(e, v)));
     }
     if (head_ + kStride < size) {
       const NodeId v = queue_[head_ + kStride];
       for (EdgeId e : graph_.incident_edges(v)) {
-        const NodeId m = slot_[far_end(e, v)].mate;
-        if (m != kNoNode) __builtin_prefetch(&slot_[m]);
+        const NodeId m = slot(far_end(e, v)).mate;
+        if (m != kNoNode) __builtin_prefetch(&slot(m));
       }
     }
   }
@@ -262,15 +255,15 @@ class AlternatingForest {
 
   // Base of v's blossom (path halving).
   NodeId find(NodeId v) {
-    while (slot_[v].base != v) {
-      slot_[v].base = slot_[slot_[v].base].base;
-      v = slot_[v].base;
+    while (slot(v).base != v) {
+      slot(v).base = slot(slot(v).base).base;
+      v = slot(v).base;
     }
     return v;
   }
 
-  void set_mark(NodeId v) { slot_[v].tag |= 4; }
-  bool marked(NodeId v) const { return slot_[v].tag & 4; }
+  void set_mark(NodeId v) { slot(v).tag |= 4; }
+  bool marked(NodeId v) const { return slot(v).tag & 4; }
 
   // Edge e = (x, y) joins two even nodes of one tree in different blossoms: walk up from both
   // bases alternately to the first common base b, then make every odd node on the two paths even.
@@ -285,12 +278,12 @@ class AlternatingForest {
         } else {
           set_mark(u);
           walked_.push_back(u);
-          u = slot_[u].mate == kNoNode ? kNoNode : find(slot_[u].link);
+          u = slot(u).mate == kNoNode ? kNoNode : find(slot(u).link);
         }
       }
       std::swap(u, w);
     }
-    for (NodeId v : walked_) slot_[v].tag &= ~4u;
+    for (NodeId v : walked_) slot(v).tag &= ~4u;
     walked_.clear();
     bridge(find(x), b, x, e);
     bridge(find(y), b, y, e);
@@ -303,12 +296,12 @@ class AlternatingForest {
   void bridge(NodeId u, NodeId b, NodeId side, EdgeId e) {
     const std::uint32_t side_bit = graph_.endpoints(e)[1] == side ? kSide : 0;
     while (u != b) {
-      const NodeId o = slot_[u].mate;
-      slot_[o].tag |= bridged | side_bit;
-      slot_[o].link = e;
-      slot_[o].base = b;
-      const NodeId up = slot_[u].link;
-      slot_[u].base = b;
+      const NodeId o = slot(u).mate;
+      slot(o).tag |= bridged | side_bit;
+      slot(o).link = e;
+      slot(o).base = b;
+      const NodeId up = slot(u).link;
+      slot(u).base = b;
       queue_.push_back(o);
       u = find(up);
     }
@@ -320,15 +313,15 @@ class AlternatingForest {
     ++stats_.augmenting_paths;
     path_edges_.clear();
     path_edges_.push_back(e);
-    const std::uint32_t tree_x = slot_[x].tag >> kTreeShift;
+    const std::uint32_t tree_x = slot(x).tag >> kTreeShift;
     collect(x);
-    const bool y_in_tree = alive(slot_[y].tag);
-    const std::uint32_t tree_y = slot_[y].tag >> kTreeShift;
+    const bool y_in_tree = alive(slot(y).tag);
+    const std::uint32_t tree_y = slot(y).tag >> kTreeShift;
     if (y_in_tree) collect(y);
     for (EdgeId f : path_edges_) {
       auto [a, c] = graph_.endpoints(f);
-      slot_[a].mate = c;
-      slot_[c].mate = a;
+      slot(a).mate = c;
+      slot(c).mate = a;
       mate_edge_[a] = mate_edge_[c] = graph_edge(f);
     }
     release(tree_x);
@@ -360,17 +353,16 @@ class AlternatingForest {
     while (!pending_.empty()) {
       auto [from, to] = pending_.back();
       pending_.pop_back();
-      while (from != to && slot_[from].mate != kNoNode) {
-        const NodeId m = slot_[from].mate;
-        if (label_of(slot_[from].tag) == even) {
+      while (from != to && slot(from).mate != kNoNode) {
+        const NodeId m = slot(from).mate;
+        if (label_of(slot(from).tag) == even) {
           // m's pred edge: its link while m is odd; a bridge took that link if m is bridged.
-          const NodeId up = slot_[from].link;
-          path_edges_.push_back(label_of(slot_[m].tag) == odd ? slot_[m].link
-                                                              : edge_between(m, up));
+          const NodeId up = slot(from).link;
+          path_edges_.push_back(label_of(slot(m).tag) == odd ? slot(m).link : edge_between(m, up));
           from = up;
         } else {
-          const EdgeId edge = slot_[from].link;
-          const NodeId s = graph_.endpoints(edge)[(slot_[from].tag & kSide) ? 1 : 0];
+          const EdgeId edge = slot(from).link;
+          const NodeId s = graph_.endpoints(edge)[(slot(from).tag & kSide) ? 1 : 0];
           path_edges_.push_back(edge);
           pending_.push_back({s, m});
           from = graph_.other_end(edge, s);
@@ -390,7 +382,7 @@ class AlternatingForest {
   std::vector<EdgeId>& mate_edge_;
   AugmentStats& stats_;
   std::size_t n_;
-  HugeArray<Slot> slot_;
+  HugeArray<Slot> slot_;  // unless the graph keeps the search state
   std::vector<NodeId> free_;
   std::vector<std::uint8_t> tree_alive_;     // per tree: its root is still free
   std::vector<std::uint32_t> blocked_head_;  // per tree: first entry of its blocked list

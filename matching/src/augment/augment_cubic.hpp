@@ -7,7 +7,8 @@
 
 namespace petersen {
 
-/// augment_matching(graph, ...) on the table's graph.
+/// augment_matching(graph, ...) on the table's graph. The table's search state must be fresh for
+/// `matching`: the table built with it, or written by puli_segal.
 AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching,
                               Augment variant = Augment::local);
 

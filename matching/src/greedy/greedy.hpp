@@ -16,7 +16,8 @@ void simple_greedy(const CubicGraph& graph, Matching& matching, std::uint64_t se
 /// priority set with a highest-priority neighbour over a free edge. `matching` must start empty.
 /// Θ(n), every set operation O(1).
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed);
-/// PS over a table the caller keeps, for the augmentation that follows.
-void puli_segal(const NeighbourTable& table, Matching& matching, std::uint64_t seed);
+/// PS over a table the caller keeps, for the augmentation that follows: the table's search state
+/// ends up fresh for the matching PS returns (augment_cubic.hpp).
+void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
 
 }  // namespace petersen

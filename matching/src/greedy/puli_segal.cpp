@@ -33,17 +33,17 @@ namespace {
 
 // The state byte: bits 0-1 free-edge count, bits 2-3 priority, bit 4 out of play (paired, or
 // left unpaired with no free edge). A node in play with three free edges is 0b00011.
-// Out of play, the low bits are dead; a node that drew its mate (kDrew) keeps there the index
-// of the pairing edge among its three, for the mate pass at the end.
+// Out of play, the low bits are dead; a paired node (kPaired) keeps there the index of its
+// pairing edge among its three, for the mate pass at the end, which is then sequential.
 constexpr std::uint8_t kFreeMask = 3;
 constexpr std::uint8_t kPriorityMask = 3 << 2;
 constexpr std::uint8_t kOut = 1 << 4;
-constexpr std::uint8_t kDrew = 1 << 5;
+constexpr std::uint8_t kPaired = 1 << 5;
 constexpr std::uint8_t kStart = 3;
 
 class PuliSegal {
  public:
-  PuliSegal(const NeighbourTable& table, Matching& matching, std::uint64_t seed)
+  PuliSegal(NeighbourTable& table, Matching& matching, std::uint64_t seed)
       : table_(table),
         mate_(matching.mate_edge),
         state_(table.node_count(), kStart),
@@ -67,9 +67,9 @@ class PuliSegal {
         state_[v] |= kOut;
         continue;
       }
-      state_[v] = static_cast<std::uint8_t>(kOut | kDrew | best);
+      state_[v] = static_cast<std::uint8_t>(kOut | kPaired | best);
       const NodeId u = neighbours(v)[best];
-      state_[u] |= kOut;
+      state_[u] = static_cast<std::uint8_t>(kOut | kPaired | index_of(v, best, u));
       // The neighbours that lose a free edge, their incidence lists and edge ends fetched
       // together before any is updated, so the cache misses overlap instead of queueing.
       std::array<NodeId, 6> losers;
@@ -83,18 +83,31 @@ class PuliSegal {
       }
       for (int i = 0; i < count; ++i) lose_free_edge(losers[i]);
     }
-    // The mate edges, in one sequential pass: looked up at pairing time, v's incidence list was
-    // a cache miss of its own on every pairing (a third of the pass).
+    // The mate edges, and the table's fresh search state, in one sequential pass: looked up at
+    // pairing time, v's incidence list was a cache miss of its own on every pairing.
     for (NodeId v = 0; v < table_.node_count(); ++v) {
-      if (!(state_[v] & kDrew)) continue;
+      const bool paired = state_[v] & kPaired;
       const int i = state_[v] & kFreeMask;
-      mate_[v] = mate_[neighbours(v)[i]] = table_.graph().incident_edges(v)[i];
+      if (paired) mate_[v] = table_.graph().incident_edges(v)[i];
+      table_.start_search(v, paired ? i : -1);
     }
   }
 
  private:
   static int priority(std::uint8_t s) { return (s & kPriorityMask) >> 2; }
   std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
+
+  // The index, among u's three edges, of the edge that v's edge `at` names: the one place in
+  // u's row that holds v, except across parallel edges, where the edge ids decide.
+  int index_of(NodeId v, int at, NodeId u) const {
+    const std::span<const NodeId, 3> row = neighbours(u);
+    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1) {
+      return row[0] == v ? 0 : row[1] == v ? 1 : 2;
+    }
+    const EdgeId e = table_.graph().incident_edges(v)[at];
+    const std::span<const EdgeId, 3> edges = table_.graph().incident_edges(u);
+    return edges[0] == e ? 0 : edges[1] == e ? 1 : 2;
+  }
 
   void enter(NodeId v, std::uint8_t state, int p) {
     state_[v] = static_cast<std::uint8_t>((state & ~kPriorityMask) | p << 2);
@@ -158,7 +171,7 @@ class PuliSegal {
     return kNoNode;
   }
 
-  const NeighbourTable& table_;
+  NeighbourTable& table_;
   std::vector<EdgeId>& mate_;
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
@@ -169,12 +182,13 @@ class PuliSegal {
 
 }  // namespace
 
-void puli_segal(const NeighbourTable& table, Matching& matching, std::uint64_t seed) {
+void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed) {
   PuliSegal(table, matching, seed).run();
 }
 
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed) {
-  puli_segal(NeighbourTable(graph), matching, seed);
+  NeighbourTable table(graph);
+  puli_segal(table, matching, seed);
 }
 
 }  // namespace petersen
