@@ -18,7 +18,8 @@ LrsResult quadrangulate_lrs(const TriangleMesh& mesh, const LrsOptions& options)
   LrsStats& stats = result.stats;
   const auto begin = Clock::now();
 
-  lrs::Triangulation tri = lrs::Triangulation::from_mesh(mesh);
+  lrs::Triangulation tri =
+      lrs::Triangulation::from_mesh(mesh, lrs::Triangulation::Numbering::spatial);
   stats.genus = tri.genus();
   stats.vertices = tri.live_vertices();
   stats.edges = tri.live_edges();

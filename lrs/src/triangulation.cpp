@@ -4,12 +4,46 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/surface_check.hpp"
+#include "spatial_order.hpp"
 
 namespace petersen::lrs {
 
-Triangulation Triangulation::from_mesh(const TriangleMesh& mesh) {
-  require_closed_surface(mesh,
-                         {.allow_pinched_vertices = false, .allow_several_components = false});
+namespace {
+
+constexpr SurfaceRequirements kSurface{.allow_pinched_vertices = false,
+                                       .allow_several_components = false};
+
+bool corners_in_range(const TriangleMesh& mesh) {
+  for (const auto& corners : mesh.triangles)
+    for (VertexId v : corners)
+      if (v >= mesh.positions.size()) return false;
+  return true;
+}
+
+}  // namespace
+
+Triangulation Triangulation::from_mesh(const TriangleMesh& mesh, Numbering numbering) {
+  if (numbering == Numbering::as_given) {
+    require_closed_surface(mesh, kSurface);
+    return build(mesh);
+  }
+  // The check, too, runs faster on the ordered copy. Renumbering changes no property it tests,
+  // so when the copy fails, the input fails as well: it is checked then, for an error that names
+  // the input's elements. Corners out of range cannot be ordered: the input's check names them.
+  if (!corners_in_range(mesh)) require_closed_surface(mesh, kSurface);
+  SpatialMesh ordered = spatially_ordered(mesh);
+  try {
+    require_closed_surface(ordered.mesh, kSurface);
+  } catch (const MeshError&) {
+    require_closed_surface(mesh, kSurface);
+    throw;
+  }
+  Triangulation tri = build(ordered.mesh);
+  tri.input_vertex_ = std::move(ordered.input_vertex);
+  return tri;
+}
+
+Triangulation Triangulation::build(const TriangleMesh& mesh) {
   const Dual dual = build_dual(mesh);
   const std::uint32_t edges = dual.graph.edge_count();
   const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
@@ -64,7 +98,8 @@ TriangleMesh Triangulation::to_mesh(const std::vector<std::array<double, 3>>& po
   mesh.triangles.reserve(live_faces_);
   for (const Halfedge h : face_starts(*this)) {
     if (h == kNoHalfedge) continue;
-    mesh.triangles.push_back({origin(h), origin(next(h)), origin(prev(h))});
+    mesh.triangles.push_back(
+        {input_vertex(origin(h)), input_vertex(origin(next(h))), input_vertex(origin(prev(h)))});
   }
   return mesh;
 }

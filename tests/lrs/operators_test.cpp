@@ -4,7 +4,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/edge_contraction.hpp"
@@ -38,6 +41,45 @@ TEST(Triangulation, BuildsFromMeshWithMeshIds) {
   for (VertexId v = 0; v < 6; ++v) EXPECT_EQ(tri.degree(v), 4u);
   EXPECT_EQ(tri.to_mesh(mesh.positions).triangles.size(), 8u);
   EXPECT_EQ(oriented_faces(tri.to_mesh(mesh.positions)), oriented_faces(mesh));
+}
+
+// Spatial numbering renumbers vertices and faces inside, and gives the input's ids back: the same
+// surface, the same oriented faces, the same genus; an error names the input's elements.
+RC_GTEST_PROP(Triangulation, SpatialNumberingKeepsTheSurface, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
+  const TriangleMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                  *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                  *rc::gen::arbitrary<std::uint64_t>());
+  const Triangulation tri = Triangulation::from_mesh(mesh, Triangulation::Numbering::spatial);
+  RC_ASSERT(tri.check() == "");
+  RC_ASSERT(tri.genus() == genus);
+  RC_ASSERT(oriented_faces(tri.to_mesh(mesh.positions)) == oriented_faces(mesh));
+  std::vector<VertexId> input(mesh.positions.size());
+  for (VertexId v = 0; v < input.size(); ++v) input[v] = tri.input_vertex(v);
+  std::sort(input.begin(), input.end());
+  for (VertexId v = 0; v < input.size(); ++v) RC_ASSERT(input[v] == v);
+}
+
+TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
+  TriangleMesh open = testing::octahedron();
+  open.triangles.erase(open.triangles.begin() + 3);
+  std::string as_given, spatial;
+  try {
+    Triangulation::from_mesh(open);
+  } catch (const MeshError& e) {
+    as_given = e.what();
+  }
+  try {
+    Triangulation::from_mesh(open, Triangulation::Numbering::spatial);
+  } catch (const MeshError& e) {
+    spatial = e.what();
+  }
+  EXPECT_NE(as_given, "");
+  EXPECT_EQ(spatial, as_given);
+  TriangleMesh out_of_range = testing::tetrahedron();
+  out_of_range.triangles[2][1] = 99;
+  EXPECT_THROW(Triangulation::from_mesh(out_of_range, Triangulation::Numbering::spatial),
+               MeshError);
 }
 
 TEST(Triangulation, RefusesPinchedVertexAndOpenSurface) {

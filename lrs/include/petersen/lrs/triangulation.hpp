@@ -33,11 +33,23 @@ class Triangulation {
  public:
   Triangulation() = default;
 
-  /// Builds the triangulation of `mesh`: vertex ids are the mesh's, face f is triangle f, edges are
-  /// numbered as the dual graph's (build_dual). Throws MeshError naming the element if the mesh is
+  /// How from_mesh numbers the elements.
+  enum class Numbering {
+    as_given,  ///< vertex ids are the mesh's, face f is triangle f
+    /// vertices and faces along a space-filling curve, for the cache (src/spatial_order.hpp);
+    /// input_vertex() and to_mesh give the mesh's vertex ids back
+    spatial,
+  };
+
+  /// Builds the triangulation of `mesh`, edges numbered as the dual graph's (build_dual) of the
+  /// mesh as numbered. Throws MeshError naming the element (by the input's ids) if the mesh is
   /// not a closed, connected, orientable manifold surface (pinched vertices and several components
   /// are refused). Unreferenced vertices are dead from the start. O(F log d).
-  static Triangulation from_mesh(const TriangleMesh& mesh);
+  static Triangulation from_mesh(const TriangleMesh& mesh,
+                                 Numbering numbering = Numbering::as_given);
+
+  /// The input mesh's id of vertex v.
+  VertexId input_vertex(VertexId v) const { return input_vertex_.empty() ? v : input_vertex_[v]; }
 
   std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(out_.size()); }
   std::uint32_t edge_capacity() const { return static_cast<std::uint32_t>(edge_alive_.size()); }
@@ -83,9 +95,10 @@ class Triangulation {
         (2 - std::int64_t{live_vertices_} + live_edges_ - std::int64_t{live_faces_}) / 2);
   }
 
-  /// The live faces as a triangle mesh over `positions`, in face-id order; each triangle starts at
-  /// the smallest halfedge id of its face, so edge k of the triangle is that halfedge's k-th
-  /// successor. Dead vertices stay in `positions`, unreferenced. O(V + F).
+  /// The live faces as a triangle mesh over `positions` (the input's), in face-id order, with the
+  /// input's vertex ids; each triangle starts at the smallest halfedge id of its face, so edge k
+  /// of the triangle is that halfedge's k-th successor. Dead vertices stay in `positions`,
+  /// unreferenced. O(V + F).
   TriangleMesh to_mesh(const std::vector<std::array<double, 3>>& positions) const;
 
   /// The dual graph when every face is alive (the triangulation K after expansion): node f is
@@ -103,6 +116,9 @@ class Triangulation {
   friend void split(Triangulation&, const ContractionRecord&);
   friend void flip(Triangulation&, Halfedge);
 
+  // from_mesh after the surface check.
+  static Triangulation build(const TriangleMesh& mesh);
+
   // Per halfedge, origin and next side by side: a twin pair fills 16 bytes of one cache line.
   struct Link {
     VertexId origin;
@@ -113,6 +129,7 @@ class Triangulation {
   std::vector<std::uint8_t> edge_alive_;
   std::vector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
   std::vector<std::uint32_t> degree_;
+  std::vector<VertexId> input_vertex_;  // empty when the numbering is the input's
   std::uint32_t face_capacity_ = 0;
   std::uint32_t live_vertices_ = 0, live_edges_ = 0, live_faces_ = 0;
 };
