@@ -21,8 +21,9 @@ struct SpatialMesh {
       input_vertex;  ///< vertex v of `mesh` is vertex input_vertex[v] of the input
 };
 
-/// `mesh` with its vertices ordered by Morton cell (2^6 per axis; ties in input order) and its
-/// triangles by the cell of their first corner; each triangle keeps its corners' cyclic order.
+/// `mesh` with its vertices ordered by Morton cell (a few hundred faces per cell; ties in input
+/// order) and its triangles by the cell of their first corner; each triangle keeps its corners'
+/// cyclic order.
 SpatialMesh spatially_ordered(const TriangleMesh& mesh);
 
 }  // namespace petersen::lrs
