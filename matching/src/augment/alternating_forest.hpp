@@ -27,11 +27,11 @@
 // cache line, and stepping from an odd node to its mate needs no edge lookup. The slots are set
 // up from the matching in one pass on entry (for a NeighbourTable, before: PS writes them as it
 // writes the matching); the caller's mate edges are written only where an augmenting path flips
-// them. Trees are numbered 0..k-1, and a tree's death is one byte in a
-// k-byte array, not a walk over it. The breadth-first queue is the exact order of the coming
-// scans, so it is read ahead in stages, each prefetching what the next stage will dereference:
-// rows or incidence lists, then edge ends (if apart from the rows), then neighbour slots, then
-// the slots of the neighbours' mates.
+// them. Trees are numbered 0..k-1, and a tree's death is one byte in a k-byte array, not a walk
+// over it. The breadth-first queue is the exact order of the coming scans, so it is read ahead
+// in stages, each prefetching what the next stage will dereference: rows or incidence lists,
+// then edge ends (if apart from the rows), then neighbour slots, then the slots of the
+// neighbours' mates.
 
 #include <algorithm>
 #include <memory>
