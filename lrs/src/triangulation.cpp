@@ -104,7 +104,15 @@ TriangleMesh Triangulation::to_mesh(const std::vector<std::array<double, 3>>& po
   return mesh;
 }
 
-CubicGraph Triangulation::dual_graph() const {
+CubicGraph Triangulation::dual_graph() const& {
+  return dual_graph_from_faces(face_);
+}
+
+CubicGraph Triangulation::dual_graph() && {
+  return dual_graph_from_faces(std::move(face_));
+}
+
+CubicGraph Triangulation::dual_graph_from_faces(std::vector<FaceId> faces) const {
   if (live_faces_ != face_capacity_) {
     throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
   }
@@ -117,10 +125,10 @@ CubicGraph Triangulation::dual_graph() const {
   const auto halfedges = static_cast<Halfedge>(links_.size());
   for (Halfedge h = 0; h < halfedges; ++h) {
     if (h + kAhead < halfedges) {
-      __builtin_prefetch(node_edges.data() + 3 * std::size_t{face_[h + kAhead]});
+      __builtin_prefetch(node_edges.data() + 3 * std::size_t{faces[h + kAhead]});
       __builtin_prefetch(&links_[links_[h + kAhead].next]);
     }
-    EdgeId* slots = node_edges.data() + 3 * std::size_t{face_[h]};
+    EdgeId* slots = node_edges.data() + 3 * std::size_t{faces[h]};
     if (slots[0] != kNoEdge) continue;
     const Halfedge n = next(h);
     slots[0] = edge(h);
@@ -129,7 +137,7 @@ CubicGraph Triangulation::dual_graph() const {
   }
   // Valid by construction: every live halfedge lies in one face cycle of length 3 (check()), so
   // each slot of face f names an edge with an end f, once per end.
-  return CubicGraph::from_valid_incidence(std::move(node_edges), face_);
+  return CubicGraph::from_valid_incidence(std::move(node_edges), std::move(faces));
 }
 
 std::string Triangulation::check() const {
