@@ -52,7 +52,7 @@ class NeighbourTable {
       for (int i = 0; i < 3; ++i) next_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
       if (mate != nullptr) {
         const EdgeId e = (*mate)[v];
-        start_search(v, e == kNoEdge ? -1 : edges[0] == e ? 0 : edges[1] == e ? 1 : 2);
+        start_search(v, e == kNoEdge ? -1 : graph.edge_index(v, e));
       }
     }
   }

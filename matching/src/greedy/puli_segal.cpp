@@ -88,7 +88,7 @@ class PuliSegal {
     for (NodeId v = 0; v < table_.node_count(); ++v) {
       const bool paired = state_[v] & kPaired;
       const int i = state_[v] & kFreeMask;
-      if (paired) mate_[v] = table_.graph().incident_edges(v)[i];
+      if (paired) mate_[v] = table_.graph().incident_edge(v, i);
       table_.start_search(v, paired ? i : -1);
     }
   }
@@ -104,9 +104,7 @@ class PuliSegal {
     if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1) {
       return row[0] == v ? 0 : row[1] == v ? 1 : 2;
     }
-    const EdgeId e = table_.graph().incident_edges(v)[at];
-    const std::span<const EdgeId, 3> edges = table_.graph().incident_edges(u);
-    return edges[0] == e ? 0 : edges[1] == e ? 1 : 2;
+    return table_.graph().edge_index(u, table_.graph().incident_edge(v, at));
   }
 
   void enter(NodeId v, std::uint8_t state, int p) {

@@ -68,6 +68,11 @@ class CubicGraph {
     return std::span<const EdgeId, 3>(node_edges_.data() + 3 * std::size_t{v}, 3);
   }
   EdgeId incident_edge(NodeId v, int k) const { return node_edges_[3 * std::size_t{v} + k]; }
+  /// The position k of e among v's three edges (e must be one of them).
+  int edge_index(NodeId v, EdgeId e) const {
+    const std::span<const EdgeId, 3> edges = incident_edges(v);
+    return edges[0] == e ? 0 : edges[1] == e ? 1 : 2;
+  }
 
   std::span<const NodeId> edge_ends() const { return edge_ends_; }
   std::span<const EdgeId> node_edges() const { return node_edges_; }
