@@ -38,8 +38,7 @@ CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
   return g;
 }
 
-CubicGraph CubicGraph::from_incidence(std::vector<EdgeId> node_edges,
-                                      std::vector<NodeId> edge_ends) {
+CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends) {
   if (node_edges.size() % 3 != 0 || edge_ends.size() != node_edges.size()) {
     throw GraphError(
         "a cubic graph has 3 edge slots per node and as many edge ends (3n/2 edges); got " +

@@ -112,13 +112,13 @@ CubicGraph Triangulation::dual_graph() && {
   return dual_graph_from_faces(std::move(face_));
 }
 
-CubicGraph Triangulation::dual_graph_from_faces(std::vector<FaceId> faces) const {
+CubicGraph Triangulation::dual_graph_from_faces(HugeVector<FaceId> faces) const {
   if (live_faces_ != face_capacity_) {
     throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
   }
   // One pass in halfedge order: the first halfedge met of a face is its smallest, and fills the
   // face's three slots.
-  std::vector<EdgeId> node_edges(3 * std::size_t{face_capacity_}, kNoEdge);
+  HugeVector<EdgeId> node_edges(3 * std::size_t{face_capacity_}, kNoEdge);
   // Face ids are scattered over the halfedges, so the slot test and the face's third halfedge are
   // random reads: ask for them a few dozen halfedges ahead, where the stream is already read.
   constexpr Halfedge kAhead = 32;

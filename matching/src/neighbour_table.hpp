@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "augment/search_slot.hpp"
-#include "huge_pages.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
 

@@ -39,7 +39,7 @@
 #include <utility>
 #include <vector>
 
-#include "huge_pages.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/matching/augment.hpp"
 #include "search_slot.hpp"
 

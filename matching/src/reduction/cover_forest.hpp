@@ -8,8 +8,8 @@
 #include <memory>
 #include <vector>
 
-#include "huge_pages.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen::reduction {
 

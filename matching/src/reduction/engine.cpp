@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "huge_pages.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "reduction/brute_force.hpp"
 #include "stopwatch.hpp"
 

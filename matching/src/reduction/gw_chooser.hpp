@@ -40,7 +40,7 @@
 #include <span>
 #include <vector>
 
-#include "huge_pages.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "reduction/chooser.hpp"
 #include "reduction/cover_forest.hpp"
 

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "huge_pages.hpp"
 #include "petersen/graph/connectivity.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
@@ -37,8 +37,8 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph) {
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
   HugeVector<NodeId> new_node(n, kNoNode);
   HugeVector<EdgeId> new_edge(m, kNoEdge);
-  std::vector<EdgeId> node_edges(3 * std::size_t{n});
-  std::vector<NodeId> edge_ends(2 * std::size_t{m});
+  HugeVector<EdgeId> node_edges(3 * std::size_t{n});
+  HugeVector<NodeId> edge_ends(2 * std::size_t{m});
   DepthFirstCopy copy;
   copy.old_node.reserve(n);
   copy.old_edge.reserve(m);

@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "huge_pages.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen::reduction {
 

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "petersen/graph/huge_pages.hpp"
+
 namespace petersen {
 
 using NodeId = std::uint32_t;
@@ -23,7 +25,9 @@ struct GraphError : std::runtime_error {
 
 /// A cubic multigraph: nodes 0..n-1, edges 0..3n/2-1, parallel edges allowed, no loops.
 /// Endpoints of edge e are at edge_ends[2e], edge_ends[2e+1]; the three edges of node v are at
-/// node_edges[3v..3v+2], in the order the edge list named them. Construction is O(n).
+/// node_edges[3v..3v+2], in the order the edge list named them. Construction is O(n). Both arrays
+/// sit on huge pages once large (HugeVector): graphs of millions of nodes are built and searched
+/// at random, and 4 KiB pages cost a fault per page to fill and a TLB miss per access.
 class CubicGraph {
  public:
   CubicGraph() = default;
@@ -39,14 +43,14 @@ class CubicGraph {
   /// arrays are taken over, not copied. Throws GraphError naming the first node slot or edge that
   /// disagrees: an edge out of range, a loop, an edge listed at a node that is not its endpoint,
   /// or an edge not listed exactly once at each end. O(n).
-  static CubicGraph from_incidence(std::vector<EdgeId> node_edges, std::vector<NodeId> edge_ends);
+  static CubicGraph from_incidence(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
 
   /// from_incidence without its checks, for arrays that form a cubic graph by construction (the
   /// dual of a triangulation's halfedge structure, lrs::Triangulation::dual_graph): the checks
   /// read edge_ends at every slot's edge, a random access that costs as much as building the
   /// arrays. The caller's tests check such arrays with from_incidence. O(1).
-  static CubicGraph from_valid_incidence(std::vector<EdgeId> node_edges,
-                                         std::vector<NodeId> edge_ends) {
+  static CubicGraph from_valid_incidence(HugeVector<EdgeId> node_edges,
+                                         HugeVector<NodeId> edge_ends) {
     CubicGraph g;
     g.node_edges_ = std::move(node_edges);
     g.edge_ends_ = std::move(edge_ends);
@@ -78,8 +82,8 @@ class CubicGraph {
   std::span<const EdgeId> node_edges() const { return node_edges_; }
 
  private:
-  std::vector<NodeId> edge_ends_;
-  std::vector<EdgeId> node_edges_;
+  HugeVector<NodeId> edge_ends_;
+  HugeVector<EdgeId> node_edges_;
 };
 
 }  // namespace petersen

@@ -4,15 +4,16 @@
 
 #include <vector>
 
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/lrs/edge_contraction.hpp"
 
 namespace petersen::lrs {
 
 struct ContractionResult {
   /// Every contraction in the order done; the expansion step undoes them from the back.
-  std::vector<ContractionRecord> stack;
+  HugeVector<ContractionRecord> stack;
   /// The vertices of T′ in the order they were processed (the paper's u_m, ..., u_1).
-  std::vector<VertexId> processed;
+  HugeVector<VertexId> processed;
 };
 
 /// Processes the live vertices in id order: contracts contractible edges incident on the vertex,

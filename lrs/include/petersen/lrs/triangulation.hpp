@@ -10,6 +10,7 @@
 
 #include "petersen/dualize/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen::lrs {
 
@@ -122,18 +123,18 @@ class Triangulation {
   // from_mesh after the surface check.
   static Triangulation build(const TriangleMesh& mesh);
   // dual_graph with `faces` (face_, copied or handed over) as the dual's edge ends.
-  CubicGraph dual_graph_from_faces(std::vector<FaceId> faces) const;
+  CubicGraph dual_graph_from_faces(HugeVector<FaceId> faces) const;
 
   // Per halfedge, origin and next side by side: a twin pair fills 16 bytes of one cache line.
   struct Link {
     VertexId origin;
     Halfedge next;
   };
-  std::vector<Link> links_;
-  std::vector<FaceId> face_;  // per halfedge
-  std::vector<std::uint8_t> edge_alive_;
-  std::vector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
-  std::vector<std::uint32_t> degree_;
+  HugeVector<Link> links_;
+  HugeVector<FaceId> face_;  // per halfedge
+  HugeVector<std::uint8_t> edge_alive_;
+  HugeVector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
+  HugeVector<std::uint32_t> degree_;
   std::vector<VertexId> input_vertex_;  // empty when the numbering is the input's
   std::uint32_t face_capacity_ = 0;
   std::uint32_t live_vertices_ = 0, live_edges_ = 0, live_faces_ = 0;

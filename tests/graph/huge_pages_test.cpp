@@ -1,0 +1,84 @@
+#include "petersen/graph/huge_pages.hpp"
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace petersen {
+namespace {
+
+constexpr std::size_t kRange = 4 * huge_pages::kPageBytes;
+
+bool all_bytes(const void* range, std::size_t bytes, unsigned char value) {
+  const auto* p = static_cast<const unsigned char*>(range);
+  return std::all_of(p, p + bytes, [&](unsigned char b) { return b == value; });
+}
+
+TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
+  huge_pages::release_retained();
+  void* first = huge_pages::acquire(kRange);
+  std::memset(first, 0xAB, kRange);
+  huge_pages::release(first, kRange);
+  void* again = huge_pages::acquire(kRange);
+  EXPECT_EQ(again, first);
+  EXPECT_TRUE(all_bytes(again, kRange, 0xAB));  // reused as it was, not mapped afresh
+  huge_pages::release(again, kRange);
+  huge_pages::release_retained();
+}
+
+TEST(HugePages, SmallerRequestsSplitAKeptRange) {
+  huge_pages::release_retained();
+  auto* range = static_cast<char*>(huge_pages::acquire(kRange));
+  huge_pages::release(range, kRange);
+  void* front = huge_pages::acquire(huge_pages::kPageBytes);
+  void* rest = huge_pages::acquire(kRange - huge_pages::kPageBytes);
+  EXPECT_EQ(front, range);
+  EXPECT_EQ(rest, range + huge_pages::kPageBytes);
+  huge_pages::release(front, huge_pages::kPageBytes);
+  huge_pages::release(rest, kRange - huge_pages::kPageBytes);
+  huge_pages::release_retained();
+}
+
+TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
+  huge_pages::release_retained();
+  void* range = huge_pages::acquire(kRange);
+  std::memset(range, 0xAB, kRange);
+  huge_pages::release(range, kRange);
+  huge_pages::release_retained();
+  void* fresh = huge_pages::acquire(kRange);
+  EXPECT_TRUE(all_bytes(fresh, kRange, 0));  // a new anonymous mapping, zero-filled
+  huge_pages::release(fresh, kRange);
+  huge_pages::release_retained();
+}
+
+TEST(HugePages, ForkedChildDoesNotReuseItsParentsRanges) {
+  huge_pages::release_retained();
+  void* range = huge_pages::acquire(kRange);
+  std::memset(range, 0xAB, kRange);
+  huge_pages::release(range, kRange);
+  const pid_t child = fork();
+  ASSERT_GE(child, 0);
+  if (child == 0) {
+    // Reusing the parent's range would copy every page it writes; a fresh one is zero-filled.
+    _exit(all_bytes(huge_pages::acquire(kRange), kRange, 0) ? 0 : 1);
+  }
+  int status = 0;
+  ASSERT_EQ(waitpid(child, &status, 0), child);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  EXPECT_EQ(huge_pages::acquire(kRange), range);  // the parent keeps it
+  huge_pages::release(range, kRange);
+  huge_pages::release_retained();
+}
+
+TEST(HugePages, HugeVectorKeepsItsElementsAcrossGrowth) {
+  HugeVector<std::uint32_t> values;
+  for (std::uint32_t i = 0; i < 3'000'000; ++i) values.push_back(i);  // 12 MB, several ranges
+  for (std::uint32_t i = 0; i < values.size(); i += 4099) ASSERT_EQ(values[i], i);
+  EXPECT_EQ(values.back(), 2'999'999u);
+}
+
+}  // namespace
+}  // namespace petersen
