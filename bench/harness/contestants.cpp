@@ -59,7 +59,8 @@ Measures lemon_peer(const BenchInput& input, std::uint64_t) {
   for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
   const auto start = std::chrono::steady_clock::now();
   Matching matching;
-  matching.mate_edge = lemon_adapter::maximum_matching(graph.node_count(), edges, true);
+  const std::vector<EdgeId> mate = lemon_adapter::maximum_matching(graph.node_count(), edges, true);
+  matching.mate_edge.assign(mate.begin(), mate.end());
   Measures measures;
   measures.initial_seconds = seconds_since(start);
   require_perfect(graph, matching);

@@ -16,7 +16,7 @@ namespace {
 using lrs::Halfedge;
 using lrs::Triangulation;
 
-double squared_length(const std::vector<std::array<double, 3>>& positions, VertexId a, VertexId b) {
+double squared_length(const Positions& positions, VertexId a, VertexId b) {
   double sum = 0;
   for (int d = 0; d < 3; ++d)
     sum += (positions[a][d] - positions[b][d]) * (positions[a][d] - positions[b][d]);
@@ -27,7 +27,7 @@ double squared_length(const std::vector<std::array<double, 3>>& positions, Verte
 
 TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) {
   Triangulation tri = Triangulation::from_mesh(mesh);
-  std::vector<std::array<double, 3>> positions = mesh.positions;
+  Positions positions = mesh.positions;
   lrs::VertexMarks marks(tri.vertex_capacity());
   // Min-heap of (squared length when pushed, edge); an entry whose length is stale is re-pushed.
   using Entry = std::pair<double, EdgeId>;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "petersen/dualize/mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
 
@@ -15,8 +16,8 @@ namespace petersen {
 /// entries[start[v+1]]) and sorted within each bucket, so the copies of an edge are adjacent and
 /// in halfedge order. O(F log d) for maximum vertex degree d.
 struct EdgeGroups {
-  std::vector<std::uint32_t> start;
-  std::vector<std::array<std::uint32_t, 2>> entries;
+  HugeVector<std::uint32_t> start;
+  HugeVector<std::array<std::uint32_t, 2>> entries;
 };
 
 /// Groups the halfedges of the triangles whose `usable` flag is set (all when `usable` is empty).

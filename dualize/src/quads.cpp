@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "petersen/dualize/surface_check.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
 
@@ -60,7 +61,7 @@ QuadCheck check_quad_mesh(const TriangleMesh& source, const QuadMesh& quads) {
       return edge < o.edge || (edge == o.edge && quad < o.quad);
     }
   };
-  std::vector<Side> sides;
+  HugeVector<Side> sides;
   sides.reserve(4 * quads.quads.size());
   for (FaceId q = 0; q < quads.quads.size(); ++q) {
     const auto& c = quads.quads[q];

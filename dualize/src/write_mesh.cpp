@@ -7,14 +7,19 @@
 
 #include "file_bytes.hpp"
 #include "petersen/dualize/read_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
 
 namespace {
 
+// The file's bytes, built in memory and written at once: tens of megabytes for a million faces,
+// so on huge pages and recycled like the meshes' arrays (huge_pages.hpp), not faulted in afresh.
+using Bytes = std::basic_string<char, std::char_traits<char>, HugePageAllocator<char>>;
+
 // Appends numbers with std::to_chars: shortest exact text for doubles, no locale, no iostreams.
 struct Text {
-  std::string out;
+  Bytes out;
   void number(double x) { append(x); }
   void number(std::uint64_t x) { append(x); }
   void word(std::string_view s) { out += s; }
@@ -27,8 +32,8 @@ struct Text {
 };
 
 template <std::size_t N>
-std::string off_text(std::span<const std::array<double, 3>> positions,
-                     std::span<const std::array<VertexId, N>> faces) {
+Bytes off_text(std::span<const std::array<double, 3>> positions,
+               std::span<const std::array<VertexId, N>> faces) {
   Text t;
   t.word("OFF\n");
   t.number(std::uint64_t{positions.size()});
@@ -53,8 +58,8 @@ std::string off_text(std::span<const std::array<double, 3>> positions,
 }
 
 template <std::size_t N>
-std::string obj_text(std::span<const std::array<double, 3>> positions,
-                     std::span<const std::array<VertexId, N>> faces) {
+Bytes obj_text(std::span<const std::array<double, 3>> positions,
+               std::span<const std::array<VertexId, N>> faces) {
   Text t;
   for (const auto& p : positions) {
     t.word("v");
@@ -76,7 +81,7 @@ std::string obj_text(std::span<const std::array<double, 3>> positions,
 }
 
 template <typename T>
-void put_le(std::string& out, T value) {
+void put_le(Bytes& out, T value) {
   static_assert(std::endian::native == std::endian::little || sizeof(T) == 1,
                 "binary PLY writing assumes a little-endian host");
   char raw[sizeof(T)];
@@ -85,13 +90,14 @@ void put_le(std::string& out, T value) {
 }
 
 template <std::size_t N>
-std::string ply_bytes(std::span<const std::array<double, 3>> positions,
-                      std::span<const std::array<VertexId, N>> faces) {
-  std::string out = "ply\nformat binary_little_endian 1.0\ncomment written by petersen\n";
-  out += "element vertex " + std::to_string(positions.size()) +
-         "\nproperty double x\nproperty double y\nproperty double z\n";
-  out += "element face " + std::to_string(faces.size()) +
-         "\nproperty list uchar uint vertex_indices\nend_header\n";
+Bytes ply_bytes(std::span<const std::array<double, 3>> positions,
+                std::span<const std::array<VertexId, N>> faces) {
+  Bytes out = "ply\nformat binary_little_endian 1.0\ncomment written by petersen\n";
+  const std::string header = "element vertex " + std::to_string(positions.size()) +
+                             "\nproperty double x\nproperty double y\nproperty double z\n" +
+                             "element face " + std::to_string(faces.size()) +
+                             "\nproperty list uchar uint vertex_indices\nend_header\n";
+  out += header;
   out.reserve(out.size() + positions.size() * 24 + faces.size() * (1 + 4 * N));
   for (const auto& p : positions)
     for (double x : p) put_le(out, x);

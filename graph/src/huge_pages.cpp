@@ -1,5 +1,6 @@
 #include "petersen/graph/huge_pages.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
@@ -81,6 +82,7 @@ void* map_fresh(std::size_t bytes) {
 
 void* acquire(std::size_t bytes) {
   Retained& kept = retained();
+  std::vector<Range> too_small;
   {
     const std::lock_guard lock(kept.mutex);
     // The smallest kept range that is large enough; its tail stays kept.
@@ -99,7 +101,20 @@ void* acquire(std::size_t bytes) {
       kept.bytes -= bytes;
       return start;
     }
+    // None fits: give the largest kept ranges back, as many bytes as the new range takes, so
+    // that kept memory does not pile up beside the live arrays (the kernel hands those pages out
+    // again for the new range). Measured on armadillo-sub2's LRS: peak RSS 350 MB without this.
+    std::sort(kept.ranges.begin(), kept.ranges.end(),
+              [](const Range& a, const Range& b) { return a.bytes < b.bytes; });
+    std::size_t given_back = 0;
+    while (given_back < bytes && !kept.ranges.empty()) {
+      too_small.push_back(kept.ranges.back());
+      given_back += kept.ranges.back().bytes;
+      kept.bytes -= kept.ranges.back().bytes;
+      kept.ranges.pop_back();
+    }
   }
+  for (const Range& r : too_small) munmap(r.start, r.bytes);
   return map_fresh(bytes);
 }
 

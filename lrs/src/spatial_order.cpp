@@ -28,8 +28,7 @@ std::uint32_t spread(std::uint32_t x, int bits) {
 }
 
 // Per vertex, its cell's index along the Morton curve.
-std::vector<std::uint32_t> vertex_cells(const std::vector<std::array<double, 3>>& positions,
-                                        int bits) {
+std::vector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
   std::array<double, 3> low, high;
   low.fill(std::numeric_limits<double>::max());
   high.fill(std::numeric_limits<double>::lowest());

@@ -92,7 +92,7 @@ std::vector<Halfedge> face_starts(const Triangulation& tri) {
 
 }  // namespace
 
-TriangleMesh Triangulation::to_mesh(const std::vector<std::array<double, 3>>& positions) const {
+TriangleMesh Triangulation::to_mesh(const Positions& positions) const {
   TriangleMesh mesh;
   mesh.positions = positions;
   mesh.triangles.reserve(live_faces_);

@@ -33,7 +33,7 @@ class NeighbourTable {
  public:
   /// With `mate` (a mate edge per node, kNoEdge when free), the search state starts from that
   /// matching; without it, it is left for start_search() to write, node by node.
-  explicit NeighbourTable(const CubicGraph& graph, const std::vector<EdgeId>* mate = nullptr)
+  explicit NeighbourTable(const CubicGraph& graph, const HugeVector<EdgeId>* mate = nullptr)
       : graph_(graph),
         next_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
         slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {

@@ -10,7 +10,7 @@
 
 namespace petersen::lrs::testing {
 
-inline TriangleMesh mesh_of(std::uint32_t vertices, std::vector<std::array<VertexId, 3>> faces) {
+inline TriangleMesh mesh_of(std::uint32_t vertices, HugeVector<std::array<VertexId, 3>> faces) {
   TriangleMesh mesh;
   for (std::uint32_t v = 0; v < vertices; ++v) mesh.positions.push_back({double(v), 0, 0});
   mesh.triangles = std::move(faces);

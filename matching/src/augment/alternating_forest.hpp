@@ -56,7 +56,7 @@ class AlternatingForest {
   /// Reads the matching (mate edge per node), which each augmentation then updates; the free
   /// nodes, in id order, become free_nodes(). Throws std::length_error past kMaxTrees free nodes.
   /// A graph that keeps the search state (NeighbourTable) must hold fresh slots for `mate`.
-  AlternatingForest(const Graph& graph, std::vector<EdgeId>& mate, AugmentStats& stats)
+  AlternatingForest(const Graph& graph, HugeVector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
         mate_edge_(mate),
         stats_(stats),
@@ -379,7 +379,7 @@ class AlternatingForest {
   }
 
   const Graph& graph_;
-  std::vector<EdgeId>& mate_edge_;
+  HugeVector<EdgeId>& mate_edge_;
   AugmentStats& stats_;
   std::size_t n_;
   HugeArray<Slot> slot_;  // unless the graph keeps the search state

@@ -57,7 +57,7 @@ AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment
 
 MaximumMatchingResult maximum_matching(const CsrGraph& graph, Augment variant) {
   MaximumMatchingResult result{Matching(graph.node_count()), 0, {}};
-  std::vector<EdgeId>& mate = result.matching.mate_edge;
+  HugeVector<EdgeId>& mate = result.matching.mate_edge;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     auto [a, b] = graph.endpoints(e);
     if (mate[a] == kNoEdge && mate[b] == kNoEdge) mate[a] = mate[b] = e;

@@ -170,7 +170,7 @@ class PuliSegal {
   }
 
   NeighbourTable& table_;
-  std::vector<EdgeId>& mate_;
+  HugeVector<EdgeId>& mate_;
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;

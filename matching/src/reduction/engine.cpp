@@ -63,7 +63,7 @@ Matching reduce_and_lift(const CubicGraph& graph, std::span<const std::uint32_t>
   ReductionGraph g(graph, n);  // a reduction adds at most two edges and removes two nodes
   HugeVector<Step> steps;
   steps.reserve(n / 2);
-  std::vector<EdgeId> mate(n, kNoEdge);
+  HugeVector<EdgeId> mate(n, kNoEdge);
   for (std::uint32_t c = 0; c < components; ++c) {
     EdgeId f = first[c];
     for (std::uint32_t remaining = size[c]; remaining > 2; remaining -= 2) {

@@ -7,22 +7,29 @@
 #include <string>
 #include <vector>
 
+#include "petersen/graph/huge_pages.hpp"
+
 namespace petersen {
 
 using VertexId = std::uint32_t;
 using FaceId = std::uint32_t;
 
+/// Vertex positions; like every large array of the library, on huge pages once large
+/// (petersen/graph/huge_pages.hpp), so that meshes, graphs and scratch arrays recycle one
+/// another's memory.
+using Positions = HugeVector<std::array<double, 3>>;
+
 /// A triangle mesh: positions and, per triangle, three corner indices in counter-clockwise order
 /// seen from outside. Edge k of triangle t joins corners k and (k+1)%3.
 struct TriangleMesh {
-  std::vector<std::array<double, 3>> positions;
-  std::vector<std::array<VertexId, 3>> triangles;
+  Positions positions;
+  HugeVector<std::array<VertexId, 3>> triangles;
 };
 
 /// A quad mesh over the same positions as the triangle mesh it came from.
 struct QuadMesh {
-  std::vector<std::array<double, 3>> positions;
-  std::vector<std::array<VertexId, 4>> quads;
+  Positions positions;
+  HugeVector<std::array<VertexId, 4>> quads;
 };
 
 /// Raised for bad mesh input or a mesh that is not a closed surface; the message names the file

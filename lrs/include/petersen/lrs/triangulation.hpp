@@ -100,7 +100,7 @@ class Triangulation {
   /// input's vertex ids; each triangle starts at the smallest halfedge id of its face, so edge k
   /// of the triangle is that halfedge's k-th successor. Dead vertices stay in `positions`,
   /// unreferenced. O(V + F).
-  TriangleMesh to_mesh(const std::vector<std::array<double, 3>>& positions) const;
+  TriangleMesh to_mesh(const Positions& positions) const;
 
   /// The dual graph when every face is alive (the triangulation K after expansion): node f is
   /// face f, dual edge e crosses edge e, and node f's k-th edge is edge k of to_mesh's triangle f.

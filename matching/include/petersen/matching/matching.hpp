@@ -9,7 +9,7 @@ namespace petersen {
 
 /// The matched edge of each node, or kNoEdge. Both ends of a matched edge name it.
 struct Matching {
-  std::vector<EdgeId> mate_edge;
+  HugeVector<EdgeId> mate_edge;
 
   Matching() = default;
   explicit Matching(std::uint32_t node_count) : mate_edge(node_count, kNoEdge) {}
