@@ -16,14 +16,17 @@ namespace huge_pages {
 inline constexpr std::size_t kPageBytes = std::size_t{2} << 20;
 
 /// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory, advised onto huge pages, its
-/// contents unspecified. A range that release() kept is handed out again when one is large
-/// enough; otherwise the range is mapped fresh from the kernel. Throws std::bad_alloc.
+/// contents unspecified. The smallest range that release() kept and that is large enough is
+/// handed out again (split if larger); when none is, the largest kept ranges go back to the
+/// kernel, as many bytes as the request, and the range is mapped fresh, so that kept memory does
+/// not pile up beside the live arrays. Throws std::bad_alloc.
 void* acquire(std::size_t bytes);
 
 /// Gives back a range from acquire(). Up to kRetainedBytes in all are kept for the next
 /// acquire() (the rest goes back to the kernel), because on virtual machines a fresh page is
 /// expensive: here the host backs guest memory lazily and takes freed memory back, so filling
-/// fresh memory ran at 0.3-0.7 GB/s against 15 GB/s for reused huge pages (bench/RESULTS.md).
+/// fresh memory ran at 0.25-1.2 GB/s against 15 GB/s for reused huge pages (bench/RESULTS.md).
+/// A forked child drops the ranges its parent kept (writing them would copy every page).
 /// malloc keeps freed memory in its heap for the same reason, but maps blocks above 32 MiB
 /// afresh every time and hands reused blocks out on whatever pages they had.
 void release(void* range, std::size_t bytes);
