@@ -33,8 +33,8 @@ Retained& retained();
 // A forked child shares the kept ranges with its parent, copy on write: the first write to each
 // 4 KiB page would copy it (the huge page is split first). The child drops them instead, as
 // fresh memory is cheaper (the bench harness forks a child per run: 7,583 such copies in LRS's
-// contraction on the 4.1M-triangle D6, 0.06 s). The lock is held across fork, so the child
-// finds the list whole.
+// contraction on the 4.1M-triangle D6). The lock is held across fork, so the child finds the
+// list whole.
 void lock_before_fork() {
   retained().mutex.lock();
 }
