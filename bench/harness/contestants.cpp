@@ -58,9 +58,8 @@ Measures lemon_peer(const BenchInput& input, std::uint64_t) {
   std::vector<std::array<std::uint32_t, 2>> edges(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
   const auto start = std::chrono::steady_clock::now();
-  Matching matching;
-  const std::vector<EdgeId> mate = lemon_adapter::maximum_matching(graph.node_count(), edges, true);
-  matching.mate_edge.assign(mate.begin(), mate.end());
+  Matching matching(graph.node_count());
+  lemon_adapter::maximum_matching(graph.node_count(), edges, matching.mate_edge.data(), true);
   Measures measures;
   measures.initial_seconds = seconds_since(start);
   require_perfect(graph, matching);

@@ -25,8 +25,7 @@ void match_with_lemon(const CubicGraph& graph, Result& result) {
   Stopwatch clock;
   std::vector<std::array<std::uint32_t, 2>> edges(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
-  const std::vector<EdgeId> mate = lemon_adapter::maximum_matching(graph.node_count(), edges);
-  result.matching.mate_edge.assign(mate.begin(), mate.end());
+  lemon_adapter::maximum_matching(graph.node_count(), edges, result.matching.mate_edge.data());
   result.stats.initial_seconds = clock.seconds();
 }
 

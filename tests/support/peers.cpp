@@ -19,9 +19,10 @@ std::uint32_t boost_matching_size(std::uint32_t node_count,
 
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges) {
+  std::vector<std::uint32_t> mate(node_count);
+  lemon_adapter::maximum_matching(node_count, {edges.begin(), edges.end()}, mate.data());
   std::uint32_t matched = 0;
-  for (std::uint32_t e : lemon_adapter::maximum_matching(node_count, {edges.begin(), edges.end()}))
-    matched += e != lemon_adapter::kUnmatched;
+  for (std::uint32_t e : mate) matched += e != lemon_adapter::kUnmatched;
   return matched / 2;
 }
 

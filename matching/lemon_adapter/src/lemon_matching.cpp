@@ -5,9 +5,9 @@
 
 namespace petersen::lemon_adapter {
 
-std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
-                                            const std::vector<std::array<std::uint32_t, 2>>& edges,
-                                            bool greedy_start) {
+void maximum_matching(std::uint32_t node_count,
+                      const std::vector<std::array<std::uint32_t, 2>>& edges,
+                      std::uint32_t* mate_edge, bool greedy_start) {
   lemon::SmartGraph graph;
   graph.reserveNode(static_cast<int>(node_count));
   graph.reserveEdge(static_cast<int>(edges.size()));
@@ -23,13 +23,12 @@ std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
     matcher.init();
   }
   matcher.startSparse();
-  std::vector<std::uint32_t> mate_edge(node_count, kUnmatched);
   for (std::uint32_t v = 0; v < node_count; ++v) {
     auto arc = matcher.matching(graph.nodeFromId(static_cast<int>(v)));
-    if (arc != lemon::INVALID)
-      mate_edge[v] = static_cast<std::uint32_t>(graph.id(lemon::SmartGraph::Edge(arc)));
+    mate_edge[v] = arc == lemon::INVALID
+                       ? kUnmatched
+                       : static_cast<std::uint32_t>(graph.id(lemon::SmartGraph::Edge(arc)));
   }
-  return mate_edge;
 }
 
 }  // namespace petersen::lemon_adapter

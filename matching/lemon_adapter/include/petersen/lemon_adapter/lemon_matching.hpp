@@ -12,10 +12,11 @@ inline constexpr std::uint32_t kUnmatched = 0xFFFFFFFFu;
 
 /// (The interface is C++17: no std::span.)
 /// Maximum-cardinality matching of a general (multi)graph by LEMON's MaxMatching (Edmonds,
-/// O(nm log n)). Returns, for each node, the index in `edges` of its matched edge or kUnmatched.
-/// `greedy_start` runs LEMON's greedyInit() first, as MaxMatching::run() does.
-std::vector<std::uint32_t> maximum_matching(std::uint32_t node_count,
-                                            const std::vector<std::array<std::uint32_t, 2>>& edges,
-                                            bool greedy_start = true);
+/// O(nm log n)). Writes, for each node v < node_count, the index in `edges` of its matched edge or
+/// kUnmatched to mate_edge[v]: straight into the caller's array (a Matching's huge-page one),
+/// without a copy. `greedy_start` runs LEMON's greedyInit() first, as MaxMatching::run() does.
+void maximum_matching(std::uint32_t node_count,
+                      const std::vector<std::array<std::uint32_t, 2>>& edges,
+                      std::uint32_t* mate_edge, bool greedy_start = true);
 
 }  // namespace petersen::lemon_adapter
