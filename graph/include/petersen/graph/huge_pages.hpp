@@ -25,7 +25,8 @@ void* acquire(std::size_t bytes);
 /// Gives back a range from acquire(). Up to kRetainedBytes in all are kept for the next
 /// acquire() (the rest goes back to the kernel), because on virtual machines a fresh page is
 /// expensive: here the host backs guest memory lazily and takes freed memory back, so filling
-/// fresh memory ran at 0.25-1.2 GB/s against 15 GB/s for reused huge pages (bench/RESULTS.md).
+/// fresh memory ran at 0.25-1.2 GB/s against 15 GB/s for reused huge pages (a touch loop on the
+/// development VM, 256 MB at a time).
 /// A forked child drops the ranges its parent kept (writing them would copy every page).
 /// malloc keeps freed memory in its heap for the same reason, but maps blocks above 32 MiB
 /// afresh every time and hands reused blocks out on whatever pages they had.
