@@ -1,6 +1,7 @@
 #include "petersen/matching/perfect_matching.hpp"
 
 #include <optional>
+#include <stdexcept>
 
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
@@ -16,6 +17,7 @@ namespace {
 constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
     {Algorithm::sg, "sg"}, {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
     {Algorithm::gw, "gw"}, {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
+    {Algorithm::lrs, "lrs"},
 };
 constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::local, "local"},
                                                                   {Augment::faithful, "faithful"}};
@@ -90,6 +92,11 @@ std::optional<Augment> parse_augment(std::string_view name) {
 }
 
 Result perfect_matching(const CubicGraph& graph, const Options& options) {
+  if (options.algorithm == Algorithm::lrs) {
+    throw std::invalid_argument(
+        "perfect_matching: lrs contracts and flips a triangulation, so it needs a mesh "
+        "(use quadrangulate)");
+  }
   Result result{Matching(graph.node_count()), {}};
   if (options.validate) {
     Stopwatch clock;
@@ -109,6 +116,8 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
     case Algorithm::gw:
       match_by_reductions(graph, options, result);
       break;
+    case Algorithm::lrs:
+      break;  // refused above
   }
   return result;
 }

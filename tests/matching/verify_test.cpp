@@ -51,7 +51,7 @@ TEST(Verifier, NamesAnEdgeOutOfRangeOrNotIncident) {
 }
 
 TEST(Algorithms, NamesRoundTrip) {
-  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink,
+  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink, Algorithm::lrs,
                       Algorithm::lemon}) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }

@@ -15,6 +15,8 @@ enum class Algorithm {
   gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
   frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
   lemon,  ///< LEMON's MaxMatching on a copy of the graph: the peer, for comparison
+  lrs,    ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run by
+          ///< quadrangulate (petersen/quadrangulate), not by perfect_matching
 };
 
 /// How augmenting paths are searched (paper §3.1, Tarjan's procedure).
@@ -62,7 +64,8 @@ struct Result {
 };
 
 /// A perfect matching of a cubic bridgeless (multi)graph, by the chosen algorithm. Components are
-/// matched independently. Throws GraphError if `options.validate` and the graph has a bridge.
+/// matched independently. Throws GraphError if `options.validate` and the graph has a bridge,
+/// std::invalid_argument for Algorithm::lrs (which works on a triangulation, not a graph).
 Result perfect_matching(const CubicGraph& graph, const Options& options = {});
 
 }  // namespace petersen
