@@ -11,6 +11,7 @@
 #include "peers.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/tutte_berge.hpp"
 
 namespace petersen {
 namespace {
@@ -118,12 +119,48 @@ RC_GTEST_PROP(MaximumMatching, ReachesLemonAndBoostOnGeneralGraphs, ()) {
     MaximumMatchingResult r = maximum_matching(g, augment);
     RC_ASSERT(is_valid_matching(g, r.matching));
     RC_ASSERT(r.size == lemon);
+    const MatchingCheck certified = verify_maximum_matching(g, r.matching, r.tutte_set);
+    RC_ASSERT(certified.ok());
+    // One matched edge fewer: still a valid matching, no longer maximum, and the same witness
+    // (or any other) cannot prove it.
+    if (r.size > 0) {
+      Matching smaller = r.matching;
+      const NodeId v =
+          static_cast<NodeId>(std::find_if(smaller.mate_edge.begin(), smaller.mate_edge.end(),
+                                           [](EdgeId e) { return e != kNoEdge; }) -
+                              smaller.mate_edge.begin());
+      const EdgeId e = smaller.mate_edge[v];
+      smaller.mate_edge[v] = smaller.mate_edge[g.other_end(e, v)] = kNoEdge;
+      RC_ASSERT(verify_maximum_matching(g, smaller, r.tutte_set).problem ==
+                MatchingCheck::Problem::not_maximum);
+      RC_ASSERT(verify_maximum_matching(g, smaller, {}).problem ==
+                MatchingCheck::Problem::not_maximum);
+    }
     // The augmentation alone, from nothing.
     Matching empty(g.node_count());
     AugmentStats stats = augment_matching(g, empty, augment);
     RC_ASSERT(is_valid_matching(g, empty));
     RC_ASSERT(stats.augmenting_paths == lemon);
   }
+}
+
+// A star K1,3 plus an isolated node: the centre is the Tutte set (four odd components, one node
+// each, minus one), so any maximum matching leaves three of the five nodes free.
+TEST(MaximumMatching, TutteSetOfAStarIsItsCentre) {
+  const std::vector<std::array<NodeId, 2>> edges{{0, 1}, {0, 2}, {0, 3}};
+  CsrGraph g = CsrGraph::from_edges(5, edges);
+  MaximumMatchingResult r = maximum_matching(g);
+  EXPECT_EQ(r.size, 1u);
+  EXPECT_EQ(r.tutte_set, std::vector<NodeId>{0});
+  EXPECT_TRUE(verify_maximum_matching(g, r.matching, r.tutte_set).ok());
+  const std::vector<NodeId> twice{0, 0}, far{7};
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, twice).problem,
+            MatchingCheck::Problem::bad_witness);
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, far).problem,
+            MatchingCheck::Problem::bad_witness);
+  const std::vector<NodeId> leaf{1};
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, leaf).problem,
+            MatchingCheck::Problem::not_maximum);
 }
 
 TEST(CsrGraph, RefusesLoopsAndEndpointsOutOfRange) {

@@ -51,8 +51,8 @@ TEST(Verifier, NamesAnEdgeOutOfRangeOrNotIncident) {
 }
 
 TEST(Algorithms, NamesRoundTrip) {
-  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink, Algorithm::lrs,
-                      Algorithm::lemon}) {
+  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink,
+                      Algorithm::lrs, Algorithm::lemon}) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }
   EXPECT_FALSE(parse_algorithm("blossom").has_value());
