@@ -1,0 +1,335 @@
+#include "pair_triangles.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/surface_check.hpp"
+#include "petersen/graph/csr_graph.hpp"
+#include "petersen/lrs/lrs.hpp"
+#include "petersen/matching/augment.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+
+namespace petersen::quad_detail {
+
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+void add_run(Stats& total, const Stats& run) {
+  total.initial_seconds += run.initial_seconds;
+  total.augment_seconds += run.augment_seconds;
+  total.unpaired_after_initial += run.unpaired_after_initial;
+  total.augmenting_paths += run.augmenting_paths;
+  total.blossoms += run.blossoms;
+  total.nodes_labelled += run.nodes_labelled;
+  total.reductions += run.reductions;
+  total.replacement_searches += run.replacement_searches;
+  for (int k = 0; k < 3; ++k) total.lift_cases[k] += run.lift_cases[k];
+}
+
+// Components of the pairable graph (disjoint sets over its edges), numbered in order of their
+// first node, and whether each is closed: every node has three pairable sides.
+struct Components {
+  std::vector<std::uint32_t> of_node;
+  std::vector<std::uint8_t> closed;
+};
+
+Components components_of(const PairableGraph& graph) {
+  const std::uint32_t n = graph.node_count;
+  std::vector<NodeId> parent(n);
+  for (NodeId v = 0; v < n; ++v) parent[v] = v;
+  auto find = [&](NodeId v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const NodeId a = find(graph.edge_ends[2 * e]), b = find(graph.edge_ends[2 * e + 1]);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+  Components components;
+  components.of_node.resize(n);
+  std::vector<std::uint32_t> id_of_root(n, kNoNode);
+  for (NodeId v = 0; v < n; ++v) {
+    const NodeId root = find(v);
+    if (id_of_root[root] == kNoNode) {
+      id_of_root[root] = static_cast<std::uint32_t>(components.closed.size());
+      components.closed.push_back(1);
+    }
+    components.of_node[v] = id_of_root[root];
+  }
+  for (NodeId v = 0; v < n; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      if (graph.node_edges[3 * std::size_t{v} + k] == kNoEdge) {
+        components.closed[components.of_node[v]] = 0;
+      }
+    }
+  }
+  return components;
+}
+
+// The subgraph induced by `nodes` (whole components, ascending), renumbered in their order.
+// Its edges keep their relative order; local edge i is graph edge edge_of[i].
+struct Subgraph {
+  std::vector<NodeId> nodes;
+  std::vector<EdgeId> edge_of;
+  HugeVector<NodeId> edge_ends;
+};
+
+Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
+  Subgraph sub;
+  std::vector<NodeId> local(graph.node_count, kNoNode);
+  for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const NodeId a = local[graph.edge_ends[2 * e]];
+    if (a == kNoNode) continue;
+    sub.edge_of.push_back(e);
+    sub.edge_ends.push_back(a);
+    sub.edge_ends.push_back(local[graph.edge_ends[2 * e + 1]]);
+  }
+  sub.nodes = std::move(nodes);
+  return sub;
+}
+
+// A closed component as a triangle mesh on its own vertices, for lrs.
+struct ComponentMesh {
+  TriangleMesh mesh;
+  std::vector<VertexId> vertex_of;  // local vertex -> input vertex
+};
+
+ComponentMesh component_mesh(const PolygonMesh& mesh, const PairableGraph& graph,
+                             std::span<const NodeId> nodes, std::vector<VertexId>& local) {
+  ComponentMesh part;
+  for (NodeId v : nodes) {
+    const auto corners = mesh.face(graph.face_of(v));
+    std::array<VertexId, 3> triangle;
+    for (int k = 0; k < 3; ++k) {
+      VertexId& id = local[corners[k]];
+      if (id == kNoNode) {
+        id = static_cast<VertexId>(part.vertex_of.size());
+        part.vertex_of.push_back(corners[k]);
+        part.mesh.positions.push_back(mesh.positions[corners[k]]);
+      }
+      triangle[k] = id;
+    }
+    part.mesh.triangles.push_back(triangle);
+  }
+  for (VertexId v : part.vertex_of) local[v] = kNoNode;
+  return part;
+}
+
+// Why lrs cannot take a closed component: it needs one connected, orientable manifold surface.
+std::string lrs_refusal(const TriangleMesh& mesh) {
+  const SurfaceReport report = inspect_surface(mesh);
+  if (!report.closed()) return "not a closed, consistently oriented surface (non-orientable?)";
+  if (!report.pinched_vertices.empty()) return "a pinched vertex";
+  if (report.edge_components != 1) return "several components";
+  return {};
+}
+
+std::array<VertexId, 3> sorted(std::array<VertexId, 3> t) {
+  std::sort(t.begin(), t.end());
+  return t;
+}
+
+// Runs lrs on one closed component; appends its quads with their input faces. Returns false,
+// with the reason, when lrs cannot take the component.
+bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<const NodeId> nodes,
+                 const QuadOptions& options, std::vector<VertexId>& local, TrianglePairing& pairing,
+                 QuadStats& stats) {
+  ComponentMesh part = component_mesh(mesh, graph, nodes, local);
+  if (std::string why = lrs_refusal(part.mesh); !why.empty()) {
+    if (stats.lrs_fallback_components++ == 0) stats.lrs_fallback_reason = why;
+    return false;
+  }
+  LrsResult result = quadrangulate_lrs(part.mesh, {.augment = options.augment});
+  if (MatchingCheck check = verify_perfect_matching(result.dual, result.matching); !check.ok()) {
+    throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +
+                           check.message);
+  }
+  if (QuadCheck check = check_quad_mesh(part.mesh, result.quads); !check.ok()) {
+    throw std::logic_error("internal error: lrs's quads fail their check: " + check.problem);
+  }
+  stats.matching.initial_seconds +=
+      result.stats.contraction_seconds + result.stats.expansion_seconds;
+  stats.matching.augment_seconds += result.stats.augment_seconds;
+  stats.matching.unpaired_after_initial += result.stats.unpaired_after_expansion;
+  stats.matching.augmenting_paths += result.stats.augmenting_paths;
+  stats.flipped_edges += result.stats.flipped_edges;
+  stats.irreducible_vertices += result.stats.irreducible_vertices;
+  // K's faces are numbered anew (spatially); an unflipped one is found among the input's
+  // triangles by its vertex set.
+  const auto& k_triangles = result.flipped_mesh.triangles;
+  std::vector<std::pair<std::array<VertexId, 3>, FaceId>> input(nodes.size()),
+      made(k_triangles.size());
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    input[i] = {sorted(part.mesh.triangles[i]), graph.face_of(nodes[i])};
+  }
+  for (FaceId f = 0; f < k_triangles.size(); ++f) made[f] = {sorted(k_triangles[f]), f};
+  std::sort(input.begin(), input.end());
+  std::sort(made.begin(), made.end());
+  std::vector<FaceId> input_face_of(k_triangles.size(), kNoFace);
+  for (std::size_t i = 0, j = 0; i < input.size() && j < made.size();) {
+    if (input[i].first < made[j].first) {
+      ++i;
+    } else if (made[j].first < input[i].first) {
+      ++j;
+    } else {
+      input_face_of[made[j++].second] = input[i++].second;
+    }
+  }
+  // quads_from_matching makes one quad per matched edge, in order of its first triangle.
+  std::size_t q = 0;
+  for (FaceId t = 0; t < k_triangles.size(); ++t) {
+    const auto [t1, t2] = result.dual.endpoints(result.matching.mate_edge[t]);
+    if (t != t1) continue;
+    LrsQuad quad;
+    for (int k = 0; k < 4; ++k) quad.corners[k] = part.vertex_of[result.quads.quads[q][k]];
+    quad.sources = {input_face_of[t1], input_face_of[t2]};
+    pairing.lrs_quads.push_back(quad);
+    ++q;
+  }
+  for (NodeId v : nodes) pairing.partner[v] = kLrsNode;
+  return true;
+}
+
+// Closed components by `algorithm` (perfect, by Petersen's theorem), verified.
+void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
+                 const QuadOptions& options, Algorithm algorithm, TrianglePairing& pairing,
+                 QuadStats& stats, Stopwatch& clock) {
+  // No bridge test: a bridge would leave a set of triangles whose only boundary is one edge,
+  // but a boundary (mod 2) has no ends, and one edge has two.
+  Result result = perfect_matching(cubic, {.algorithm = algorithm,
+                                           .augment = options.augment,
+                                           .seed = options.seed,
+                                           .validate = false});
+  add_run(stats.matching, result.stats);
+  clock.lap();
+  if (MatchingCheck check = verify_perfect_matching(cubic, result.matching); !check.ok()) {
+    throw std::logic_error("internal error: " + std::string(to_string(algorithm)) +
+                           " returned a matching that is not perfect: " + check.message);
+  }
+  for (NodeId v = 0; v < cubic.node_count(); ++v) {
+    pairing.partner[node_of.empty() ? v : node_of[v]] =
+        node_of.empty() ? cubic.other_end(result.matching.mate_edge[v], v)
+                        : node_of[cubic.other_end(result.matching.mate_edge[v], v)];
+  }
+  stats.verify_seconds += clock.lap();
+}
+
+}  // namespace
+
+TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
+                               const QuadOptions& options, QuadStats& stats) {
+  Stopwatch clock;
+  TrianglePairing pairing;
+  const std::uint32_t n = graph.node_count;
+  pairing.partner.assign(n, kNoNode);
+  const Algorithm closed_algorithm =
+      options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
+
+  // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
+  // the cubic dual itself.
+  if (graph.cubic && options.algorithm != Algorithm::lrs) {
+    const Components components = components_of(graph);
+    stats.components = stats.closed_components = components.closed.size();
+    CubicGraph cubic =
+        CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
+    stats.dual_seconds += clock.lap();
+    pair_closed(cubic, {}, options, closed_algorithm, pairing, stats, clock);
+    stats.maximum_certified = true;
+    return pairing;
+  }
+
+  const Components components = components_of(graph);
+  stats.components = components.closed.size();
+  std::vector<NodeId> closed_nodes, open_nodes;
+  for (NodeId v = 0; v < n; ++v) {
+    (components.closed[components.of_node[v]] ? closed_nodes : open_nodes).push_back(v);
+  }
+  for (std::uint8_t closed : components.closed) stats.closed_components += closed;
+
+  if (options.algorithm == Algorithm::lrs && !closed_nodes.empty()) {
+    // Each closed component on its own; those lrs cannot take stay for ps.
+    std::vector<NodeId> by_component = closed_nodes;
+    std::stable_sort(by_component.begin(), by_component.end(), [&](NodeId a, NodeId b) {
+      return components.of_node[a] < components.of_node[b];
+    });
+    std::vector<VertexId> local(mesh.positions.size(), kNoNode);
+    std::vector<NodeId> left_for_ps;
+    for (std::size_t first = 0; first < by_component.size();) {
+      std::size_t last = first + 1;
+      const std::uint32_t c = components.of_node[by_component[first]];
+      while (last < by_component.size() && components.of_node[by_component[last]] == c) ++last;
+      const std::span<const NodeId> nodes(by_component.data() + first, last - first);
+      if (!pair_by_lrs(mesh, graph, nodes, options, local, pairing, stats)) {
+        left_for_ps.insert(left_for_ps.end(), nodes.begin(), nodes.end());
+      }
+      first = last;
+    }
+    std::sort(left_for_ps.begin(), left_for_ps.end());
+    closed_nodes = std::move(left_for_ps);
+    clock.lap();
+  }
+
+  if (!closed_nodes.empty()) {
+    Subgraph sub = induced(graph, std::move(closed_nodes));
+    HugeVector<EdgeId> node_edges(3 * sub.nodes.size());
+    std::vector<EdgeId> local_edge(graph.edge_count(), kNoEdge);
+    for (EdgeId i = 0; i < sub.edge_of.size(); ++i) local_edge[sub.edge_of[i]] = i;
+    for (NodeId i = 0; i < sub.nodes.size(); ++i) {
+      for (int k = 0; k < 3; ++k) {
+        node_edges[3 * std::size_t{i} + k] =
+            local_edge[graph.node_edges[3 * std::size_t{sub.nodes[i]} + k]];
+      }
+    }
+    const CubicGraph cubic =
+        CubicGraph::from_valid_incidence(std::move(node_edges), std::move(sub.edge_ends));
+    stats.dual_seconds += clock.lap();
+    pair_closed(cubic, sub.nodes, options, closed_algorithm, pairing, stats, clock);
+  }
+
+  if (!open_nodes.empty()) {
+    Subgraph sub = induced(graph, std::move(open_nodes));
+    std::vector<std::array<NodeId, 2>> edges(sub.edge_of.size());
+    for (EdgeId i = 0; i < edges.size(); ++i) {
+      edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
+    }
+    const CsrGraph open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
+    stats.dual_seconds += clock.lap();
+    MaximumMatchingResult result = maximum_matching(open, options.augment);
+    stats.matching.augmenting_paths += result.stats.augmenting_paths;
+    stats.matching.blossoms += result.stats.blossoms;
+    stats.matching.nodes_labelled += result.stats.nodes_labelled;
+    stats.matching.augment_seconds += clock.lap();
+    if (MatchingCheck check = verify_maximum_matching(open, result.matching, result.tutte_set);
+        !check.ok()) {
+      throw std::logic_error(
+          "internal error: the pairing of the open components is not proved "
+          "maximum: " +
+          check.message);
+    }
+    for (NodeId i = 0; i < sub.nodes.size(); ++i) {
+      const EdgeId e = result.matching.mate_edge[i];
+      if (e != kNoEdge) pairing.partner[sub.nodes[i]] = sub.nodes[open.other_end(e, i)];
+    }
+    for (NodeId i : result.tutte_set) pairing.tutte_set.push_back(sub.nodes[i]);
+    stats.verify_seconds += clock.lap();
+  }
+  stats.maximum_certified = true;
+  return pairing;
+}
+
+}  // namespace petersen::quad_detail

@@ -1,0 +1,191 @@
+#include "result_check.hpp"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "peers.hpp"
+#include "petersen/graph/csr_graph.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+
+namespace petersen::testing {
+
+namespace {
+
+using Edge = std::pair<VertexId, VertexId>;
+Edge edge(VertexId a, VertexId b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+std::map<Edge, std::vector<FaceId>> faces_by_edge(const PolygonMesh& mesh) {
+  std::map<Edge, std::vector<FaceId>> faces;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const auto c = mesh.face(f);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const VertexId a = c[k], b = c[(k + 1) % c.size()];
+      if (a != b) faces[edge(a, b)].push_back(f);
+    }
+  }
+  return faces;
+}
+
+bool is_triangle(const PolygonMesh& mesh, FaceId f) {
+  const auto c = mesh.face(f);
+  return c.size() == 3 && c[0] != c[1] && c[1] != c[2] && c[0] != c[2];
+}
+
+}  // namespace
+
+std::int64_t euler_characteristic(const PolygonMesh& mesh) {
+  std::set<VertexId> vertices(mesh.corners.begin(), mesh.corners.end());
+  return std::int64_t(vertices.size()) - std::int64_t(faces_by_edge(mesh).size()) +
+         std::int64_t(mesh.face_count());
+}
+
+std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
+                              bool flips_allowed) {
+  const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
+  // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
+  // repeated vertex, whose union has four vertices.
+  std::vector<NodeId> node_of(faces, kNoNode);
+  std::uint32_t nodes = 0;
+  for (FaceId f = 0; f < faces; ++f)
+    if (input.arity(f) == 3) node_of[f] = nodes++;
+  std::set<std::pair<FaceId, FaceId>> pairable;
+  std::vector<std::array<NodeId, 2>> edges;
+  for (const auto& [e, fs] : faces_by_edge(input)) {
+    if (fs.size() != 2 || fs[0] == fs[1] || !is_triangle(input, fs[0]) ||
+        !is_triangle(input, fs[1])) {
+      continue;
+    }
+    std::set<VertexId> four;
+    for (FaceId f : fs)
+      for (VertexId v : input.face(f)) four.insert(v);
+    if (four.size() != 4) continue;
+    pairable.insert({std::min(fs[0], fs[1]), std::max(fs[0], fs[1])});
+    edges.push_back({node_of[fs[0]], node_of[fs[1]]});
+  }
+  const std::uint32_t maximum = lemon_matching_size(nodes, edges);
+  if (maximum != boost_matching_size(nodes, edges)) return "LEMON and Boost disagree";
+
+  // Every input face used exactly once; the matching the quads make, on the test's own graph.
+  std::vector<int> uses(faces, 0);
+  std::vector<FaceId> partner(faces, kNoFace);
+  std::uint64_t pairs = 0, left = 0;
+  std::set<std::pair<FaceId, FaceId>> seen_pairs;
+  for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
+    const auto [f, g] = result.sources[o];
+    const auto out = result.mesh.face(o);
+    if ((f != kNoFace && f >= faces) || (g != kNoFace && g >= faces)) {
+      return "output face " + std::to_string(o) + " names a face out of range";
+    }
+    if (f == kNoFace || (g == kNoFace && out.size() == 4 && input.arity(f) == 3 && !all_quad)) {
+      // lrs: a quad with a triangle its flips made (no input face).
+      if (!flips_allowed) return "output face " + std::to_string(o) + " lacks an input face";
+      for (FaceId t : {f, g})
+        if (t != kNoFace && seen_pairs.insert({t, kNoFace}).second) ++uses[t];
+      continue;
+    }
+    if (g == kNoFace) {
+      // Kept or left: exactly the input face, unless all_quad split a left triangle.
+      const bool split = all_quad && out.size() != input.arity(f);
+      if (!split &&
+          !std::equal(out.begin(), out.end(), input.face(f).begin(), input.face(f).end())) {
+        return "output face " + std::to_string(o) + " differs from its input face " +
+               std::to_string(f);
+      }
+      if (seen_pairs.insert({f, kNoFace}).second) {
+        ++uses[f];
+        left += input.arity(f) == 3;
+      }
+      continue;
+    }
+    if (!seen_pairs.insert({std::min(f, g), std::max(f, g)}).second) continue;  // a split piece
+    ++uses[f];
+    ++uses[g];
+    ++pairs;
+    if (!pairable.count({std::min(f, g), std::max(f, g)})) {
+      return "faces " + std::to_string(f) + " and " + std::to_string(g) +
+             " are paired across a cut";
+    }
+    partner[f] = g;
+    partner[g] = f;
+    if (!all_quad) {
+      // The quad is the union of the two triangles, in f's orientation.
+      std::set<VertexId> quad(out.begin(), out.end()), both;
+      for (FaceId t : {f, g})
+        for (VertexId v : input.face(t)) both.insert(v);
+      if (out.size() != 4 || quad != both) return "quad " + std::to_string(o) + " is not its pair";
+      const auto t = input.face(f);
+      auto at = [&](VertexId v) { return std::find(out.begin(), out.end(), v) - out.begin(); };
+      for (int k = 0; k < 3; ++k) {
+        const auto i = at(t[k]), j = at(t[(k + 1) % 3]), l = at(t[(k + 2) % 3]);
+        // t's corners appear in the same cyclic order in the quad.
+        if (!((i < j && j < l) || (j < l && l < i) || (l < i && i < j))) {
+          return "quad " + std::to_string(o) + " does not follow triangle " + std::to_string(f);
+        }
+      }
+    }
+  }
+  for (FaceId f = 0; f < faces; ++f) {
+    if (uses[f] != 1 && !(flips_allowed && uses[f] == 0 && input.arity(f) == 3)) {
+      return "input face " + std::to_string(f) + " used " + std::to_string(uses[f]) + " times";
+    }
+  }
+  if (left != result.stats.triangles_left && !flips_allowed) {
+    return "triangles_left " + std::to_string(result.stats.triangles_left) + ", counted " +
+           std::to_string(left);
+  }
+  if (result.stats.triangles_left != nodes - 2 * maximum) {
+    return "triangles_left " + std::to_string(result.stats.triangles_left) +
+           " but the maximum leaves " + std::to_string(nodes - 2 * maximum);
+  }
+  if (!flips_allowed) {
+    if (pairs != result.stats.pairs) return "pair count differs";
+    // The witness proves the pairing maximum on the test's graph.
+    CsrGraph graph = CsrGraph::from_edges(nodes, edges);
+    Matching matching(nodes);
+    std::vector<FaceId> face_of_node(nodes);
+    for (FaceId f = 0; f < faces; ++f)
+      if (node_of[f] != kNoNode) face_of_node[node_of[f]] = f;
+    for (EdgeId e = 0; e < edges.size(); ++e) {
+      const auto [a, b] = edges[e];
+      if (partner[face_of_node[a]] == face_of_node[b])
+        matching.mate_edge[a] = matching.mate_edge[b] = e;
+    }
+    std::vector<NodeId> tutte;
+    for (FaceId f : result.tutte_set) tutte.push_back(node_of[f]);
+    if (MatchingCheck check = verify_maximum_matching(graph, matching, tutte); !check.ok()) {
+      return "witness: " + check.message;
+    }
+  }
+  if (all_quad) {
+    for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
+      const FaceId f = result.sources[o][0];
+      const bool kept_polygon =
+          result.sources[o][1] == kNoFace && f != kNoFace && input.arity(f) != 3;
+      if (!kept_polygon && result.mesh.arity(o) != 4) {
+        return "all-quad output face " + std::to_string(o) + " has " +
+               std::to_string(result.mesh.arity(o)) + " corners";
+      }
+    }
+    const auto in_edges = faces_by_edge(input);
+    for (const auto& [e, fs] : faces_by_edge(result.mesh)) {
+      const auto it = in_edges.find(e);
+      const std::size_t before = it == in_edges.end() ? 2 : it->second.size();
+      if (fs.size() > std::max<std::size_t>(2, before)) {
+        return "edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) + ") in " +
+               std::to_string(fs.size()) + " faces";
+      }
+    }
+    if (euler_characteristic(result.mesh) != euler_characteristic(input)) {
+      return "Euler characteristic changed";
+    }
+    for (std::size_t v = 0; v < input.positions.size(); ++v) {
+      if (result.mesh.positions[v] != input.positions[v]) return "an input vertex moved";
+    }
+  }
+  return {};
+}
+
+}  // namespace petersen::testing
