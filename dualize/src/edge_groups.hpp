@@ -71,3 +71,58 @@ inline EdgeGroups group_halfedges(const TriangleMesh& mesh,
 }
 
 }  // namespace petersen
+
+namespace petersen {
+
+/// The halfedges of a polygon mesh: halfedge h is corner h of the flat corner array, running to
+/// the next corner of its face. The face of each corner is kept only when some face is not a
+/// triangle (otherwise it is h / 3).
+class PolygonHalfedges {
+ public:
+  explicit PolygonHalfedges(const PolygonMesh& mesh) : mesh_(mesh) {
+    if (mesh.all_triangles()) return;
+    corner_face_.resize(mesh.corners.size());
+    for (FaceId f = 0; f < mesh.face_count(); ++f)
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+        corner_face_[c] = f;
+  }
+  std::uint32_t count() const { return static_cast<std::uint32_t>(mesh_.corners.size()); }
+  FaceId face(std::uint32_t h) const { return corner_face_.empty() ? h / 3 : corner_face_[h]; }
+  std::uint32_t first(FaceId f) const {
+    return mesh_.all_triangles() ? 3 * f : mesh_.face_start[f];
+  }
+  std::uint32_t next(std::uint32_t h) const {
+    const FaceId f = face(h);
+    return h + 1 == first(f) + mesh_.arity(f) ? first(f) : h + 1;
+  }
+  VertexId from(std::uint32_t h) const { return mesh_.corners[h]; }
+  VertexId to(std::uint32_t h) const { return mesh_.corners[next(h)]; }
+
+  /// The halfedges grouped by edge; a halfedge from a vertex to itself (inside a face that
+  /// repeats a vertex) lies on no edge and is left out.
+  EdgeGroups group() const {
+    return group_halfedges(
+        mesh_.positions.size(), count(), [&](std::uint32_t h) { return from(h); },
+        [&](std::uint32_t h) { return to(h); }, [&](std::uint32_t h) { return from(h) != to(h); });
+  }
+
+ private:
+  const PolygonMesh& mesh_;
+  HugeVector<FaceId> corner_face_;
+};
+
+/// Calls visit(first, end) for each edge's group of entries [first, end) in `groups`.
+template <class Visit>
+void for_each_edge_group(const EdgeGroups& groups, Visit visit) {
+  for (std::size_t v = 0; v + 1 < groups.start.size(); ++v) {
+    const std::uint32_t last = groups.start[v + 1];
+    for (std::uint32_t first = groups.start[v]; first != last;) {
+      std::uint32_t end = first + 1;
+      while (end != last && groups.entries[end][0] == groups.entries[first][0]) ++end;
+      visit(first, end);
+      first = end;
+    }
+  }
+}
+
+}  // namespace petersen

@@ -53,22 +53,7 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   const std::uint32_t halfedge_count = static_cast<std::uint32_t>(mesh.corners.size());
 
-  // Halfedge h is corner h of the flat corner array, running to the next corner of its face.
-  HugeVector<FaceId> corner_face;
-  if (!triangles_only) {
-    corner_face.resize(halfedge_count);
-    for (FaceId f = 0; f < face_count; ++f)
-      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
-        corner_face[c] = f;
-  }
-  auto face_of = [&](std::uint32_t h) { return triangles_only ? h / 3 : corner_face[h]; };
-  auto first_corner = [&](FaceId f) { return triangles_only ? 3 * f : mesh.face_start[f]; };
-  auto from = [&](std::uint32_t h) { return mesh.corners[h]; };
-  auto to = [&](std::uint32_t h) {
-    const FaceId f = face_of(h);
-    const std::uint32_t next = h + 1;
-    return mesh.corners[next == first_corner(f) + mesh.arity(f) ? first_corner(f) : next];
-  };
+  const PolygonHalfedges half(mesh);
 
   // Triangles become nodes in face order; a face repeating a vertex is degenerate.
   PairableGraph graph;
@@ -87,58 +72,35 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh) {
   }
   auto node_of = [&](FaceId f) { return triangles_only ? f : face_node[f]; };
 
-  // A halfedge from a vertex to itself (inside a degenerate face) lies on no edge.
-  EdgeGroups groups = group_halfedges(mesh.positions.size(), halfedge_count, from, to,
-                                      [&](std::uint32_t h) { return from(h) != to(h); });
+  const EdgeGroups groups = half.group();
   graph.node_edges.assign(3 * std::size_t{graph.node_count}, kNoEdge);
   HugeVector<NodeId>& ends = graph.edge_ends;
   ends.reserve(triangles_only ? halfedge_count : 0);
   auto cut = [&](CutCause cause) { ++graph.cuts.by_cause[static_cast<int>(cause)]; };
   const auto& entries = groups.entries;
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const std::uint32_t last = groups.start[v + 1];
-    for (std::uint32_t first = groups.start[v]; first != last;) {
-      std::uint32_t end = first + 1;
-      while (end != last && entries[end][0] == entries[first][0]) ++end;
-      ++graph.mesh_edges;
-      const std::uint32_t copies = end - first;
-      const std::uint32_t h1 = entries[first][1];
-      const std::uint32_t h2 = copies == 2 ? entries[first + 1][1] : 0;
-      first = end;
-      if (copies == 1) {
-        cut(CutCause::boundary);
-        continue;
-      }
-      if (copies > 2) {
-        cut(CutCause::non_manifold);
-        continue;
-      }
-      const FaceId f1 = face_of(h1), f2 = face_of(h2);
-      if (f1 == f2 || degenerate[f1] || degenerate[f2]) {
-        cut(CutCause::degenerate);
-        continue;
-      }
-      if (mesh.arity(f1) != 3 || mesh.arity(f2) != 3) {
-        cut(CutCause::polygon);
-        continue;
-      }
-      // The corner of each triangle opposite the shared edge: after its end.
-      const std::uint32_t k1 = h1 - first_corner(f1), k2 = h2 - first_corner(f2);
-      const VertexId opposite1 = mesh.corners[first_corner(f1) + (k1 + 2) % 3];
-      const VertexId opposite2 = mesh.corners[first_corner(f2) + (k2 + 2) % 3];
-      if (opposite1 == opposite2) {
-        cut(CutCause::duplicate);
-        continue;
-      }
-      graph.inconsistent_edges += from(h1) == from(h2);
-      const EdgeId e = graph.edge_count();
-      const NodeId n1 = node_of(f1), n2 = node_of(f2);
-      graph.node_edges[3 * std::size_t{n1} + k1] = e;
-      graph.node_edges[3 * std::size_t{n2} + k2] = e;
-      ends.push_back(n1);
-      ends.push_back(n2);
-    }
-  }
+  for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
+    ++graph.mesh_edges;
+    const std::uint32_t copies = end - first;
+    const std::uint32_t h1 = entries[first][1];
+    const std::uint32_t h2 = copies == 2 ? entries[first + 1][1] : 0;
+    if (copies == 1) return cut(CutCause::boundary);
+    if (copies > 2) return cut(CutCause::non_manifold);
+    const FaceId f1 = half.face(h1), f2 = half.face(h2);
+    if (f1 == f2 || degenerate[f1] || degenerate[f2]) return cut(CutCause::degenerate);
+    if (mesh.arity(f1) != 3 || mesh.arity(f2) != 3) return cut(CutCause::polygon);
+    // The corner of each triangle opposite the shared edge: after its end.
+    const std::uint32_t k1 = h1 - half.first(f1), k2 = h2 - half.first(f2);
+    const VertexId opposite1 = mesh.corners[half.first(f1) + (k1 + 2) % 3];
+    const VertexId opposite2 = mesh.corners[half.first(f2) + (k2 + 2) % 3];
+    if (opposite1 == opposite2) return cut(CutCause::duplicate);
+    graph.inconsistent_edges += half.from(h1) == half.from(h2);
+    const EdgeId e = graph.edge_count();
+    const NodeId n1 = node_of(f1), n2 = node_of(f2);
+    graph.node_edges[3 * std::size_t{n1} + k1] = e;
+    graph.node_edges[3 * std::size_t{n2} + k2] = e;
+    ends.push_back(n1);
+    ends.push_back(n2);
+  });
   graph.cubic = 2 * std::size_t{graph.edge_count()} == graph.node_edges.size();
   return graph;
 }

@@ -14,50 +14,28 @@ constexpr std::uint32_t kBlocked = 0xFFFFFFFEu;    // an edge of three or more f
 constexpr std::uint32_t kUnreached = 0xFFFFFFFFu;  // a face no search has reached
 constexpr std::uint32_t kStart = 0xFFFFFFFDu;      // the face a search starts from
 
-// The output mesh's halfedges (one per corner) and the face of each.
-struct Halfedges {
-  const PolygonMesh& mesh;
-  std::vector<FaceId> face;
+// The output mesh's halfedges with the twin of each: the other halfedge of an edge of exactly two
+// faces, kBoundary for an edge of one face, kBlocked otherwise.
+struct Halfedges : PolygonHalfedges {
   std::vector<std::uint32_t> twin;
-
-  std::uint32_t first(FaceId f) const { return mesh.all_triangles() ? 3 * f : mesh.face_start[f]; }
-  std::uint32_t next(std::uint32_t h) const {
-    const FaceId f = face[h];
-    return h + 1 == first(f) + mesh.arity(f) ? first(f) : h + 1;
-  }
-  VertexId from(std::uint32_t h) const { return mesh.corners[h]; }
-  VertexId to(std::uint32_t h) const { return mesh.corners[next(h)]; }
 };
 
 Halfedges halfedges_of(const PolygonMesh& mesh) {
-  Halfedges half{mesh, {}, {}};
-  const std::uint32_t count = static_cast<std::uint32_t>(mesh.corners.size());
-  half.face.resize(count);
-  for (FaceId f = 0; f < mesh.face_count(); ++f)
-    for (std::uint32_t k = 0; k < mesh.arity(f); ++k) half.face[half.first(f) + k] = f;
-  half.twin.assign(count, kBlocked);
-  const EdgeGroups groups = group_halfedges(
-      mesh.positions.size(), count, [&](std::uint32_t h) { return half.from(h); },
-      [&](std::uint32_t h) { return half.to(h); },
-      [&](std::uint32_t h) { return half.from(h) != half.to(h); });
-  for (std::size_t v = 0; v + 1 < groups.start.size(); ++v) {
-    const std::uint32_t last = groups.start[v + 1];
-    for (std::uint32_t first = groups.start[v]; first != last;) {
-      std::uint32_t end = first + 1;
-      while (end != last && groups.entries[end][0] == groups.entries[first][0]) ++end;
-      const std::uint32_t h1 = groups.entries[first][1];
-      if (end - first == 1) {
-        half.twin[h1] = kBoundary;
-      } else if (end - first == 2) {
-        const std::uint32_t h2 = groups.entries[first + 1][1];
-        if (half.face[h1] != half.face[h2]) {
-          half.twin[h1] = h2;
-          half.twin[h2] = h1;
-        }
+  Halfedges half{PolygonHalfedges(mesh), {}};
+  half.twin.assign(half.count(), kBlocked);
+  const EdgeGroups groups = half.group();
+  for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
+    const std::uint32_t h1 = groups.entries[first][1];
+    if (end - first == 1) {
+      half.twin[h1] = kBoundary;
+    } else if (end - first == 2) {
+      const std::uint32_t h2 = groups.entries[first + 1][1];
+      if (half.face(h1) != half.face(h2)) {
+        half.twin[h1] = h2;
+        half.twin[h2] = h1;
       }
-      first = end;
     }
-  }
+  });
   return half;
 }
 
@@ -133,7 +111,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
           exit = h;
           break;
         }
-        const FaceId g = half.face[half.twin[h]];
+        const FaceId g = half.face(half.twin[h]);
         if (used[g] || reached_by[g] != kUnreached) continue;
         if (kinds[g] == FaceKind::left) {
           reached_by[g] = half.twin[h];
@@ -163,7 +141,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
       const VertexId m = midpoint_of(entry);
       cross(f, entry, m);
       const std::uint32_t back = half.twin[entry];
-      const FaceId previous = half.face[back];
+      const FaceId previous = half.face(back);
       cross(previous, back, m);
       if (kinds[f] == FaceKind::pair) used[f] = 1;
       f = previous;
