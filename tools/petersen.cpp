@@ -5,14 +5,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
-#include "petersen/lrs/lrs.hpp"
-#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
 #include "run_report.hpp"
 
 namespace petersen::cli {
@@ -32,81 +29,46 @@ class Clock {
 };
 
 int info(const std::string& path) {
-  TriangleMesh mesh = read_triangle_mesh(path);
-  SurfaceReport report = inspect_surface(mesh);
-  std::fputs(describe(report).c_str(), stdout);
+  const PolygonMesh mesh = read_mesh(path);
+  std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
   return 0;
-}
-
-// The verifier is O(n): every answer is checked before anything is written.
-void verify_or_throw(const CubicGraph& graph, const Matching& matching,
-                     const std::string& algorithm) {
-  if (MatchingCheck check = verify_perfect_matching(graph, matching); !check.ok()) {
-    throw std::logic_error("internal error: " + algorithm +
-                           " returned a matching that is not perfect: " + check.message);
-  }
 }
 
 struct QuadArgs {
   std::string input, output, algorithm = "ps", augment = "local", stats_json;
   std::uint64_t seed = 1;
+  bool all_quad = false;
 };
 
-// Checks, matches, verifies and writes; MeshErrors are prefixed with the input by the caller.
-void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, Clock& total) {
-  Clock clock;
-  SurfaceReport surface = inspect_surface(mesh);
-  require_closed_surface(surface);
-  report.vertices = surface.vertices;
-  report.triangles = mesh.triangles.size();
-  report.genus = surface.genus.value_or(0);
-  report.components = surface.components;
-
-  QuadMesh quads;
-  auto augment = parse_augment(args.augment);
+int quad(const QuadArgs& args) {
+  const auto algorithm = parse_algorithm(args.algorithm);
+  if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
+  const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
-  report.augment = args.augment;
-  if (args.algorithm == "lrs") {
-    report.algorithm = "lrs";
-    LrsResult result = quadrangulate_lrs(mesh, {.augment = *augment});
-    report.initial_seconds = result.stats.contraction_seconds + result.stats.expansion_seconds;
-    report.unpaired_after_initial = result.stats.unpaired_after_expansion;
-    report.augment_seconds = result.stats.augment_seconds;
-    report.augmenting_paths = result.stats.augmenting_paths;
-    report.flipped_edges = result.stats.flipped_edges;
-    report.irreducible_vertices = result.stats.irreducible_vertices;
-    verify_or_throw(result.dual, result.matching, report.algorithm);
-    quads = std::move(result.quads);
-  } else {
-    auto algorithm = parse_algorithm(args.algorithm);
-    if (!algorithm) {
-      throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
-    }
-    report.algorithm = args.algorithm;
-    if (*algorithm != Algorithm::sg && *algorithm != Algorithm::ps) report.augment.clear();
-    clock.lap();
-    Dual dual = build_dual(mesh);
-    report.dual_seconds = clock.lap();
-    Result result = perfect_matching(
-        dual.graph,
-        {.algorithm = *algorithm, .augment = *augment, .seed = args.seed, .validate = false});
-    report.initial_seconds = result.stats.initial_seconds;
-    report.unpaired_after_initial = result.stats.unpaired_after_initial;
-    report.augment_seconds = result.stats.augment_seconds;
-    report.augmenting_paths = result.stats.augmenting_paths;
-    report.blossoms = result.stats.blossoms;
-    report.nodes_labelled = result.stats.nodes_labelled;
-    report.reductions = result.stats.reductions;
-    verify_or_throw(dual.graph, result.matching, report.algorithm);
-    quads = quads_from_matching(mesh, dual.graph, result.matching);
+  mesh_format_of(args.output);  // an unknown output format fails before any work
+  RunReport report;
+  report.input = args.input;
+  report.output = args.output;
+  report.algorithm = args.algorithm;
+  if (*algorithm == Algorithm::sg || *algorithm == Algorithm::ps || *algorithm == Algorithm::lrs) {
+    report.augment = args.augment;
   }
-  if (QuadCheck check = check_quad_mesh(mesh, quads); !check.ok()) {
-    throw std::logic_error("internal error: the quad mesh fails its check: " + check.problem);
+  Clock total, clock;
+  const PolygonMesh mesh = read_mesh(args.input);
+  report.load_seconds = clock.lap();
+  QuadResult result;
+  try {
+    result = quadrangulate(mesh, {.algorithm = *algorithm,
+                                  .augment = *augment,
+                                  .seed = args.seed,
+                                  .all_quad = args.all_quad});
+  } catch (const MeshError& e) {
+    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
+  report.quad = result.stats;
   clock.lap();
-  write_quad_mesh(args.output, quads);
+  write_mesh(args.output, result.mesh);
   report.write_seconds = clock.lap();
-  report.quads = quads.quads.size();
   report.total_seconds = total.lap();
   print_summary(stdout, report);
   if (!args.stats_json.empty()) {
@@ -114,21 +76,6 @@ void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, 
                                                          &std::fclose);
     if (!file) throw std::runtime_error("cannot write " + args.stats_json);
     write_json(file.get(), report);
-  }
-}
-
-int quad(const QuadArgs& args) {
-  RunReport report;
-  report.input = args.input;
-  report.output = args.output;
-  mesh_format_of(args.output);  // an unknown output format fails before any work
-  Clock total, clock;
-  TriangleMesh mesh = read_triangle_mesh(args.input);
-  report.load_seconds = clock.lap();
-  try {
-    convert(args, mesh, report, total);
-  } catch (const MeshError& e) {
-    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
   return 0;
 }
@@ -163,18 +110,19 @@ int main(int argc, char** argv) {
 
   std::string info_path;
   CLI::App* info_cmd = app.add_subcommand(
-      "info", "Print V, E, F, components, genus and what kind of surface a mesh is");
+      "info", "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
+              "orientability and genus");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
   QuadArgs quad_args;
   CLI::App* quad_cmd = app.add_subcommand(
-      "quad", "Convert a closed triangle mesh into a quad mesh on the same vertices");
-  quad_cmd
-      ->add_option("IN", quad_args.input, "closed triangle mesh: OFF, OBJ or PLY, optionally .gz")
-      ->required();
+      "quad",
+      "Pair the triangles of any mesh into quads (a certified maximum pairing; other polygons kept)");
+  quad_cmd->add_option("IN", quad_args.input, "mesh: OFF, OBJ or PLY, optionally .gz")->required();
   quad_cmd
       ->add_option("OUT", quad_args.output,
-                   "quad mesh to write; format from the extension (.off, .obj, .ply)")
+                   "mesh to write (written whole, then renamed into place); format from the "
+                   "extension (.off, .obj, .ply, optionally .gz)")
       ->required();
   quad_cmd->add_option("--algorithm", quad_args.algorithm, "sg, ps, ds, gw, frink, lemon or lrs")
       ->capture_default_str();
@@ -184,6 +132,8 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
       ->capture_default_str();
+  quad_cmd->add_flag("--all-quad", quad_args.all_quad,
+                     "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
                        "also write the summary as one JSON object to this file");
 
