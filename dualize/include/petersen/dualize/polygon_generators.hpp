@@ -45,7 +45,8 @@ PolygonMesh open_grid(std::uint32_t nx, std::uint32_t ny);
 /// merge, touch the boundary or touch one another at a vertex (a pinched vertex). The vertex
 /// array is kept unchanged (vertices may become unreferenced); the remaining faces keep their
 /// corners and their order. At least one face is always kept: a patch that would remove every
-/// remaining face is skipped. O(F + corners + holes·(patch corners·vertex degree)).
+/// remaining face is skipped. O(V + corners + holes·a·d) for maximum face arity a and vertex
+/// degree d.
 PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint64_t seed);
 
 /// Merges about `count` random groups of two or three edge-adjacent triangles into quads and
@@ -55,24 +56,26 @@ PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint6
 /// that finds no such neighbour stays a triangle, so fewer polygons may come out. V, E - merges,
 /// F - merges: χ, the boundary, orientability and components are unchanged. Faces that are not
 /// triangles are kept. The polygon takes the place of its seed triangle in the face order.
-/// O(corners·log(corners) + count·polygon corners).
+/// O(corners·log(corners) + count·log(corners)).
 PolygonMesh merge_into_polygons(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed);
 
 /// Adds `count` fins: each a new triangle on an existing edge (a, b) of a random face, with a new
 /// vertex off the edge (beside its midpoint, along the face's normal). The edge is chosen among
 /// those with two or more faces where any exists, so it ends up in three or more faces (a
 /// non-manifold edge); on a mesh with only boundary edges it becomes an ordinary edge of two
-/// faces. V + count, F + count, E + 2·count: χ is unchanged. O(F + corners·log(corners) + count).
+/// faces. V + count, F + count, E + 2·count: χ is unchanged. O(corners·log(corners) + count·a)
+/// for maximum face arity a.
 PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed);
 
 /// Makes up to `count` pinched vertices: each time, two random referenced vertices u and w whose
 /// closed face neighbourhoods are disjoint (no face holds both, no vertex shares a face with both)
-/// and untouched by earlier pinches are merged: w is renamed u in every face, w stays in the
-/// vertex array unreferenced. u's faces then form at least two fans touching only at u (on a
-/// closed surface, two cones sharing an apex). Each pinch lowers V and χ by one, leaves E and F
-/// unchanged, and joins two components into one when u and w were in different ones. Gives up
-/// after 16·count + 64 candidate pairs, so fewer pinches happen on small meshes.
-/// O(corners + count·(16 neighbourhood sizes)).
+/// and that lie in no earlier pinch's neighbourhoods are merged: w is renamed u in every face
+/// (so no edge or face is repeated and none degenerates), w stays in the vertex array
+/// unreferenced. u's faces then form at least two fans touching only at u (on a closed surface,
+/// two cones sharing an apex). Each pinch lowers V and χ by one, leaves E and F unchanged, and
+/// joins two components into one when u and w were in different ones. Gives up after
+/// 16·count + 64 candidate pairs, so fewer pinches happen on small meshes.
+/// O(V + corners + count·a·d) for maximum face arity a and vertex degree d.
 PolygonMesh pinch_vertices(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed);
 
 /// Reverses the corner order of min(count, F) distinct random faces: the mesh's orientation
