@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 
 namespace petersen {
@@ -242,22 +243,24 @@ bool links_are_cycles(const PolygonMesh& mesh) {
   return true;
 }
 
-// A closed simplicial non-orientable surface: each edge in exactly two triangles, links cycles,
-// no repeated triangle, no consistent orientation.
-void expect_closed_non_orientable(const PolygonMesh& mesh, std::int64_t euler) {
-  EXPECT_EQ(malformation(mesh), "");
+// What keeps the mesh from being a closed simplicial non-orientable connected surface of Euler
+// characteristic `euler` with distinct positions, or "": each edge in exactly two triangles,
+// links cycles, no repeated triangle, no consistent orientation.
+std::string closed_non_orientable_problem(const PolygonMesh& mesh, std::int64_t euler) {
+  if (const std::string problem = malformation(mesh); !problem.empty()) return problem;
+  if (!mesh.all_triangles()) return "not all triangles";
   const Census c = census(mesh);
-  EXPECT_TRUE(mesh.all_triangles());
-  EXPECT_EQ(c.boundary_edges, 0u);
-  EXPECT_EQ(c.non_manifold_edges, 0u);
-  EXPECT_EQ(2 * c.edges, 3 * c.faces) << "every edge in exactly two triangles";
-  EXPECT_EQ(c.euler(), euler);
-  EXPECT_EQ(c.components, 1u);
-  EXPECT_EQ(c.pinched_vertices, 0u);
-  EXPECT_FALSE(c.orientable);
-  EXPECT_TRUE(links_are_cycles(mesh));
-  EXPECT_EQ(repeated_faces(mesh), 0u);
-  EXPECT_EQ(coinciding_positions(mesh), 0u);
+  if (c.boundary_edges != 0 || c.non_manifold_edges != 0 || 2 * c.edges != 3 * c.faces) {
+    return "an edge not in exactly two triangles";
+  }
+  if (c.euler() != euler) return "Euler characteristic " + std::to_string(c.euler());
+  if (c.components != 1) return std::to_string(c.components) + " components";
+  if (c.pinched_vertices != 0) return "a pinched vertex";
+  if (c.orientable) return "orientable";
+  if (!links_are_cycles(mesh)) return "a vertex link that is not one cycle";
+  if (repeated_faces(mesh) != 0) return "a repeated triangle";
+  if (coinciding_positions(mesh) != 0) return "two vertices at one position";
+  return "";
 }
 
 bool same_arrays(const PolygonMesh& a, const PolygonMesh& b) {
@@ -277,12 +280,18 @@ TEST(KleinBottle, IsAClosedNonOrientableSimplicialSurfaceOfEulerCharacteristic0)
     for (std::uint32_t v = 3; v <= 7; ++v) {
       SCOPED_TRACE(testing::Message() << u << " x " << v);
       const PolygonMesh mesh = klein_bottle(u, v);
-      expect_closed_non_orientable(mesh, 0);
+      EXPECT_EQ(closed_non_orientable_problem(mesh, 0), "");
       EXPECT_EQ(census(mesh).vertices, std::size_t{u} * v);
       EXPECT_EQ(mesh.face_count(), 2 * std::size_t{u} * v);
     }
   }
-  expect_closed_non_orientable(klein_bottle(40, 25), 0);
+  EXPECT_EQ(closed_non_orientable_problem(klein_bottle(40, 25), 0), "");
+}
+
+RC_GTEST_PROP(KleinBottle, AnyGridOfThreeOrMoreASide, ()) {
+  const auto u = *rc::gen::inRange<std::uint32_t>(3, 50);
+  const auto v = *rc::gen::inRange<std::uint32_t>(3, 50);
+  RC_ASSERT(closed_non_orientable_problem(klein_bottle(u, v), 0) == "");
 }
 
 TEST(KleinBottle, RefusesGridsThatRepeatEdges) {
@@ -296,7 +305,7 @@ TEST(ProjectivePlane, IsAClosedNonOrientableSimplicialSurfaceOfEulerCharacterist
   for (std::uint32_t s = 0; s <= 4; ++s) {
     SCOPED_TRACE(s);
     const PolygonMesh mesh = projective_plane(s);
-    expect_closed_non_orientable(mesh, 1);
+    EXPECT_EQ(closed_non_orientable_problem(mesh, 1), "");
     EXPECT_EQ(mesh.face_count(), std::size_t{10} << (2 * s));
   }
   const Census minimal = census(projective_plane(0));
@@ -588,6 +597,27 @@ RC_GTEST_PROP(RandomMixedMesh, IsWellFormedAndDeterministic, ()) {
   RC_ASSERT(mesh.face_count() >= 1u);
   RC_ASSERT(repeated_faces(mesh) == 0u);
   RC_ASSERT(same_arrays(mesh, random_mixed_mesh(seed, size)));
+}
+
+// Two independent countings agree: this file's census and the library's surface check, on the
+// mixed meshes that are all triangles.
+RC_GTEST_PROP(RandomMixedMesh, CensusAgreesWithTheSurfaceCheck, ()) {
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const PolygonMesh mesh = random_mixed_mesh(seed, *rc::gen::inRange<std::uint32_t>(1, 1500));
+  RC_PRE(mesh.all_triangles());
+  const Census c = census(mesh);
+  const SurfaceReport r = inspect_surface(to_triangle_mesh(mesh));
+  RC_ASSERT(r.vertices == c.vertices);
+  RC_ASSERT(r.edges == c.edges);
+  RC_ASSERT(r.faces == c.faces);
+  RC_ASSERT(r.euler_characteristic == c.euler());
+  RC_ASSERT(r.boundary_edges.count == c.boundary_edges);
+  RC_ASSERT(r.non_manifold_edges.count == c.non_manifold_edges);
+  RC_ASSERT(r.inconsistent_edges.count == c.inconsistent_edges);
+  RC_ASSERT(r.pinched_vertices.count == c.pinched_vertices);
+  RC_ASSERT(r.components == c.components);
+  RC_ASSERT(r.duplicate_triangles.empty());
+  RC_ASSERT(r.degenerate_triangles.empty());
 }
 
 TEST(RandomMixedMesh, DrawsEveryKindOfMesh) {
