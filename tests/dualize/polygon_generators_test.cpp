@@ -14,6 +14,7 @@
 #include <set>
 #include <vector>
 
+#include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 
@@ -51,6 +52,7 @@ struct Census {
   std::size_t inconsistent_edges = 0;  // two faces run along it the same way
   std::size_t boundary_loops = 0;      // connected pieces of the boundary edges
   std::size_t components = 0;          // faces joined through shared vertices
+  std::size_t edge_components = 0;     // faces joined through shared edges
   std::size_t pinched_vertices = 0;    // faces around it form more than one edge-connected fan
   std::size_t non_triangles = 0;
   bool orientable = true;
@@ -97,7 +99,9 @@ Census census(const PolygonMesh& mesh) {
   c.edges = on_edge.size();
   std::set<VertexId> boundary_vertices;
   std::vector<std::vector<std::pair<std::size_t, bool>>> neighbours(faces.size());
+  UnionFind through_edges(faces.size());
   for (const auto& [edge, along] : on_edge) {
+    for (const auto& [f, from_smaller] : along) through_edges.join(along[0].first, f);
     if (along.size() == 1) {
       ++c.boundary_edges;
       boundary.join(edge.first, edge.second);
@@ -111,6 +115,9 @@ Census census(const PolygonMesh& mesh) {
       neighbours[along[1].first].push_back({along[0].first, same_way});
     }
   }
+  roots.clear();
+  for (std::size_t f = 0; f < faces.size(); ++f) roots.insert(through_edges.find(f));
+  c.edge_components = roots.size();
   roots.clear();
   for (VertexId v : boundary_vertices) roots.insert(boundary.find(v));
   c.boundary_loops = roots.size();
@@ -618,6 +625,28 @@ RC_GTEST_PROP(RandomMixedMesh, CensusAgreesWithTheSurfaceCheck, ()) {
   RC_ASSERT(r.components == c.components);
   RC_ASSERT(r.duplicate_triangles.empty());
   RC_ASSERT(r.degenerate_triangles.empty());
+}
+
+// And with inspect_mesh, on every mixed mesh, polygons included.
+RC_GTEST_PROP(RandomMixedMesh, CensusAgreesWithInspectMesh, ()) {
+  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
+  const PolygonMesh mesh = random_mixed_mesh(seed, *rc::gen::inRange<std::uint32_t>(1, 1500));
+  const Census c = census(mesh);
+  const MeshReport r = inspect_mesh(mesh);
+  RC_ASSERT(r.referenced_vertices == c.vertices);
+  RC_ASSERT(r.edges == c.edges);
+  RC_ASSERT(r.faces == c.faces);
+  RC_ASSERT(r.euler_characteristic == c.euler());
+  const auto triangles = r.faces_by_arity.find(3);
+  RC_ASSERT(r.faces - (triangles == r.faces_by_arity.end() ? 0 : triangles->second) ==
+            c.non_triangles);
+  RC_ASSERT(r.boundary_edges == c.boundary_edges);
+  RC_ASSERT(r.boundary_loops == c.boundary_loops);
+  RC_ASSERT(r.non_manifold_edges == c.non_manifold_edges);
+  RC_ASSERT(r.inconsistent_edges == c.inconsistent_edges);
+  RC_ASSERT(r.degenerate_faces == 0u);
+  RC_ASSERT(r.components == c.edge_components);
+  RC_ASSERT(r.orientable == c.orientable);
 }
 
 TEST(RandomMixedMesh, DrawsEveryKindOfMesh) {
