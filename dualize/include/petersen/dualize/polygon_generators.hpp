@@ -19,9 +19,10 @@ namespace petersen {
 /// rows close up with a reflection (row v is row 0 with column i renamed (u - i) mod u), each cell
 /// cut along one diagonal. Simplicial: no repeated triangle, every edge in exactly two triangles,
 /// every vertex link one 6-cycle. V = uv, E = 3uv, F = 2uv, χ = 0, no boundary. Positions are
-/// the figure-8 immersion (with its self-intersection circle pushed apart so that no two
-/// vertices coincide). Throws std::invalid_argument when u < 3 or v < 3 (smaller grids repeat
-/// edges) or when the mesh would pass 2^32 - 1 corners. O(uv).
+/// the figure-8 immersion, with its self-intersection circle pushed apart so that no two
+/// vertices coincide (checked for every grid up to 120 × 120, and 1000 × 1000). Throws
+/// std::invalid_argument when u < 3 or v < 3 (smaller grids repeat edges) or when the mesh would
+/// pass 2^32 - 1 corners. O(uv).
 PolygonMesh klein_bottle(std::uint32_t u, std::uint32_t v);
 
 /// A closed, non-orientable, connected triangulated real projective plane: the six-vertex
@@ -29,8 +30,8 @@ PolygonMesh klein_bottle(std::uint32_t u, std::uint32_t v);
 /// triangles), refined by `subdivision` rounds of 4-to-1 midpoint subdivision. Simplicial, every
 /// edge in exactly two triangles, χ = 1, F = 10·4^subdivision (an odd count without
 /// subdivision). Positions: each vertex is a point of the sphere (up to sign) mapped by Apéry's
-/// even quartic parametrization of Boy's surface; finite and pairwise distinct. Throws
-/// std::invalid_argument when subdivision > 12. O(F).
+/// even quartic parametrization of Boy's surface; finite and pairwise distinct (checked up to
+/// subdivision 7). Throws std::invalid_argument when subdivision > 12. O(F).
 PolygonMesh projective_plane(std::uint32_t subdivision);
 
 /// The planar rectangle [0, nx] × [0, ny] (z = 0) triangulated on the integer lattice, every
@@ -90,8 +91,8 @@ PolygonMesh concatenate(std::span<const PolygonMesh> meshes);
 /// thousand are meant), drawing every kind above: one to three components, each a closed
 /// orientable surface of random genus (random_closed_surface), a Klein bottle, a projective plane
 /// or an open grid; then, each with some probability, holes, polygons, fins, pinched vertices and
-/// flipped faces. Always at least one face; corners in range, no face with a repeated corner.
-/// O(size) expected.
+/// flipped faces. Always at least one face; corners in range, no face with a repeated corner, no
+/// two faces on the same set of vertices. O(size) expected.
 PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size);
 
 }  // namespace petersen
