@@ -1,4 +1,4 @@
-// petersen: triangle mesh of a closed surface -> all-quad mesh on the same vertices.
+// petersen: any mesh -> its triangles paired into quads on the same vertices; graphs -> matchings.
 
 #include <CLI/CLI.hpp>
 #include <chrono>
@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "petersen/dualize/mesh_report.hpp"
+#include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
@@ -81,17 +82,32 @@ int quad(const QuadArgs& args) {
 }
 
 struct GenerateArgs {
-  std::string output;
+  std::string output, kind = "plate";
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
+  std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
   bool dents = false;
   std::uint64_t seed = 1;
 };
 
-int generate(const GenerateArgs& args) {
+PolygonMesh generated_surface(const GenerateArgs& args) {
+  if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
+  if (args.kind == "projective") return projective_plane(args.subdivision);
+  if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
   TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
   }
+  return to_polygon_mesh(mesh);
+}
+
+int generate(const GenerateArgs& args) {
+  PolygonMesh surface = generated_surface(args);
+  // Each step with its own seed, so that asking for one does not change what another does.
+  if (args.holes > 0) surface = punch_holes(surface, args.holes, args.seed + 1);
+  if (args.fins > 0) surface = add_fins(surface, args.fins, args.seed + 2);
+  if (args.pinches > 0) surface = pinch_vertices(surface, args.pinches, args.seed + 3);
+  if (args.flip_faces > 0) surface = flip_faces(surface, args.flip_faces, args.seed + 4);
+  const TriangleMesh mesh = to_triangle_mesh(surface);
   write_triangle_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.triangles.size(),
               mesh.positions.size(), args.output.c_str());
@@ -138,13 +154,17 @@ int main(int argc, char** argv) {
                        "also write the summary as one JSON object to this file");
 
   GenerateArgs gen_args;
-  CLI::App* gen_cmd = app.add_subcommand("generate",
-                                         "Write a closed test triangulation: a voxel plate with "
-                                         "holes (genus holes-x*holes-y) or dents (genus 0)");
+  CLI::App* gen_cmd = app.add_subcommand(
+      "generate",
+      "Write a test triangulation: a voxel plate with holes (genus holes-x*holes-y) or dents "
+      "(genus 0), a Klein bottle, a projective plane or an open grid; optionally with holes, "
+      "fins, pinched vertices and flipped faces");
   gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")->required();
   gen_cmd->add_option("--holes-x", gen_args.holes_x)->capture_default_str();
   gen_cmd->add_option("--holes-y", gen_args.holes_y)->capture_default_str();
-  gen_cmd->add_option("--subdivision", gen_args.subdivision, "squares per voxel face side")
+  gen_cmd
+      ->add_option("--subdivision", gen_args.subdivision,
+                   "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
       ->capture_default_str();
   gen_cmd->add_flag("--dents", gen_args.dents, "cavities instead of through-holes (genus 0)");
   gen_cmd
@@ -153,6 +173,19 @@ int main(int argc, char** argv) {
   gen_cmd->add_option("--flips", gen_args.flips, "random edge flips, for irregularity")
       ->capture_default_str();
   gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
+  gen_cmd
+      ->add_option("--kind", gen_args.kind,
+                   "plate, klein (Klein bottle), projective (projective plane) or open-grid")
+      ->check(CLI::IsMember({"plate", "klein", "projective", "open-grid"}))
+      ->capture_default_str();
+  gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and open-grid")
+      ->capture_default_str();
+  gen_cmd->add_option("--ny", gen_args.ny, "grid rows of klein and open-grid")
+      ->capture_default_str();
+  gen_cmd->add_option("--holes", gen_args.holes, "random patches of faces to remove");
+  gen_cmd->add_option("--fins", gen_args.fins, "triangles to add on edges (non-manifold edges)");
+  gen_cmd->add_option("--pinches", gen_args.pinches, "vertex pairs to merge (pinched vertices)");
+  gen_cmd->add_option("--flip-faces", gen_args.flip_faces, "faces whose orientation to reverse");
 
   CLI11_PARSE(app, argc, argv);
   try {

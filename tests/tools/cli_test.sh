@@ -42,5 +42,18 @@ refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 
+# generate --kind: V and F of the OFF header are those of the generator's grid.
+for spec in "klein 20 40" "open-grid 30 40" "projective 21 40"; do
+  read -r kind vertices faces <<<"$spec"
+  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" --nx 5 \
+    --ny 4 --subdivision 1
+  header=$(sed -n 2p "$work/$kind.off")
+  [ "$header" = "$vertices $faces 0" ] || {
+    failed=$((failed + 1)); echo "FAILED: generate --kind $kind wrote header $header"; }
+done
+check "generate with holes, fins, pinches, flips" "$petersen" generate "$work/mixed.obj" \
+  --kind klein --holes 2 --fins 2 --pinches 1 --flip-faces 3 --seed 5
+refuses "an unknown kind" "torus" "$petersen" generate "$work/x.off" --kind torus
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
