@@ -66,7 +66,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   const std::string dir = std::string(PETERSEN_SHARED_MESHES) + "/invalid/";
-  for (const char* file : {"beetle.obj.gz", "cow.obj.gz", "stanford-bunny.obj.gz", "teapot.obj.gz"}) {
+  for (const char* file :
+       {"beetle.obj.gz", "cow.obj.gz", "stanford-bunny.obj.gz", "teapot.obj.gz"}) {
     if (std::filesystem::exists(dir + file)) run(file, read_mesh(dir + file));
   }
   run("open grid 1000x1000, 200 holes", punch_holes(open_grid(1000, 1000), 200, 1));

@@ -125,15 +125,16 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   std::string info_path;
-  CLI::App* info_cmd = app.add_subcommand(
-      "info", "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
-              "orientability and genus");
+  CLI::App* info_cmd =
+      app.add_subcommand("info",
+                         "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
+                         "orientability and genus");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
   QuadArgs quad_args;
-  CLI::App* quad_cmd = app.add_subcommand(
-      "quad",
-      "Pair the triangles of any mesh into quads (a certified maximum pairing; other polygons kept)");
+  CLI::App* quad_cmd = app.add_subcommand("quad",
+                                          "Pair the triangles of any mesh into quads (a certified "
+                                          "maximum pairing; other polygons kept)");
   quad_cmd->add_option("IN", quad_args.input, "mesh: OFF, OBJ or PLY, optionally .gz")->required();
   quad_cmd
       ->add_option("OUT", quad_args.output,

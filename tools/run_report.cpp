@@ -64,10 +64,11 @@ void print_summary(std::FILE* out, const RunReport& r) {
       out, "augment     %.4f s  paths %" PRIu64 "  blossoms %" PRIu64 "  labelled %" PRIu64 "\n",
       s.matching.augment_seconds, s.matching.augmenting_paths, s.matching.blossoms,
       s.matching.nodes_labelled);
-  if (s.matching.reductions > 0) std::fprintf(out, "reductions  %" PRIu64 "\n", s.matching.reductions);
+  if (s.matching.reductions > 0)
+    std::fprintf(out, "reductions  %" PRIu64 "\n", s.matching.reductions);
   if (r.algorithm == "lrs") {
-    std::fprintf(out, "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64
-                      " vertices\n",
+    std::fprintf(out,
+                 "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64 " vertices\n",
                  s.flipped_edges, s.irreducible_vertices);
   }
   std::fprintf(out, "verify      %.4f s  maximum %s\n", s.verify_seconds,
@@ -106,8 +107,8 @@ void write_json(std::FILE* out, const RunReport& r) {
   u("cut_edges", s.cuts.total());
   std::fprintf(out, "  \"cut_edges_by_cause\": {");
   for (int c = 0; c < kCutCauses; ++c) {
-    std::fprintf(out, "%s\"%s\": %" PRIu64, c ? ", " : "", std::string(to_string(CutCause(c))).c_str(),
-                 s.cuts.by_cause[c]);
+    std::fprintf(out, "%s\"%s\": %" PRIu64, c ? ", " : "",
+                 std::string(to_string(CutCause(c))).c_str(), s.cuts.by_cause[c]);
   }
   std::fprintf(out, "},\n");
   u("inconsistent_edges", s.inconsistent_edges);
