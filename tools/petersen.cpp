@@ -4,7 +4,9 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
+#include "keep_edges.hpp"
 #include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
@@ -39,6 +41,8 @@ struct QuadArgs {
   std::string input, output, algorithm = "ps", augment = "local", stats_json;
   std::uint64_t seed = 1;
   bool all_quad = false;
+  std::optional<double> sharp_angle;
+  std::string keep_edges;
 };
 
 int quad(const QuadArgs& args) {
@@ -56,13 +60,18 @@ int quad(const QuadArgs& args) {
   }
   Clock total, clock;
   const PolygonMesh mesh = read_mesh(args.input);
+  const std::vector<std::array<VertexId, 2>> keep_edges =
+      args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
+                              : read_keep_edges(args.keep_edges);
   report.load_seconds = clock.lap();
   QuadResult result;
   try {
-    result = quadrangulate(mesh, {.algorithm = *algorithm,
-                                  .augment = *augment,
-                                  .seed = args.seed,
-                                  .all_quad = args.all_quad});
+    result = quadrangulate(
+        mesh, {.algorithm = *algorithm,
+               .augment = *augment,
+               .seed = args.seed,
+               .all_quad = args.all_quad,
+               .cuts = {.sharp_angle_degrees = args.sharp_angle, .user_edges = keep_edges}});
   } catch (const MeshError& e) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
@@ -149,6 +158,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
       ->capture_default_str();
+  quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
+                       "never pair across an edge whose triangles fold by more than DEG degrees");
+  quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
+                       "never pair across these edges: a file of vertex id pairs, one per line");
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
