@@ -11,8 +11,11 @@
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/version.hpp"
 #include "run_report.hpp"
 
 namespace petersen::cli {
@@ -87,9 +90,11 @@ void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, 
     clock.lap();
     Dual dual = build_dual(mesh);
     report.dual_seconds = clock.lap();
-    Result result = perfect_matching(
-        dual.graph,
-        {.algorithm = *algorithm, .augment = *augment, .seed = args.seed, .validate = false});
+    Result result = perfect_matching(dual.graph, {.algorithm = *algorithm,
+                                                  .augment = *augment,
+                                                  .seed = args.seed,
+                                                  .validate = false,
+                                                  .peer = &lemon_peer::maximum_matching});
     report.initial_seconds = result.stats.initial_seconds;
     report.unpaired_after_initial = result.stats.unpaired_after_initial;
     report.augment_seconds = result.stats.augment_seconds;
@@ -156,10 +161,12 @@ int generate(const GenerateArgs& args) {
 
 int main(int argc, char** argv) {
   using namespace petersen::cli;
+  petersen::huge_pages::enable_pool_unless_switched_off();
   CLI::App app{
       "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
       "triangle meshes"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
 
   std::string info_path;
   CLI::App* info_cmd = app.add_subcommand(

@@ -9,6 +9,7 @@
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
 namespace petersen {
@@ -28,7 +29,8 @@ void check_pipeline(const TriangleMesh& mesh, std::uint32_t genus) {
       RC_ASSERT(dual.side(e, 0) == 3 * t + k || dual.side(e, 1) == 3 * t + k);
     }
   }
-  const Result result = perfect_matching(dual.graph, {.algorithm = Algorithm::lemon});
+  const Result result = perfect_matching(
+      dual.graph, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const MatchingCheck matching = verify_perfect_matching(dual.graph, result.matching);
   RC_ASSERT(matching.ok());
   const QuadCheck quads =

@@ -3,6 +3,7 @@
 
 #include "peers.hpp"
 #include "petersen/graph/generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
 namespace petersen {
@@ -59,6 +60,11 @@ TEST(Algorithms, NamesRoundTrip) {
   EXPECT_EQ(parse_augment("faithful"), Augment::faithful);
 }
 
+TEST(PerfectMatching, LemonNeedsTheCallersPeer) {
+  EXPECT_THROW(perfect_matching(petersen_graph(), {.algorithm = Algorithm::lemon}),
+               std::invalid_argument);
+}
+
 TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
   // Two theta-like blobs (K4 with a subdivided edge) joined by a bridge.
   std::vector<std::array<NodeId, 2>> edges;
@@ -68,7 +74,9 @@ TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
   }
   edges.push_back({4, 9});
   CubicGraph g = CubicGraph::from_edges(10, edges);
-  EXPECT_THROW(perfect_matching(g, {.algorithm = Algorithm::lemon}), GraphError);
+  EXPECT_THROW(
+      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching}),
+      GraphError);
 }
 
 std::vector<std::array<std::uint32_t, 2>> edge_list(const CubicGraph& g) {
@@ -80,7 +88,8 @@ std::vector<std::array<std::uint32_t, 2>> edge_list(const CubicGraph& g) {
 RC_GTEST_PROP(PerfectMatching, LemonIsPerfectAndAgreesWithBoost, ()) {
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 150) * 2;
   CubicGraph g = random_cubic_bridgeless(n, *rc::gen::arbitrary<std::uint64_t>());
-  Result result = perfect_matching(g, {.algorithm = Algorithm::lemon});
+  Result result =
+      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   MatchingCheck check = verify_perfect_matching(g, result.matching);
   RC_ASSERT(check.ok());
   RC_ASSERT(testing::boost_matching_size(n, edge_list(g)) == n / 2);

@@ -9,12 +9,15 @@
 #include <random>
 
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "result_check.hpp"
 
 namespace petersen {
 namespace {
 
 using testing::check_quad_result;
+
+constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
 
 constexpr Algorithm kAlgorithms[] = {Algorithm::sg, Algorithm::ps,    Algorithm::ds,
                                      Algorithm::gw, Algorithm::frink, Algorithm::lemon,
@@ -31,7 +34,8 @@ PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
 void expect_correct(const PolygonMesh& mesh, bool all_quad = false) {
   for (Algorithm algorithm : kAlgorithms) {
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad});
+    const QuadResult result =
+        quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad, .peer = kLemon});
     EXPECT_TRUE(result.stats.maximum_certified);
     EXPECT_EQ(check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs), "");
   }
@@ -96,7 +100,7 @@ TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
 TEST(Quadrangulate, ClosedMeshesArePerfect) {
   const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 40, 200, 5));
   for (Algorithm algorithm : kAlgorithms) {
-    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm});
+    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
     EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
     EXPECT_EQ(result.stats.pairs, mesh.face_count() / 2);
   }
@@ -162,12 +166,13 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnDamagedSurfaces, ()) {
       *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
   QuadResult result;
   try {
-    result = quadrangulate(mesh, {.algorithm = algorithm, .seed = seed, .all_quad = all_quad});
+    result = quadrangulate(
+        mesh, {.algorithm = algorithm, .seed = seed, .all_quad = all_quad, .peer = kLemon});
   } catch (const MeshError& e) {
     // all_quad may find a left triangle with nothing to reach; nothing else may fail.
     RC_ASSERT(all_quad);
     RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
-    result = quadrangulate(mesh, {.algorithm = algorithm, .seed = seed});
+    result = quadrangulate(mesh, {.algorithm = algorithm, .seed = seed, .peer = kLemon});
     RC_ASSERT(result.stats.triangles_left > 0);
     RC_TAG("all-quad refused");
     return;

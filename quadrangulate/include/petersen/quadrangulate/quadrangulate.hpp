@@ -40,6 +40,9 @@ struct QuadOptions {
   /// ends its path at a boundary edge instead. Input vertices never move and the surface's
   /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
   bool all_quad = false;
+  /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
+  /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
+  PeerMatcher peer = nullptr;
 };
 
 struct QuadStats {
