@@ -7,15 +7,14 @@
 
 #include <vector>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/matching/avoiding.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
 
-using testing::any_cubic_bridgeless;
 using testing::edge_list;
 
 constexpr ReductionChooser kChoosers[] = {ReductionChooser::frink, ReductionChooser::ds,
@@ -52,9 +51,9 @@ CubicGraph any_test_graph() {
                            2 * *rc::gen::inRange<std::uint32_t>(2, 8),
                            *rc::gen::arbitrary<std::uint64_t>());
     case 1:
-      return disjoint_union(any_cubic_bridgeless(), any_cubic_bridgeless());
+      return disjoint_union(*rc::gen::arbitrary<CubicGraph>(), *rc::gen::arbitrary<CubicGraph>());
     default:
-      return any_cubic_bridgeless();
+      return *rc::gen::arbitrary<CubicGraph>();
   }
 }
 

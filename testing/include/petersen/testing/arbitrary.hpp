@@ -12,6 +12,7 @@
 
 #include <rapidcheck.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <ostream>
@@ -95,15 +96,47 @@ inline rc::Gen<TriangleMesh> closed_triangulations_up_to(std::uint32_t max_genus
 /// necklaces of diamonds (2-edge cuts everywhere), prisms (k = 2 has parallel edges), the theta
 /// graph, K4, K3,3, the Petersen graph, and duals of closed triangulations of genus 0 to 30.
 inline rc::Gen<CubicGraph> cubic_bridgeless_graphs() {
-  return rc::gen::oneOf(
-      rc::gen::element(theta_graph(), complete_k4(), complete_k33(), petersen_graph()),
-      random_cubic_graphs(),
-      rc::gen::map(rc::gen::inRange<std::uint32_t>(1, 40),
-                   [](std::uint32_t k) { return necklace(k); }),
-      rc::gen::map(rc::gen::inRange<std::uint32_t>(2, 60),
-                   [](std::uint32_t k) { return prism(k); }),
-      rc::gen::map(closed_triangulations_up_to(30),
-                   [](const TriangleMesh& mesh) { return dual_graph(mesh); }));
+  // Half of the draws are duals of triangulations, the graphs petersen is mostly used on.
+  return rc::gen::weightedOneOf<CubicGraph>({
+      {1, rc::gen::element(theta_graph(), complete_k4(), complete_k33(), petersen_graph())},
+      {1, random_cubic_graphs()},
+      {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(1, 40),
+                       [](std::uint32_t k) { return necklace(k); })},
+      {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(2, 60),
+                       [](std::uint32_t k) { return prism(k); })},
+      {4, rc::gen::map(closed_triangulations_up_to(30),
+                       [](const TriangleMesh& mesh) { return dual_graph(mesh); })},
+  });
+}
+
+/// A multigraph of any degrees as an edge list (edge e joins edges[e][0] and edges[e][1]).
+struct EdgeListGraph {
+  std::uint32_t node_count = 0;
+  std::vector<std::array<NodeId, 2>> edges;
+};
+
+inline void showValue(const EdgeListGraph& graph, std::ostream& os) {
+  os << "graph with " << graph.node_count << " nodes, edges";
+  for (std::size_t e = 0; e < graph.edges.size(); ++e)
+    os << (e == 0 ? " " : ", ") << graph.edges[e][0] << '-' << graph.edges[e][1];
+}
+
+/// General multigraphs for the maximum-matching fallback: 1 to 79 nodes, isolated nodes,
+/// components of both parities (edges fall inside random blocks of nodes), parallel edges, any
+/// degrees, no loops.
+inline rc::Gen<EdgeListGraph> general_graphs() {
+  return rc::gen::exec([] {
+    EdgeListGraph g{*rc::gen::inRange<std::uint32_t>(1, 80), {}};
+    const auto m = *rc::gen::inRange<std::uint32_t>(0, 3 * g.node_count);
+    const auto block = *rc::gen::inRange<std::uint32_t>(1, g.node_count + 1);
+    for (std::uint32_t i = 0; i < m; ++i) {
+      const auto a = *rc::gen::inRange<std::uint32_t>(0, g.node_count);
+      const auto lo = a / block * block;
+      const auto b = *rc::gen::inRange<std::uint32_t>(lo, std::min(lo + block, g.node_count));
+      if (a != b) g.edges.push_back({a, b});
+    }
+    return g;
+  });
 }
 
 /// Cubic graphs with a planted bridge (see GraphWithBridge), halves of 2 to 2 + 2·size nodes.
