@@ -16,6 +16,7 @@
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/version.hpp"
+#include "match_command.hpp"
 #include "run_report.hpp"
 
 namespace petersen::cli {
@@ -211,11 +212,15 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
 
+  MatchArgs match_args;
+  CLI::App* match_cmd = add_match_command(app, match_args);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (info_cmd->parsed()) return info(info_path);
     if (quad_cmd->parsed()) return quad(quad_args);
     if (gen_cmd->parsed()) return generate(gen_args);
+    if (match_cmd->parsed()) return run_match(match_args);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

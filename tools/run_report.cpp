@@ -3,6 +3,8 @@
 #include <cinttypes>
 #include <string>
 
+#include "json_text.hpp"
+
 namespace petersen::cli {
 
 void print_summary(std::FILE* out, const RunReport& r) {
@@ -34,27 +36,6 @@ void print_summary(std::FILE* out, const RunReport& r) {
                r.write_seconds);
   std::fprintf(out, "total       %.4f s\n", r.total_seconds);
 }
-
-namespace {
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
-}
-
-}  // namespace
 
 void write_json(std::FILE* out, const RunReport& r) {
   std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"algorithm\": %s,\n",
