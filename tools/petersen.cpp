@@ -7,12 +7,16 @@
 #include <optional>
 
 #include "keep_edges.hpp"
+#include "match_command.hpp"
 #include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/version.hpp"
 #include "run_report.hpp"
 
 namespace petersen::cli {
@@ -71,7 +75,8 @@ int quad(const QuadArgs& args) {
                .augment = *augment,
                .seed = args.seed,
                .all_quad = args.all_quad,
-               .cuts = {.sharp_angle_degrees = args.sharp_angle, .user_edges = keep_edges}});
+               .cuts = {.sharp_angle_degrees = args.sharp_angle, .user_edges = keep_edges},
+               .peer = &lemon_peer::maximum_matching});
   } catch (const MeshError& e) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
@@ -128,10 +133,12 @@ int generate(const GenerateArgs& args) {
 
 int main(int argc, char** argv) {
   using namespace petersen::cli;
+  petersen::huge_pages::enable_pool_unless_switched_off();
   CLI::App app{
       "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
       "triangle meshes"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
 
   std::string info_path;
   CLI::App* info_cmd =
@@ -201,11 +208,15 @@ int main(int argc, char** argv) {
   gen_cmd->add_option("--pinches", gen_args.pinches, "vertex pairs to merge (pinched vertices)");
   gen_cmd->add_option("--flip-faces", gen_args.flip_faces, "faces whose orientation to reverse");
 
+  MatchArgs match_args;
+  CLI::App* match_cmd = add_match_command(app, match_args);
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (info_cmd->parsed()) return info(info_path);
     if (quad_cmd->parsed()) return quad(quad_args);
     if (gen_cmd->parsed()) return generate(gen_args);
+    if (match_cmd->parsed()) return run_match(match_args);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

@@ -35,6 +35,7 @@ void add_run(Stats& total, const Stats& run) {
   total.nodes_labelled += run.nodes_labelled;
   total.reductions += run.reductions;
   total.replacement_searches += run.replacement_searches;
+  total.cover_swaps += run.cover_swaps;
   for (int k = 0; k < 3; ++k) total.lift_cases[k] += run.lift_cases[k];
 }
 
@@ -226,7 +227,8 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
   Result result = perfect_matching(cubic, {.algorithm = algorithm,
                                            .augment = options.augment,
                                            .seed = options.seed,
-                                           .validate = false});
+                                           .validate = false,
+                                           .peer = options.peer});
   add_run(stats.matching, result.stats);
   clock.lap();
   if (MatchingCheck check = verify_perfect_matching(cubic, result.matching); !check.ok()) {

@@ -7,23 +7,22 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
 
-using testing::any_cubic_bridgeless;
 using testing::edge_list;
 
 constexpr Algorithm kGreedy[] = {Algorithm::sg, Algorithm::ps};
 constexpr Augment kVariants[] = {Augment::local, Augment::faithful};
 
 RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const auto edges = edge_list(g);
   const std::uint32_t lemon = testing::lemon_matching_size(g.node_count(), edges);
   const std::uint32_t boost = testing::boost_matching_size(g.node_count(), edges);
@@ -41,7 +40,7 @@ RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
 }
 
 RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const Options options{.algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps),
                         .augment = *rc::gen::element(Augment::local, Augment::faithful),
                         .seed = *rc::gen::arbitrary<std::uint64_t>()};
@@ -53,7 +52,7 @@ RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
 
 RC_GTEST_PROP(AugmentMatching, MakesTheEmptyMatchingPerfect, ()) {
   // No greedy start: every node is free, so the searches meet long paths and many blossoms.
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   for (Augment augment : kVariants) {
     Matching m(g.node_count());
     AugmentStats stats = augment_matching(g, m, augment);
@@ -76,26 +75,6 @@ TEST(AugmentMatching, FindsTheBlossomInThePetersenGraph) {
   }
 }
 
-// A general multigraph: some isolated nodes, odd components, parallel edges, any degrees.
-struct GeneralGraph {
-  std::uint32_t node_count;
-  std::vector<std::array<NodeId, 2>> edges;
-};
-
-GeneralGraph any_general_graph() {
-  GeneralGraph g{*rc::gen::inRange<std::uint32_t>(1, 80), {}};
-  const auto m = *rc::gen::inRange<std::uint32_t>(0, 3 * g.node_count);
-  // Edges fall inside random blocks of nodes, so components of every parity appear.
-  const auto block = *rc::gen::inRange<std::uint32_t>(1, g.node_count + 1);
-  for (std::uint32_t i = 0; i < m; ++i) {
-    const auto a = *rc::gen::inRange<std::uint32_t>(0, g.node_count);
-    const auto lo = a / block * block;
-    const auto b = *rc::gen::inRange<std::uint32_t>(lo, std::min(lo + block, g.node_count));
-    if (a != b) g.edges.push_back({a, b});
-  }
-  return g;
-}
-
 // A valid matching of a general graph: each matched node names an incident edge whose other end
 // names it too.
 bool is_valid_matching(const CsrGraph& g, const Matching& m) {
@@ -111,7 +90,7 @@ bool is_valid_matching(const CsrGraph& g, const Matching& m) {
 }
 
 RC_GTEST_PROP(MaximumMatching, ReachesLemonAndBoostOnGeneralGraphs, ()) {
-  const GeneralGraph input = any_general_graph();
+  const testing::EdgeListGraph input = *testing::general_graphs();
   CsrGraph g = CsrGraph::from_edges(input.node_count, input.edges);
   const std::uint32_t lemon = testing::lemon_matching_size(input.node_count, input.edges);
   RC_ASSERT(lemon == testing::boost_matching_size(input.node_count, input.edges));

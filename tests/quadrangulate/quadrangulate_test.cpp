@@ -8,12 +8,15 @@
 
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "result_check.hpp"
 
 namespace petersen {
 namespace {
 
 using testing::check_quad_result;
+
+constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
 
 constexpr Algorithm kAlgorithms[] = {Algorithm::sg, Algorithm::ps,    Algorithm::ds,
                                      Algorithm::gw, Algorithm::frink, Algorithm::lemon,
@@ -30,7 +33,8 @@ PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
 void expect_correct(const PolygonMesh& mesh, bool all_quad = false) {
   for (Algorithm algorithm : kAlgorithms) {
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad});
+    const QuadResult result =
+        quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad, .peer = kLemon});
     EXPECT_TRUE(result.stats.maximum_certified);
     EXPECT_EQ(check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs), "");
   }
@@ -95,7 +99,7 @@ TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
 TEST(Quadrangulate, ClosedMeshesArePerfect) {
   const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 40, 200, 5));
   for (Algorithm algorithm : kAlgorithms) {
-    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm});
+    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
     EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
     EXPECT_EQ(result.stats.pairs, mesh.face_count() / 2);
   }
@@ -109,7 +113,7 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
     expect_correct(mesh);
     expect_correct(mesh, /*all_quad=*/true);
     for (Algorithm algorithm : kAlgorithms) {
-      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm});
+      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
       EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
       EXPECT_EQ(result.stats.inconsistent_edges > 0, true);
       if (algorithm == Algorithm::lrs) {
@@ -150,7 +154,9 @@ TEST(Quadrangulate, ExtraCutsKeepTriangles) {
   EXPECT_EQ(left(flat, {.face_group = materials}, CutCause::group), 2u);
   EXPECT_EQ(left(flat, {.face_smoothing = materials}, CutCause::smoothing), 2u);
   const std::uint32_t wrong_size[] = {0};
-  EXPECT_THROW(quadrangulate(flat, {.cuts = {.face_material = wrong_size}}), MeshError);
+  CutOptions wrong;
+  wrong.face_material = wrong_size;
+  EXPECT_THROW(quadrangulate(flat, {.cuts = wrong}), MeshError);
 }
 
 // Random seams, materials, user edges and a fold threshold on mixed meshes: no pair crosses a
@@ -194,7 +200,8 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   const bool all_quad = *rc::gen::arbitrary<bool>();
   QuadResult result;
   try {
-    result = quadrangulate(mesh, {.algorithm = algorithm, .seed = seed, .all_quad = all_quad});
+    result = quadrangulate(
+        mesh, {.algorithm = algorithm, .seed = seed, .all_quad = all_quad, .peer = kLemon});
   } catch (const MeshError& e) {
     RC_ASSERT(all_quad);
     RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "petersen/dualize/read_mesh.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "result_check.hpp"
 
@@ -43,7 +44,7 @@ TEST(SharedMeshes, EveryMeshConvertsWithEveryAlgorithm) {
                                 Algorithm::lemon, Algorithm::lrs}) {
       if (!small && algorithm != Algorithm::ps && algorithm != Algorithm::lrs) continue;
       SCOPED_TRACE(std::string(to_string(algorithm)));
-      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm});
+      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
       EXPECT_TRUE(result.stats.maximum_certified);
       EXPECT_EQ(testing::check_quad_result(mesh, result, false, algorithm == Algorithm::lrs), "");
     }

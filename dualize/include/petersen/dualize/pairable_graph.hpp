@@ -47,11 +47,11 @@ struct CutCounts {
 /// Corner ids are per entry of PolygonMesh::corners, face ids per face: an edge is cut when its
 /// two faces disagree (different ids at one of its ends, or different face ids).
 struct CutOptions {
-  std::optional<double> sharp_angle_degrees;            ///< cut where the normals differ by more
-  std::span<const std::array<VertexId, 2>> user_edges;  ///< vertex pairs, either order
-  std::span<const std::uint32_t> corner_uv, corner_normal;
-  std::span<const std::uint32_t> face_material, face_group, face_object, face_smoothing,
-      face_property;
+  std::optional<double> sharp_angle_degrees = {};  ///< cut where the normals differ by more
+  std::span<const std::array<VertexId, 2>> user_edges = {};  ///< vertex pairs, either order
+  std::span<const std::uint32_t> corner_uv = {}, corner_normal = {};
+  std::span<const std::uint32_t> face_material = {}, face_group = {}, face_object = {},
+                                 face_smoothing = {}, face_property = {};
 };
 
 /// The pairable graph: one node per triangle of the mesh (nodes in face order), one edge per

@@ -43,7 +43,10 @@ struct QuadOptions {
   bool all_quad = false;
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
   /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
-  CutOptions cuts;
+  CutOptions cuts = {};
+  /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
+  /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
+  PeerMatcher peer = nullptr;
 };
 
 struct QuadStats {

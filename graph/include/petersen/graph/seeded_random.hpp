@@ -1,6 +1,7 @@
 #pragma once
-// The seeded generator behind every random choice of the greedy pairings: SplitMix64, so a seed
-// gives the same pairing on every platform and standard library.
+// The one seeded generator behind petersen's random choices (the greedy pairings' orders, the
+// random cubic graphs): SplitMix64 with its own bounded draws, so a seed gives the same result on
+// every platform and standard library (std::shuffle and std::uniform_int_distribution do not).
 
 #include <cstdint>
 
@@ -19,6 +20,11 @@ class SeededRandom {
   /// A value in [0, bound), by Lemire's multiply-shift (bias below bound / 2^32).
   std::uint32_t below(std::uint32_t bound) {
     return static_cast<std::uint32_t>(((next() >> 32) * bound) >> 32);
+  }
+  /// A value in [0, bound) for bounds past 2^32 (bias below bound / 2^64).
+  std::uint64_t below64(std::uint64_t bound) {
+    __extension__ using Wide = unsigned __int128;
+    return static_cast<std::uint64_t>((Wide{next()} * bound) >> 64);
   }
 
  private:
