@@ -19,4 +19,12 @@ void maximum_matching(std::uint32_t node_count,
                       const std::vector<std::array<std::uint32_t, 2>>& edges,
                       std::uint32_t* mate_edge, bool greedy_start = true);
 
+/// Minimum-cost perfect matching by LEMON's MaxWeightedPerfectMatching on the negated costs
+/// (O(n m log n)). Returns false when the graph has no perfect matching; otherwise writes the
+/// matched edge's index per node to mate_edge and the matching's cost to total_cost.
+bool min_cost_perfect_matching(std::uint32_t node_count,
+                               const std::vector<std::array<std::uint32_t, 2>>& edges,
+                               const std::vector<std::int64_t>& costs, std::uint32_t* mate_edge,
+                               std::int64_t& total_cost);
+
 }  // namespace petersen::lemon_adapter

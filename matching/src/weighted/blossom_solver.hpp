@@ -1,0 +1,571 @@
+#pragma once
+// Edmonds' primal-dual algorithm for minimum-cost perfect matching, one alternating tree at a
+// time, on any Graph with incident_edges(v), other_end(e, v) and endpoints(e).
+//
+// Duals are in the odd-cut form (see min_cost_matching.hpp) on doubled costs C(e) = 2·cost(e),
+// so every dual stays an integer: tree edges are tight, so all nodes of a tree have sums of the
+// same parity, and the slack of an edge between two even nodes, which shrinks twice as fast as
+// the others, is even.
+//
+// Blossoms: ids 0..n-1 are the nodes (trivial blossoms), ids n.. the shrunk odd cycles. A
+// nontrivial blossom keeps its children in cycle order from its base child c0, and conn[i], the
+// edge from child i to child i+1 (mod k), oriented (x in child i, y in child i+1); the edges
+// conn[1], conn[3], .. are matched, conn[0], conn[2], .. not. top[v] is v's outermost blossom,
+// inner[v] the sum of the duals of the sets strictly inside it that hold v, so the dual sum of v
+// (every set holding v) is inner[v] + the top blossom's dual.
+//
+// A search labels top-level blossoms even or odd and keeps one clock, delta: a labelled
+// blossom's dual is its stored value plus (even) or minus (odd) the time since its label. The
+// priority queue holds when each constraint meets zero: an edge from an even to an unlabelled
+// blossom (its slack, at rate 1), an edge between two even blossoms (half its slack), an odd
+// blossom's dual. Entries are not removed when they go stale; each is checked when it comes out
+// (the earliest key is never later than the true next event, since every event that speeds up
+// is queued again at its new time: a blossom becoming even is scanned, an expanded odd
+// blossom's children are scanned).
+
+#include <algorithm>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "petersen/matching/min_cost_matching.hpp"
+
+namespace petersen::weighted_detail {
+
+inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+
+template <class Graph>
+class BlossomSolver {
+ public:
+  BlossomSolver(const Graph& graph, std::span<const Cost> costs, HugeVector<EdgeId>& mate,
+                MinCostStats& stats)
+      : graph_(graph),
+        cost_(costs),
+        mate_(mate),
+        stats_(stats),
+        n_(graph.node_count()),
+        top_(n_),
+        inner_(n_, 0),
+        ids_(std::size_t{n_} + n_ / 2 + 1),
+        y_(ids_, 0),
+        since_(ids_, 0),
+        label_(ids_, kUnlabelled),
+        parent_(ids_, kNone),
+        base_(ids_),
+        tree_from_(ids_, kNone),
+        tree_to_(ids_, kNone),
+        tree_edge_(ids_, kNoEdge),
+        mark_(ids_, 0),
+        children_(ids_ - n_),
+        conn_(ids_ - n_) {
+    mate_.assign(n_, kNoEdge);
+    for (NodeId v = 0; v < n_; ++v) top_[v] = base_[v] = v;
+    for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
+    for (NodeId v = 0; v < n_; ++v)
+      if (graph_.incident_edges(v).empty())
+        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
+  }
+
+  /// Blossom V's greedy start: y_v = the cheapest cost at v (C/2), then each free node in id
+  /// order raises y_v by its smallest slack and takes a tight edge to a free neighbour.
+  void greedy_start() {
+    for (NodeId v = 0; v < n_; ++v) {
+      Cost cheapest = kNoCost;
+      for (EdgeId e : graph_.incident_edges(v)) cheapest = std::min(cheapest, cost_[e]);
+      y_[v] = cheapest;
+    }
+    for (NodeId v = 0; v < n_; ++v) {
+      if (mate_[v] != kNoEdge) continue;
+      Cost least = kNoCost;
+      for (EdgeId e : graph_.incident_edges(v)) {
+        least = std::min(least, 2 * cost_[e] - y_[v] - y_[graph_.other_end(e, v)]);
+      }
+      y_[v] += least;
+      for (EdgeId e : graph_.incident_edges(v)) {
+        const NodeId w = graph_.other_end(e, v);
+        if (mate_[w] == kNoEdge && 2 * cost_[e] - y_[v] - y_[w] == 0) {
+          mate_[v] = mate_[w] = e;
+          break;
+        }
+      }
+    }
+  }
+
+  /// One search per node still free, in id order. Throws GraphError when a search finds no
+  /// augmenting path: then the graph has no perfect matching.
+  void run() {
+    for (NodeId r = 0; r < n_; ++r) {
+      if (mate_[r] != kNoEdge) continue;
+      search(r);
+      ++stats_.searches;
+    }
+  }
+
+  /// The dual solution; run() must have returned.
+  MatchingCertificate certificate() const {
+    MatchingCertificate c;
+    c.node_dual.assign(y_.begin(), y_.begin() + n_);
+    std::vector<NodeId> members;
+    for (std::uint32_t b = n_; b < ids_; ++b) {
+      if (children_[b - n_].empty() || y_[b] == 0) continue;
+      members.clear();
+      leaves(b, members);
+      c.set_members.insert(c.set_members.end(), members.begin(), members.end());
+      c.set_offsets.push_back(static_cast<std::uint32_t>(c.set_members.size()));
+      c.set_dual.push_back(y_[b]);
+    }
+    return c;
+  }
+
+ private:
+  enum : std::uint8_t { kUnlabelled = 0, kEven = 1, kOdd = 2 };
+  enum : std::uint32_t { kEdgeEvent = 0, kExpandEvent = 1 };
+  static constexpr Cost kNoCost = INT64_MAX;
+
+  struct Conn {
+    NodeId x, y;  // x in child i, y in child i + 1
+    EdgeId e;
+  };
+  struct Event {
+    std::int64_t key;
+    std::uint32_t id;
+    std::uint32_t kind;
+    bool operator>(const Event& o) const { return key > o.key; }
+  };
+
+  // ---- duals
+
+  std::int64_t current_dual(std::uint32_t b) const {
+    switch (label_[b]) {
+      case kEven:
+        return y_[b] + (delta_ - since_[b]);
+      case kOdd:
+        return y_[b] - (delta_ - since_[b]);
+      default:
+        return y_[b];
+    }
+  }
+  std::int64_t dual_sum(NodeId v) const { return inner_[v] + current_dual(top_[v]); }
+  std::int64_t slack(EdgeId e, NodeId u, NodeId v) const {
+    return 2 * cost_[e] - dual_sum(u) - dual_sum(v);
+  }
+  // Stores b's current dual, so its label can change.
+  void settle(std::uint32_t b) {
+    y_[b] = current_dual(b);
+    since_[b] = delta_;
+  }
+
+  // ---- the queue
+
+  void push(std::int64_t key, std::uint32_t id, std::uint32_t kind) {
+    heap_.push_back({key, id, kind});
+    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    ++stats_.queue_pushes;
+  }
+
+  // ---- blossom structure
+
+  // Appends the nodes of blossom b to out.
+  void leaves(std::uint32_t b, std::vector<NodeId>& out) const {
+    if (b < n_) {
+      out.push_back(b);
+      return;
+    }
+    std::vector<std::uint32_t>& stack = leaf_stack_;
+    stack.assign(1, b);
+    while (!stack.empty()) {
+      const std::uint32_t c = stack.back();
+      stack.pop_back();
+      if (c < n_) {
+        out.push_back(c);
+      } else {
+        for (std::uint32_t d : children_[c - n_]) stack.push_back(d);
+      }
+    }
+  }
+
+  // The child of blossom b that holds node v.
+  std::uint32_t child_holding(std::uint32_t b, NodeId v) const {
+    std::uint32_t c = v;
+    while (parent_[c] != b) c = parent_[c];
+    return c;
+  }
+
+  std::uint32_t new_blossom() {
+    const std::uint32_t b = free_ids_.back();
+    free_ids_.pop_back();
+    return b;
+  }
+  void free_blossom(std::uint32_t b) {
+    children_[b - n_].clear();
+    conn_[b - n_].clear();
+    label_[b] = kUnlabelled;
+    parent_[b] = kNone;
+    y_[b] = 0;
+    free_ids_.push_back(b);
+  }
+
+  // ---- labels
+
+  void label_even(std::uint32_t b, NodeId from, NodeId to, EdgeId e) {
+    label_[b] = kEven;
+    since_[b] = delta_;
+    tree_from_[b] = from;
+    tree_to_[b] = to;
+    tree_edge_[b] = e;
+    touched_.push_back(b);
+    ++stats_.nodes_labelled;
+    scratch_.clear();
+    leaves(b, scratch_);
+    scan_even_nodes(scratch_);
+  }
+
+  void label_odd(std::uint32_t b, NodeId from, NodeId to, EdgeId e) {
+    label_[b] = kOdd;
+    since_[b] = delta_;
+    tree_from_[b] = from;
+    tree_to_[b] = to;
+    tree_edge_[b] = e;
+    touched_.push_back(b);
+    ++stats_.nodes_labelled;
+    if (b >= n_) push(delta_ + y_[b], b, kExpandEvent);
+  }
+
+  // Queues every edge from the given (now even) nodes to an even or unlabelled blossom.
+  void scan_even_nodes(const std::vector<NodeId>& nodes) {
+    for (NodeId x : nodes) {
+      const std::uint32_t bx = top_[x];
+      for (EdgeId e : graph_.incident_edges(x)) {
+        const NodeId w = graph_.other_end(e, x);
+        const std::uint32_t bw = top_[w];
+        if (bw == bx || label_[bw] == kOdd) continue;
+        const std::int64_t s = slack(e, x, w);
+        push(delta_ + (label_[bw] == kEven ? s / 2 : s), e, kEdgeEvent);
+      }
+    }
+  }
+
+  // Queues every edge from the given (now unlabelled) nodes to an even blossom.
+  void scan_unlabelled_nodes(const std::vector<NodeId>& nodes) {
+    for (NodeId x : nodes) {
+      for (EdgeId e : graph_.incident_edges(x)) {
+        const NodeId w = graph_.other_end(e, x);
+        if (label_[top_[w]] != kEven) continue;
+        push(delta_ + slack(e, x, w), e, kEdgeEvent);
+      }
+    }
+  }
+
+  // ---- one search
+
+  void search(NodeId root) {
+    delta_ = 0;
+    label_even(top_[root], kNone, root, kNoEdge);
+    for (;;) {
+      if (heap_.empty()) {
+        throw GraphError("no perfect matching: the alternating tree of node " +
+                         std::to_string(root) + " cannot grow");
+      }
+      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
+      const Event event = heap_.back();
+      heap_.pop_back();
+      if (event.key > delta_) {
+        delta_ = event.key;
+        ++stats_.dual_updates;
+      }
+      if (event.kind == kExpandEvent) {
+        const std::uint32_t b = event.id;
+        if (label_[b] != kOdd || parent_[b] != kNone) continue;
+        const std::int64_t d = current_dual(b);
+        if (d > 0) {
+          push(delta_ + d, b, kExpandEvent);
+        } else {
+          expand_odd(b);
+        }
+        continue;
+      }
+      const EdgeId e = event.id;
+      auto [u, v] = graph_.endpoints(e);
+      if (top_[u] == top_[v]) continue;
+      if (label_[top_[u]] != kEven) std::swap(u, v);
+      const std::uint32_t bu = top_[u], bv = top_[v];
+      if (label_[bu] != kEven || label_[bv] == kOdd) continue;
+      const std::int64_t s = slack(e, u, v);
+      if (label_[bv] == kEven) {
+        if (s > 0) {
+          push(delta_ + s / 2, e, kEdgeEvent);
+        } else {
+          shrink(u, v, e);
+        }
+      } else if (s > 0) {
+        push(delta_ + s, e, kEdgeEvent);
+      } else if (mate_[base_[bv]] == kNoEdge) {
+        augment(u, v, e);
+        break;
+      } else {
+        const NodeId b = base_[bv];
+        const EdgeId m = mate_[b];
+        const NodeId z = graph_.other_end(m, b);
+        label_odd(bv, u, v, e);
+        label_even(top_[z], b, z, m);
+      }
+    }
+    finish_search();
+  }
+
+  // Stores the duals of the tree's blossoms, clears the labels, and dissolves the top-level
+  // blossoms whose dual is zero (they constrain nothing; later searches see their children).
+  void finish_search() {
+    for (std::uint32_t b : touched_) {
+      if (label_[b] == kUnlabelled || parent_[b] != kNone) continue;
+      settle(b);
+      label_[b] = kUnlabelled;
+    }
+    for (std::uint32_t b : touched_) {
+      if (b >= n_ && !children_[b - n_].empty() && parent_[b] == kNone && y_[b] == 0) dissolve(b);
+    }
+    touched_.clear();
+    heap_.clear();
+  }
+
+  // Removes top-level unlabelled blossom b of dual zero, and its children of dual zero.
+  void dissolve(std::uint32_t b) {
+    std::vector<std::uint32_t> stack{b};
+    while (!stack.empty()) {
+      const std::uint32_t c = stack.back();
+      stack.pop_back();
+      for (std::uint32_t d : children_[c - n_]) {
+        parent_[d] = kNone;
+        scratch_.clear();
+        leaves(d, scratch_);
+        for (NodeId x : scratch_) {
+          top_[x] = d;
+          inner_[x] -= y_[d];
+        }
+        if (d >= n_ && y_[d] == 0) stack.push_back(d);
+      }
+      free_blossom(c);
+      ++stats_.blossoms_expanded;
+    }
+  }
+
+  // Edge e = (u, v) joins two even blossoms of the tree: shrink the cycle through their nearest
+  // common even ancestor into a new even blossom.
+  void shrink(NodeId u, NodeId v, EdgeId e) {
+    ++stats_.blossoms_shrunk;
+    const std::uint32_t bu = top_[u], bv = top_[v];
+    // Walk up from both sides alternately; the first blossom seen twice is the common one.
+    ++stamp_;
+    std::uint32_t a = bu, c = bv, lca = kNone;
+    while (lca == kNone) {
+      if (a != kNone) {
+        if (mark_[a] == stamp_) {
+          lca = a;
+          break;
+        }
+        mark_[a] = stamp_;
+        a = tree_edge_[a] == kNoEdge ? kNone : top_[tree_from_[top_[tree_from_[a]]]];
+      }
+      std::swap(a, c);
+    }
+    path_u_.clear();
+    path_v_.clear();
+    for (std::uint32_t x = bu; x != lca; x = top_[tree_from_[x]]) path_u_.push_back(x);
+    for (std::uint32_t x = bv; x != lca; x = top_[tree_from_[x]]) path_v_.push_back(x);
+
+    const std::uint32_t nb = new_blossom();
+    std::vector<std::uint32_t>& ch = children_[nb - n_];
+    std::vector<Conn>& conn = conn_[nb - n_];
+    ch.push_back(lca);
+    for (std::size_t i = path_u_.size(); i-- > 0;) {
+      const std::uint32_t x = path_u_[i];
+      conn.push_back({tree_from_[x], tree_to_[x], tree_edge_[x]});
+      ch.push_back(x);
+    }
+    conn.push_back({u, v, e});
+    for (std::uint32_t x : path_v_) {
+      ch.push_back(x);
+      conn.push_back({tree_to_[x], tree_from_[x], tree_edge_[x]});
+    }
+
+    base_[nb] = base_[lca];
+    parent_[nb] = kNone;
+    y_[nb] = 0;
+    label_[nb] = kEven;
+    since_[nb] = delta_;
+    tree_from_[nb] = tree_from_[lca];
+    tree_to_[nb] = tree_to_[lca];
+    tree_edge_[nb] = tree_edge_[lca];
+    touched_.push_back(nb);
+
+    odd_nodes_.clear();
+    for (std::uint32_t c2 : ch) {
+      const bool was_odd = label_[c2] == kOdd;
+      settle(c2);
+      label_[c2] = kUnlabelled;
+      parent_[c2] = nb;
+      scratch_.clear();
+      leaves(c2, scratch_);
+      for (NodeId x : scratch_) {
+        inner_[x] += y_[c2];
+        top_[x] = nb;
+      }
+      if (was_odd) odd_nodes_.insert(odd_nodes_.end(), scratch_.begin(), scratch_.end());
+    }
+    scan_even_nodes(odd_nodes_);
+  }
+
+  // Odd blossom b's dual reached zero: its children along the even side of the cycle, from the
+  // one the tree enters by to the base, take b's place in the tree; the others become unlabelled.
+  void expand_odd(std::uint32_t b) {
+    ++stats_.blossoms_expanded;
+    std::vector<std::uint32_t> ch = std::move(children_[b - n_]);
+    std::vector<Conn> conn = std::move(conn_[b - n_]);
+    const std::size_t k = ch.size();
+    for (std::uint32_t c : ch) {
+      parent_[c] = kNone;
+      scratch_.clear();
+      leaves(c, scratch_);
+      for (NodeId x : scratch_) {
+        top_[x] = c;
+        inner_[x] -= y_[c];
+      }
+    }
+    const std::uint32_t entry = top_[tree_to_[b]];
+    const std::size_t j =
+        static_cast<std::size_t>(std::find(ch.begin(), ch.end(), entry) - ch.begin());
+    const NodeId from = tree_from_[b], to = tree_to_[b];
+    const EdgeId edge = tree_edge_[b];
+    free_blossom(b);
+
+    // The path from the entry child to the base child: backward when j is even, else forward.
+    ++stamp_;
+    std::vector<std::uint32_t> even_children;
+    std::size_t i = j;
+    mark_[ch[i]] = stamp_;
+    label_odd(ch[i], from, to, edge);
+    bool next_even = true;
+    while (i != 0) {
+      std::size_t next;
+      Conn c;
+      if (j % 2 == 0) {
+        next = i - 1;
+        c = {conn[next].y, conn[next].x, conn[next].e};  // x on the side of ch[i]
+      } else {
+        next = (i + 1) % k;
+        c = conn[i];
+      }
+      // c.x is in ch[i] (the tree parent), c.y in ch[next].
+      mark_[ch[next]] = stamp_;
+      if (next_even) {
+        label_[ch[next]] = kEven;
+        since_[ch[next]] = delta_;
+        tree_from_[ch[next]] = c.x;
+        tree_to_[ch[next]] = c.y;
+        tree_edge_[ch[next]] = c.e;
+        touched_.push_back(ch[next]);
+        ++stats_.nodes_labelled;
+        even_children.push_back(ch[next]);
+      } else {
+        label_odd(ch[next], c.x, c.y, c.e);
+      }
+      next_even = !next_even;
+      i = next;
+    }
+    scratch_.clear();
+    for (std::uint32_t c : even_children) leaves(c, scratch_);
+    scan_even_nodes(scratch_);
+    scratch_.clear();
+    for (std::uint32_t c : ch)
+      if (mark_[c] != stamp_) leaves(c, scratch_);
+    scan_unlabelled_nodes(scratch_);
+  }
+
+  // ---- augmentation
+
+  // Edge e = (u, v) joins even u to v in an unlabelled blossom with a free base.
+  void augment(NodeId u, NodeId v, EdgeId e) {
+    rebase(top_[v], v);
+    mate_[v] = e;
+    NodeId s = u;
+    EdgeId along = e;
+    for (;;) {
+      const std::uint32_t bs = top_[s];
+      rebase(bs, s);
+      mate_[s] = along;
+      if (tree_edge_[bs] == kNoEdge) break;  // the root
+      const std::uint32_t bt = top_[tree_from_[bs]];
+      rebase(bt, tree_to_[bt]);
+      mate_[tree_to_[bt]] = tree_edge_[bt];
+      s = tree_from_[bt];
+      along = tree_edge_[bt];
+    }
+  }
+
+  // Makes node v the base of blossom b, flipping the matched edges on the even side of each
+  // cycle between v's child and the base child, level by level (an explicit stack).
+  void rebase(std::uint32_t b, NodeId v) {
+    if (b < n_) return;
+    rebase_stack_.assign(1, {b, v});
+    while (!rebase_stack_.empty()) {
+      auto [blossom, node] = rebase_stack_.back();
+      rebase_stack_.pop_back();
+      std::vector<std::uint32_t>& ch = children_[blossom - n_];
+      std::vector<Conn>& conn = conn_[blossom - n_];
+      const std::size_t k = ch.size();
+      const std::uint32_t c = child_holding(blossom, node);
+      const std::size_t j =
+          static_cast<std::size_t>(std::find(ch.begin(), ch.end(), c) - ch.begin());
+      if (c >= n_) rebase_stack_.push_back({c, node});
+      auto match = [&](std::size_t i) {
+        const Conn& cn = conn[i];
+        mate_[cn.x] = mate_[cn.y] = cn.e;
+        if (ch[i] >= n_) rebase_stack_.push_back({ch[i], cn.x});
+        const std::uint32_t d = ch[(i + 1) % k];
+        if (d >= n_) rebase_stack_.push_back({d, cn.y});
+      };
+      if (j % 2 == 0) {
+        for (std::size_t i = 0; i + 1 < j; i += 2) match(i);
+      } else {
+        for (std::size_t i = j + 1; i < k; i += 2) match(i);
+      }
+      std::rotate(ch.begin(), ch.begin() + static_cast<std::ptrdiff_t>(j), ch.end());
+      std::rotate(conn.begin(), conn.begin() + static_cast<std::ptrdiff_t>(j), conn.end());
+      base_[blossom] = node;
+    }
+  }
+
+  const Graph& graph_;
+  std::span<const Cost> cost_;
+  HugeVector<EdgeId>& mate_;
+  MinCostStats& stats_;
+  std::uint32_t n_;
+  std::vector<std::uint32_t> top_;
+  std::vector<std::int64_t> inner_;
+  std::size_t ids_;
+  std::vector<std::int64_t> y_;
+  std::vector<std::int64_t> since_;
+  std::vector<std::uint8_t> label_;
+  std::vector<std::uint32_t> parent_;
+  std::vector<NodeId> base_;
+  std::vector<NodeId> tree_from_;  // the node in the tree parent
+  std::vector<NodeId> tree_to_;    // the node in this blossom
+  std::vector<EdgeId> tree_edge_;
+  std::vector<std::uint32_t> mark_;
+  std::uint32_t stamp_ = 0;
+  std::vector<std::vector<std::uint32_t>> children_;
+  std::vector<std::vector<Conn>> conn_;
+  std::vector<std::uint32_t> free_ids_;
+  std::int64_t delta_ = 0;
+  std::vector<Event> heap_;
+  std::vector<std::uint32_t> touched_;
+  std::vector<NodeId> scratch_;
+  std::vector<NodeId> odd_nodes_;
+  std::vector<std::uint32_t> path_u_, path_v_;
+  mutable std::vector<std::uint32_t> leaf_stack_;
+  std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
+};
+
+}  // namespace petersen::weighted_detail
