@@ -204,10 +204,22 @@ RC_GTEST_PROP(MinCostVerifier, RejectsPerturbedDuals, ()) {
   }
   if (r.certificate.set_count() > 0) {
     const std::size_t s = *rc::gen::inRange<std::size_t>(0, r.certificate.set_count());
-    {  // a broken blossom: one member fewer (an even set)
+    {  // a broken blossom: one member moved out to the enclosing set (an even set)
       MatchingCertificate c = r.certificate;
-      c.set_members.erase(c.set_members.begin() + c.set_offsets[s]);
-      for (std::size_t i = s + 1; i < c.set_offsets.size(); ++i) --c.set_offsets[i];
+      auto holds = [&](NodeId v) {
+        for (std::uint32_t at = c.node_set[v]; at != kNoSet; at = c.set_parent[at])
+          if (at == s) return true;
+        return false;
+      };
+      NodeId member = 0;
+      while (!holds(member)) ++member;
+      // Out of s and of every set between it and the node: those sets all turn even.
+      c.node_set[member] = c.set_parent[s];
+      RC_ASSERT(!check(r.matching, c).ok());
+    }
+    {  // a cycle of sets
+      MatchingCertificate c = r.certificate;
+      c.set_parent[s] = static_cast<std::uint32_t>(s);
       RC_ASSERT(!check(r.matching, c).ok());
     }
     {  // a blossom's dual moved to a node: same objective, infeasible or not tight somewhere

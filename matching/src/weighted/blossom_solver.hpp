@@ -10,9 +10,15 @@
 // Blossoms: ids 0..n-1 are the nodes (trivial blossoms), ids n.. the shrunk odd cycles. A
 // nontrivial blossom keeps its children in cycle order from its base child c0, and conn[i], the
 // edge from child i to child i+1 (mod k), oriented (x in child i, y in child i+1); the edges
-// conn[1], conn[3], .. are matched, conn[0], conn[2], .. not. top[v] is v's outermost blossom,
-// inner[v] the sum of the duals of the sets strictly inside it that hold v, so the dual sum of v
-// (every set holding v) is inner[v] + the top blossom's dual.
+// conn[1], conn[3], .. are matched, conn[0], conn[2], .. not.
+//
+// Each node keeps a hint of its outermost blossom, top_hint[v] (some blossom holding v), and
+// inner[v], the sum of the duals of the sets holding v strictly inside the hint: the dual sum of
+// v (every set holding v) is inner[v] plus the duals met walking parents from the hint to the
+// top, plus the top's dual. A walk moves the hint up to the top. Shrinking and dissolving so
+// touch no node (updating every node of a new blossom made the first version quadratic: 60 % of
+// its time on the 7k-triangle bunny went to listing blossom nodes); a freed blossom id bumps its
+// generation, which invalidates the hints naming it, and those nodes walk again from themselves.
 //
 // A search labels top-level blossoms even or odd and keeps one clock, delta: a labelled
 // blossom's dual is its stored value plus (even) or minus (odd) the time since its label. The
@@ -47,6 +53,7 @@ class BlossomSolver {
         stats_(stats),
         n_(graph.node_count()),
         top_(n_),
+        top_generation_(n_, 0),
         inner_(n_, 0),
         ids_(std::size_t{n_} + n_ / 2 + 1),
         y_(ids_, 0),
@@ -58,6 +65,7 @@ class BlossomSolver {
         tree_to_(ids_, kNone),
         tree_edge_(ids_, kNoEdge),
         mark_(ids_, 0),
+        generation_(ids_, 0),
         children_(ids_ - n_),
         conn_(ids_ - n_) {
     mate_.assign(n_, kNoEdge);
@@ -103,19 +111,41 @@ class BlossomSolver {
     }
   }
 
-  /// The dual solution; run() must have returned.
+  /// The dual solution; run() must have returned. O(n).
   MatchingCertificate certificate() const {
     MatchingCertificate c;
     c.node_dual.assign(y_.begin(), y_.begin() + n_);
-    std::vector<NodeId> members;
+    std::vector<std::uint32_t> index(ids_, kNoSet);
     for (std::uint32_t b = n_; b < ids_; ++b) {
       if (children_[b - n_].empty() || y_[b] == 0) continue;
-      members.clear();
-      leaves(b, members);
-      c.set_members.insert(c.set_members.end(), members.begin(), members.end());
-      c.set_offsets.push_back(static_cast<std::uint32_t>(c.set_members.size()));
+      index[b] = static_cast<std::uint32_t>(c.set_dual.size());
       c.set_dual.push_back(y_[b]);
     }
+    // above[x]: the innermost set strictly holding blossom x; filled by walking up to a known
+    // entry (or the top), then back down the walked chain.
+    constexpr std::uint32_t kUnknown = kNoSet - 1;
+    std::vector<std::uint32_t> above(ids_, kUnknown);
+    std::vector<std::uint32_t> chain;
+    auto set_above = [&](std::uint32_t x) {
+      chain.clear();
+      for (std::uint32_t at = x; above[at] == kUnknown; at = parent_[at]) {
+        if (parent_[at] == kNone) {
+          above[at] = kNoSet;
+          break;
+        }
+        chain.push_back(at);
+      }
+      for (std::size_t i = chain.size(); i-- > 0;) {
+        const std::uint32_t p = parent_[chain[i]];
+        above[chain[i]] = index[p] != kNoSet ? index[p] : above[p];
+      }
+      return above[x];
+    };
+    c.node_set.resize(n_);
+    for (NodeId v = 0; v < n_; ++v) c.node_set[v] = set_above(v);
+    c.set_parent.resize(c.set_dual.size());
+    for (std::uint32_t b = n_; b < ids_; ++b)
+      if (index[b] != kNoSet) c.set_parent[index[b]] = set_above(b);
     return c;
   }
 
@@ -147,8 +177,26 @@ class BlossomSolver {
         return y_[b];
     }
   }
-  std::int64_t dual_sum(NodeId v) const { return inner_[v] + current_dual(top_[v]); }
-  std::int64_t slack(EdgeId e, NodeId u, NodeId v) const {
+  // v's outermost blossom; moves v's hint there (see the top of the file).
+  std::uint32_t top(NodeId v) {
+    std::uint32_t x = top_[v];
+    if (generation_[x] != top_generation_[v]) {
+      x = v;
+      inner_[v] = 0;
+    }
+    while (parent_[x] != kNone) {
+      inner_[v] += y_[x];
+      x = parent_[x];
+    }
+    top_[v] = x;
+    top_generation_[v] = generation_[x];
+    return x;
+  }
+  std::int64_t dual_sum(NodeId v) {
+    const std::uint32_t t = top(v);
+    return inner_[v] + current_dual(t);
+  }
+  std::int64_t slack(EdgeId e, NodeId u, NodeId v) {
     return 2 * cost_[e] - dual_sum(u) - dual_sum(v);
   }
   // Stores b's current dual, so its label can change.
@@ -204,6 +252,7 @@ class BlossomSolver {
     label_[b] = kUnlabelled;
     parent_[b] = kNone;
     y_[b] = 0;
+    ++generation_[b];
     free_ids_.push_back(b);
   }
 
@@ -217,9 +266,7 @@ class BlossomSolver {
     tree_edge_[b] = e;
     touched_.push_back(b);
     ++stats_.nodes_labelled;
-    scratch_.clear();
-    leaves(b, scratch_);
-    scan_even_nodes(scratch_);
+    scan_even(b);
   }
 
   void label_odd(std::uint32_t b, NodeId from, NodeId to, EdgeId e) {
@@ -233,13 +280,18 @@ class BlossomSolver {
     if (b >= n_) push(delta_ + y_[b], b, kExpandEvent);
   }
 
-  // Queues every edge from the given (now even) nodes to an even or unlabelled blossom.
-  void scan_even_nodes(const std::vector<NodeId>& nodes) {
-    for (NodeId x : nodes) {
-      const std::uint32_t bx = top_[x];
+  // Queues every edge from the nodes of blossom b (now even, b itself or inside the even blossom
+  // just shrunk) to an even or unlabelled blossom. Lists b's
+  // nodes: per-blossom lists of leaving edges, merged on shrink, were 5x slower on armadillo's
+  // dual (a blossom of a cubic graph has about as many leaving edges as nodes).
+  void scan_even(std::uint32_t b) {
+    scratch_.clear();
+    leaves(b, scratch_);
+    const std::uint32_t bx = top(b < n_ ? b : base_[b]);
+    for (NodeId x : scratch_) {
       for (EdgeId e : graph_.incident_edges(x)) {
         const NodeId w = graph_.other_end(e, x);
-        const std::uint32_t bw = top_[w];
+        const std::uint32_t bw = top(w);
         if (bw == bx || label_[bw] == kOdd) continue;
         const std::int64_t s = slack(e, x, w);
         push(delta_ + (label_[bw] == kEven ? s / 2 : s), e, kEdgeEvent);
@@ -247,12 +299,14 @@ class BlossomSolver {
     }
   }
 
-  // Queues every edge from the given (now unlabelled) nodes to an even blossom.
-  void scan_unlabelled_nodes(const std::vector<NodeId>& nodes) {
-    for (NodeId x : nodes) {
+  // Queues every edge from (now unlabelled) blossom b to an even blossom.
+  void scan_unlabelled(std::uint32_t b) {
+    scratch_.clear();
+    leaves(b, scratch_);
+    for (NodeId x : scratch_) {
       for (EdgeId e : graph_.incident_edges(x)) {
         const NodeId w = graph_.other_end(e, x);
-        if (label_[top_[w]] != kEven) continue;
+        if (label_[top(w)] != kEven) continue;
         push(delta_ + slack(e, x, w), e, kEdgeEvent);
       }
     }
@@ -262,7 +316,7 @@ class BlossomSolver {
 
   void search(NodeId root) {
     delta_ = 0;
-    label_even(top_[root], kNone, root, kNoEdge);
+    label_even(top(root), kNone, root, kNoEdge);
     for (;;) {
       if (heap_.empty()) {
         throw GraphError("no perfect matching: the alternating tree of node " +
@@ -288,9 +342,9 @@ class BlossomSolver {
       }
       const EdgeId e = event.id;
       auto [u, v] = graph_.endpoints(e);
-      if (top_[u] == top_[v]) continue;
-      if (label_[top_[u]] != kEven) std::swap(u, v);
-      const std::uint32_t bu = top_[u], bv = top_[v];
+      if (top(u) == top(v)) continue;
+      if (label_[top(u)] != kEven) std::swap(u, v);
+      const std::uint32_t bu = top(u), bv = top(v);
       if (label_[bu] != kEven || label_[bv] == kOdd) continue;
       const std::int64_t s = slack(e, u, v);
       if (label_[bv] == kEven) {
@@ -309,7 +363,7 @@ class BlossomSolver {
         const EdgeId m = mate_[b];
         const NodeId z = graph_.other_end(m, b);
         label_odd(bv, u, v, e);
-        label_even(top_[z], b, z, m);
+        label_even(top(z), b, z, m);
       }
     }
     finish_search();
@@ -338,12 +392,6 @@ class BlossomSolver {
       stack.pop_back();
       for (std::uint32_t d : children_[c - n_]) {
         parent_[d] = kNone;
-        scratch_.clear();
-        leaves(d, scratch_);
-        for (NodeId x : scratch_) {
-          top_[x] = d;
-          inner_[x] -= y_[d];
-        }
         if (d >= n_ && y_[d] == 0) stack.push_back(d);
       }
       free_blossom(c);
@@ -355,7 +403,7 @@ class BlossomSolver {
   // common even ancestor into a new even blossom.
   void shrink(NodeId u, NodeId v, EdgeId e) {
     ++stats_.blossoms_shrunk;
-    const std::uint32_t bu = top_[u], bv = top_[v];
+    const std::uint32_t bu = top(u), bv = top(v);
     // Walk up from both sides alternately; the first blossom seen twice is the common one.
     ++stamp_;
     std::uint32_t a = bu, c = bv, lca = kNone;
@@ -366,14 +414,14 @@ class BlossomSolver {
           break;
         }
         mark_[a] = stamp_;
-        a = tree_edge_[a] == kNoEdge ? kNone : top_[tree_from_[top_[tree_from_[a]]]];
+        a = tree_edge_[a] == kNoEdge ? kNone : top(tree_from_[top(tree_from_[a])]);
       }
       std::swap(a, c);
     }
     path_u_.clear();
     path_v_.clear();
-    for (std::uint32_t x = bu; x != lca; x = top_[tree_from_[x]]) path_u_.push_back(x);
-    for (std::uint32_t x = bv; x != lca; x = top_[tree_from_[x]]) path_v_.push_back(x);
+    for (std::uint32_t x = bu; x != lca; x = top(tree_from_[x])) path_u_.push_back(x);
+    for (std::uint32_t x = bv; x != lca; x = top(tree_from_[x])) path_v_.push_back(x);
 
     const std::uint32_t nb = new_blossom();
     std::vector<std::uint32_t>& ch = children_[nb - n_];
@@ -400,21 +448,15 @@ class BlossomSolver {
     tree_edge_[nb] = tree_edge_[lca];
     touched_.push_back(nb);
 
-    odd_nodes_.clear();
+    odd_children_.clear();
     for (std::uint32_t c2 : ch) {
       const bool was_odd = label_[c2] == kOdd;
       settle(c2);
       label_[c2] = kUnlabelled;
       parent_[c2] = nb;
-      scratch_.clear();
-      leaves(c2, scratch_);
-      for (NodeId x : scratch_) {
-        inner_[x] += y_[c2];
-        top_[x] = nb;
-      }
-      if (was_odd) odd_nodes_.insert(odd_nodes_.end(), scratch_.begin(), scratch_.end());
+      if (was_odd) odd_children_.push_back(c2);
     }
-    scan_even_nodes(odd_nodes_);
+    for (std::uint32_t c2 : odd_children_) scan_even(c2);
   }
 
   // Odd blossom b's dual reached zero: its children along the even side of the cycle, from the
@@ -424,16 +466,8 @@ class BlossomSolver {
     std::vector<std::uint32_t> ch = std::move(children_[b - n_]);
     std::vector<Conn> conn = std::move(conn_[b - n_]);
     const std::size_t k = ch.size();
-    for (std::uint32_t c : ch) {
-      parent_[c] = kNone;
-      scratch_.clear();
-      leaves(c, scratch_);
-      for (NodeId x : scratch_) {
-        top_[x] = c;
-        inner_[x] -= y_[c];
-      }
-    }
-    const std::uint32_t entry = top_[tree_to_[b]];
+    const std::uint32_t entry = child_holding(b, tree_to_[b]);
+    for (std::uint32_t c : ch) parent_[c] = kNone;
     const std::size_t j =
         static_cast<std::size_t>(std::find(ch.begin(), ch.end(), entry) - ch.begin());
     const NodeId from = tree_from_[b], to = tree_to_[b];
@@ -474,29 +508,25 @@ class BlossomSolver {
       next_even = !next_even;
       i = next;
     }
-    scratch_.clear();
-    for (std::uint32_t c : even_children) leaves(c, scratch_);
-    scan_even_nodes(scratch_);
-    scratch_.clear();
+    for (std::uint32_t c : even_children) scan_even(c);
     for (std::uint32_t c : ch)
-      if (mark_[c] != stamp_) leaves(c, scratch_);
-    scan_unlabelled_nodes(scratch_);
+      if (mark_[c] != stamp_) scan_unlabelled(c);
   }
 
   // ---- augmentation
 
   // Edge e = (u, v) joins even u to v in an unlabelled blossom with a free base.
   void augment(NodeId u, NodeId v, EdgeId e) {
-    rebase(top_[v], v);
+    rebase(top(v), v);
     mate_[v] = e;
     NodeId s = u;
     EdgeId along = e;
     for (;;) {
-      const std::uint32_t bs = top_[s];
+      const std::uint32_t bs = top(s);
       rebase(bs, s);
       mate_[s] = along;
       if (tree_edge_[bs] == kNoEdge) break;  // the root
-      const std::uint32_t bt = top_[tree_from_[bs]];
+      const std::uint32_t bt = top(tree_from_[bs]);
       rebase(bt, tree_to_[bt]);
       mate_[tree_to_[bt]] = tree_edge_[bt];
       s = tree_from_[bt];
@@ -542,7 +572,8 @@ class BlossomSolver {
   HugeVector<EdgeId>& mate_;
   MinCostStats& stats_;
   std::uint32_t n_;
-  std::vector<std::uint32_t> top_;
+  std::vector<std::uint32_t> top_;  // the hint
+  std::vector<std::uint32_t> top_generation_;
   std::vector<std::int64_t> inner_;
   std::size_t ids_;
   std::vector<std::int64_t> y_;
@@ -554,6 +585,7 @@ class BlossomSolver {
   std::vector<NodeId> tree_to_;    // the node in this blossom
   std::vector<EdgeId> tree_edge_;
   std::vector<std::uint32_t> mark_;
+  std::vector<std::uint32_t> generation_;
   std::uint32_t stamp_ = 0;
   std::vector<std::vector<std::uint32_t>> children_;
   std::vector<std::vector<Conn>> conn_;
@@ -562,7 +594,7 @@ class BlossomSolver {
   std::vector<Event> heap_;
   std::vector<std::uint32_t> touched_;
   std::vector<NodeId> scratch_;
-  std::vector<NodeId> odd_nodes_;
+  std::vector<std::uint32_t> odd_children_;
   std::vector<std::uint32_t> path_u_, path_v_;
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;

@@ -31,8 +31,6 @@ CertificateCheck fail(std::string problem) {
   return {std::move(problem)};
 }
 
-constexpr std::uint32_t kNoSet = 0xFFFFFFFFu;
-
 // The perfect-matching check with a 128-bit claimed total (the doubled graph's may pass 2^63).
 CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_ends,
                                std::span<const Cost> costs, const Matching& matching,
@@ -62,55 +60,63 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
     return fail("the matched edges cost " + str(primal) + ", not " + str(total_cost));
   }
 
-  // The sets: well formed, then laminar (largest first, every member's innermost set so far
-  // must be the same: the parent).
+  // The sets: a forest by their parents (any family of sets given this way is laminar), each
+  // odd, of 3+ nodes, with a value >= 0, and none equal to its only child.
   const MatchingCertificate& c = certificate;
-  if (c.node_dual.size() != n) return fail("node_dual has the wrong size");
+  if (c.node_dual.size() != n || c.node_set.size() != n)
+    return fail("node arrays have the wrong size");
   const std::size_t sets = c.set_dual.size();
-  if (c.set_offsets.size() != sets + 1 || c.set_offsets[0] != 0 ||
-      c.set_offsets.back() != c.set_members.size()) {
-    return fail("set_offsets do not frame set_members");
+  if (c.set_parent.size() != sets) return fail("set_parent has the wrong size");
+  for (std::size_t s = 0; s < sets; ++s) {
+    if (c.set_parent[s] != kNoSet && c.set_parent[s] >= sets)
+      return fail("set " + std::to_string(s) + " has a parent out of range");
+    if (c.set_dual[s] < 0) return fail("set " + std::to_string(s) + " has a negative value");
+  }
+  const std::vector<std::uint32_t>& parent = c.set_parent;
+  const std::vector<std::uint32_t>& innermost = c.node_set;
+  // Depths, walking each set up to a set of known depth; a walk longer than the number of sets
+  // is a cycle.
+  constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> depth(sets, kUnknown);
+  std::vector<std::uint32_t> walk;
+  for (std::size_t s = 0; s < sets; ++s) {
+    walk.clear();
+    std::uint32_t at = static_cast<std::uint32_t>(s);
+    while (at != kNoSet && depth[at] == kUnknown) {
+      if (walk.size() > sets)
+        return fail("set_parent has a cycle through set " + std::to_string(s));
+      walk.push_back(at);
+      at = parent[at];
+    }
+    std::uint32_t d = at == kNoSet ? 0 : depth[at] + 1;
+    for (std::size_t i = walk.size(); i-- > 0;) depth[walk[i]] = d++;
   }
   std::vector<std::uint32_t> order(sets);
-  for (std::size_t s = 0; s < sets; ++s) {
-    if (c.set_offsets[s + 1] < c.set_offsets[s])
-      return fail("set_offsets decrease at set " + std::to_string(s));
-    const std::uint32_t size = c.set_offsets[s + 1] - c.set_offsets[s];
-    if (size < 3 || size % 2 == 0)
-      return fail("set " + std::to_string(s) + " has " + std::to_string(size) +
-                  " nodes, not an odd 3+");
-    if (c.set_dual[s] < 0) return fail("set " + std::to_string(s) + " has a negative value");
-    order[s] = static_cast<std::uint32_t>(s);
-  }
-  auto size_of = [&](std::uint32_t s) { return c.set_offsets[s + 1] - c.set_offsets[s]; };
+  std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(),
-                   [&](std::uint32_t a, std::uint32_t b) { return size_of(a) > size_of(b); });
-  std::vector<std::uint32_t> innermost(n, kNoSet), parent(sets, kNoSet), depth(sets, 0);
-  std::vector<Wide> chain(sets, 0);  // the values of s and every set above it
-  std::vector<std::uint32_t> seen(n, kNoSet);
-  for (std::uint32_t s : order) {
-    const std::uint32_t first = c.set_offsets[s];
-    for (std::uint32_t i = first; i < c.set_offsets[s + 1]; ++i) {
-      const NodeId v = c.set_members[i];
-      if (v >= n)
-        return fail("set " + std::to_string(s) + " has node " + std::to_string(v) +
-                    " out of range");
-      if (seen[v] == s)
-        return fail("set " + std::to_string(s) + " repeats node " + std::to_string(v));
-      seen[v] = s;
-      if (innermost[v] != innermost[c.set_members[first]]) {
-        return fail("sets are not laminar: set " + std::to_string(s) + " crosses another at node " +
-                    std::to_string(v));
-      }
-    }
-    const std::uint32_t p = innermost[c.set_members[first]];
-    if (p != kNoSet && size_of(p) == size_of(s))
-      return fail("set " + std::to_string(s) + " repeats set " + std::to_string(p));
-    parent[s] = p;
-    depth[s] = p == kNoSet ? 0 : depth[p] + 1;
-    chain[s] = c.set_dual[s] + (p == kNoSet ? 0 : chain[p]);
-    for (std::uint32_t i = first; i < c.set_offsets[s + 1]; ++i) innermost[c.set_members[i]] = s;
+                   [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
+  std::vector<std::uint64_t> size(sets, 0), largest_child(sets, 0);
+  for (NodeId v = 0; v < n; ++v) {
+    if (innermost[v] == kNoSet) continue;
+    if (innermost[v] >= sets)
+      return fail("node " + std::to_string(v) + " names a set out of range");
+    ++size[innermost[v]];
   }
+  for (std::size_t i = sets; i-- > 0;) {  // deepest first: children before parents
+    const std::uint32_t s = order[i];
+    if (size[s] < 3 || size[s] % 2 == 0)
+      return fail("set " + std::to_string(s) + " has " + std::to_string(size[s]) +
+                  " nodes, not an odd 3+");
+    if (largest_child[s] == size[s])
+      return fail("set " + std::to_string(s) + " equals one of its subsets");
+    if (parent[s] != kNoSet) {
+      size[parent[s]] += size[s];
+      largest_child[parent[s]] = std::max(largest_child[parent[s]], size[s]);
+    }
+  }
+  std::vector<Wide> chain(sets, 0);  // the values of s and every set above it
+  for (std::uint32_t s : order)
+    chain[s] = c.set_dual[s] + (parent[s] == kNoSet ? 0 : chain[parent[s]]);
 
   // The smallest set holding both u and v (kNoSet: none).
   auto common = [&](NodeId u, NodeId v) {
@@ -144,10 +150,10 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
   for (std::size_t i = sets; i-- > 0;) {
     const std::uint32_t s = order[i];
     if (parent[s] != kNoSet) inside[parent[s]] += inside[s];
-    if (c.set_dual[s] > 0 && inside[s] != (size_of(s) - 1) / 2) {
+    if (c.set_dual[s] > 0 && inside[s] != (size[s] - 1) / 2) {
       return fail("set " + std::to_string(s) + " has a positive value but holds " +
                   std::to_string(inside[s]) + " matched edges, not " +
-                  std::to_string((size_of(s) - 1) / 2));
+                  std::to_string((size[s] - 1) / 2));
     }
   }
   Wide dual = 0;

@@ -34,13 +34,18 @@ inline constexpr Cost kMaxCost = Cost{1} << 40;
 inline constexpr double kDefaultCostScale = 65536.0;
 HugeVector<Cost> scale_costs(std::span<const double> costs, double scale = kDefaultCostScale);
 
+/// Marks "no set" in MatchingCertificate.
+inline constexpr std::uint32_t kNoSet = 0xFFFFFFFFu;
+
 /// The dual solution (see the top of this file): node_dual[v] per node, and the odd sets with a
-/// positive value: set i has members set_members[set_offsets[i]..set_offsets[i+1]) and value
-/// set_dual[i]. The sets form a laminar family (any two are disjoint or nested).
+/// positive value as a laminar forest: set s has value set_dual[s] and lies directly inside set
+/// set_parent[s] (kNoSet: none); node v lies directly inside set node_set[v] (kNoSet: none), so
+/// the members of s are the nodes whose chain of sets passes s. A forest, not member lists:
+/// blossoms nest deeply on meshes (on armadillo's dual, 13.7k sets listed 455M members).
 struct MatchingCertificate {
   std::vector<std::int64_t> node_dual;
-  std::vector<std::uint32_t> set_offsets{0};
-  std::vector<NodeId> set_members;
+  std::vector<std::uint32_t> node_set;
+  std::vector<std::uint32_t> set_parent;
   std::vector<std::int64_t> set_dual;
 
   std::size_t set_count() const { return set_dual.size(); }

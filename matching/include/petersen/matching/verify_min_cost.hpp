@@ -20,12 +20,12 @@ struct CertificateCheck {
 
 /// Checks that `matching` is a perfect matching of the graph given by its edge ends (edge e
 /// joins edge_ends[2e] and edge_ends[2e+1]; CubicGraph::edge_ends and CsrGraph::edge_ends), that
-/// its cost is `total_cost`, and that `certificate` proves it minimum: the sets are odd, of 3+
-/// distinct nodes in range, laminar, with values >= 0; every edge's reduced cost 2·cost(e) −
-/// (sum of the values of the sets with exactly one end of e) is >= 0 and 0 on matched edges;
-/// every set with a positive value holds (|S| − 1)/2 matched edges; and the values sum to
-/// 2·total_cost. In 128-bit integers. O((n + m)·d + s log s) for laminar depth d and total set
-/// size s.
+/// its cost is `total_cost`, and that `certificate` proves it minimum: the set forest has no
+/// cycle, every set is odd, of 3+ nodes, unequal to its subsets, with a value >= 0; every edge's
+/// reduced cost 2·cost(e) − (sum of the values of the sets with exactly one end of e) is >= 0
+/// and 0 on matched edges; every set with a positive value holds (|S| − 1)/2 matched edges; and
+/// the values sum to 2·total_cost. In 128-bit integers. O(n + m·d + s log s) for s sets nested
+/// at most d deep.
 CertificateCheck verify_min_cost_perfect_matching(std::uint32_t node_count,
                                                   std::span<const NodeId> edge_ends,
                                                   std::span<const Cost> costs,
