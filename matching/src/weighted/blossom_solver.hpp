@@ -64,6 +64,7 @@ class BlossomSolver {
         tree_from_(ids_, kNone),
         tree_to_(ids_, kNone),
         tree_edge_(ids_, kNoEdge),
+        tree_(ids_, kNone),
         mark_(ids_, 0),
         generation_(ids_, 0),
         children_(ids_ - n_),
@@ -101,14 +102,24 @@ class BlossomSolver {
     }
   }
 
-  /// One search per node still free, in id order. Throws GraphError when a search finds no
-  /// augmenting path: then the graph has no perfect matching.
+  /// Grows the alternating trees of all free nodes at once until none is left. Throws
+  /// GraphError when no event is left while a tree is: then there is no perfect matching.
   void run() {
-    for (NodeId r = 0; r < n_; ++r) {
-      if (mate_[r] != kNoEdge) continue;
-      search(r);
-      ++stats_.searches;
+    // Every root's dual is made even (lowering a free node's dual keeps every constraint), so
+    // all labelled nodes share one parity and even-even slacks stay even (see the top).
+    std::vector<NodeId> roots;
+    for (NodeId v = 0; v < n_; ++v) {
+      if (mate_[v] != kNoEdge) continue;
+      roots.push_back(v);
+      y_[v] -= y_[v] & 1;
     }
+    tree_members_.resize(roots.size());
+    alive_trees_ = roots.size();
+    delta_ = 0;
+    for (std::uint32_t t = 0; t < roots.size(); ++t) {
+      label_even(top(roots[t]), kNone, roots[t], kNoEdge, t);
+    }
+    while (alive_trees_ > 0) step();
   }
 
   /// The dual solution; run() must have returned. O(n).
@@ -258,25 +269,24 @@ class BlossomSolver {
 
   // ---- labels
 
-  void label_even(std::uint32_t b, NodeId from, NodeId to, EdgeId e) {
-    label_[b] = kEven;
+  // Labels b without scanning it (the caller scans once every label around is set).
+  void set_label(std::uint32_t b, std::uint8_t label, NodeId from, NodeId to, EdgeId e,
+                 std::uint32_t tree) {
+    label_[b] = label;
     since_[b] = delta_;
     tree_from_[b] = from;
     tree_to_[b] = to;
     tree_edge_[b] = e;
-    touched_.push_back(b);
+    tree_[b] = tree;
+    tree_members_[tree].push_back(b);
     ++stats_.nodes_labelled;
+  }
+  void label_even(std::uint32_t b, NodeId from, NodeId to, EdgeId e, std::uint32_t tree) {
+    set_label(b, kEven, from, to, e, tree);
     scan_even(b);
   }
-
-  void label_odd(std::uint32_t b, NodeId from, NodeId to, EdgeId e) {
-    label_[b] = kOdd;
-    since_[b] = delta_;
-    tree_from_[b] = from;
-    tree_to_[b] = to;
-    tree_edge_[b] = e;
-    touched_.push_back(b);
-    ++stats_.nodes_labelled;
+  void label_odd(std::uint32_t b, NodeId from, NodeId to, EdgeId e, std::uint32_t tree) {
+    set_label(b, kOdd, from, to, e, tree);
     if (b >= n_) push(delta_ + y_[b], b, kExpandEvent);
   }
 
@@ -312,76 +322,81 @@ class BlossomSolver {
     }
   }
 
-  // ---- one search
+  // ---- the forest
 
-  void search(NodeId root) {
-    delta_ = 0;
-    label_even(top(root), kNone, root, kNoEdge);
-    for (;;) {
-      if (heap_.empty()) {
-        throw GraphError("no perfect matching: the alternating tree of node " +
-                         std::to_string(root) + " cannot grow");
-      }
-      std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
-      const Event event = heap_.back();
-      heap_.pop_back();
-      if (event.key > delta_) {
-        delta_ = event.key;
-        ++stats_.dual_updates;
-      }
-      if (event.kind == kExpandEvent) {
-        const std::uint32_t b = event.id;
-        if (label_[b] != kOdd || parent_[b] != kNone) continue;
-        const std::int64_t d = current_dual(b);
-        if (d > 0) {
-          push(delta_ + d, b, kExpandEvent);
-        } else {
-          expand_odd(b);
-        }
-        continue;
-      }
-      const EdgeId e = event.id;
-      auto [u, v] = graph_.endpoints(e);
-      if (top(u) == top(v)) continue;
-      if (label_[top(u)] != kEven) std::swap(u, v);
-      const std::uint32_t bu = top(u), bv = top(v);
-      if (label_[bu] != kEven || label_[bv] == kOdd) continue;
-      const std::int64_t s = slack(e, u, v);
-      if (label_[bv] == kEven) {
-        if (s > 0) {
-          push(delta_ + s / 2, e, kEdgeEvent);
-        } else {
-          shrink(u, v, e);
-        }
-      } else if (s > 0) {
-        push(delta_ + s, e, kEdgeEvent);
-      } else if (mate_[base_[bv]] == kNoEdge) {
-        augment(u, v, e);
-        break;
-      } else {
-        const NodeId b = base_[bv];
-        const EdgeId m = mate_[b];
-        const NodeId z = graph_.other_end(m, b);
-        label_odd(bv, u, v, e);
-        label_even(top(z), b, z, m);
-      }
+  // Takes the next event from the queue and acts on it.
+  void step() {
+    if (heap_.empty()) {
+      throw GraphError("no perfect matching: " + std::to_string(alive_trees_) +
+                       " alternating trees cannot grow");
     }
-    finish_search();
+    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    const Event event = heap_.back();
+    heap_.pop_back();
+    if (event.key > delta_) {
+      delta_ = event.key;
+      ++stats_.dual_updates;
+    }
+    if (event.kind == kExpandEvent) {
+      const std::uint32_t b = event.id;
+      if (label_[b] != kOdd || parent_[b] != kNone) return;
+      const std::int64_t d = current_dual(b);
+      if (d > 0) {
+        push(delta_ + d, b, kExpandEvent);
+      } else {
+        expand_odd(b);
+      }
+      return;
+    }
+    const EdgeId e = event.id;
+    auto [u, v] = graph_.endpoints(e);
+    if (top(u) == top(v)) return;
+    if (label_[top(u)] != kEven) std::swap(u, v);
+    const std::uint32_t bu = top(u), bv = top(v);
+    if (label_[bu] != kEven || label_[bv] == kOdd) return;
+    const std::int64_t s = slack(e, u, v);
+    if (label_[bv] == kEven) {
+      if (s > 0) {
+        push(delta_ + s / 2, e, kEdgeEvent);
+      } else if (tree_[bu] == tree_[bv]) {
+        shrink(u, v, e);
+      } else {
+        const std::uint32_t tu = tree_[bu], tv = tree_[bv];
+        augment_from(u, e);
+        augment_from(v, e);
+        ++stats_.searches;
+        release(tu);
+        release(tv);
+      }
+    } else if (s > 0) {
+      push(delta_ + s, e, kEdgeEvent);
+    } else {
+      // Every free node is a root, so an unlabelled blossom has a matched base.
+      const NodeId b = base_[bv];
+      const EdgeId m = mate_[b];
+      const NodeId z = graph_.other_end(m, b);
+      label_odd(bv, u, v, e, tree_[bu]);
+      label_even(top(z), b, z, m, tree_[bu]);
+    }
   }
 
-  // Stores the duals of the tree's blossoms, clears the labels, and dissolves the top-level
-  // blossoms whose dual is zero (they constrain nothing; later searches see their children).
-  void finish_search() {
-    for (std::uint32_t b : touched_) {
-      if (label_[b] == kUnlabelled || parent_[b] != kNone) continue;
+  // Tree t augmented: its blossoms store their duals and lose their labels; the edges from the
+  // even blossoms of the other trees into them now lose slack at rate 1, so they are queued
+  // again; the blossoms whose dual is zero dissolve (they constrain nothing).
+  void release(std::uint32_t t) {
+    --alive_trees_;
+    released_.clear();
+    for (std::uint32_t b : tree_members_[t]) {
+      if (label_[b] == kUnlabelled || parent_[b] != kNone || tree_[b] != t) continue;
       settle(b);
       label_[b] = kUnlabelled;
+      released_.push_back(b);
     }
-    for (std::uint32_t b : touched_) {
-      if (b >= n_ && !children_[b - n_].empty() && parent_[b] == kNone && y_[b] == 0) dissolve(b);
+    std::vector<std::uint32_t>().swap(tree_members_[t]);
+    for (std::uint32_t b : released_) scan_unlabelled(b);
+    for (std::uint32_t b : released_) {
+      if (b >= n_ && parent_[b] == kNone && !children_[b - n_].empty() && y_[b] == 0) dissolve(b);
     }
-    touched_.clear();
-    heap_.clear();
   }
 
   // Removes top-level unlabelled blossom b of dual zero, and its children of dual zero.
@@ -446,7 +461,8 @@ class BlossomSolver {
     tree_from_[nb] = tree_from_[lca];
     tree_to_[nb] = tree_to_[lca];
     tree_edge_[nb] = tree_edge_[lca];
-    touched_.push_back(nb);
+    tree_[nb] = tree_[lca];
+    tree_members_[tree_[lca]].push_back(nb);
 
     odd_children_.clear();
     for (std::uint32_t c2 : ch) {
@@ -472,6 +488,7 @@ class BlossomSolver {
         static_cast<std::size_t>(std::find(ch.begin(), ch.end(), entry) - ch.begin());
     const NodeId from = tree_from_[b], to = tree_to_[b];
     const EdgeId edge = tree_edge_[b];
+    const std::uint32_t tree = tree_[b];
     free_blossom(b);
 
     // The path from the entry child to the base child: backward when j is even, else forward.
@@ -479,7 +496,7 @@ class BlossomSolver {
     std::vector<std::uint32_t> even_children;
     std::size_t i = j;
     mark_[ch[i]] = stamp_;
-    label_odd(ch[i], from, to, edge);
+    label_odd(ch[i], from, to, edge, tree);
     bool next_even = true;
     while (i != 0) {
       std::size_t next;
@@ -494,16 +511,10 @@ class BlossomSolver {
       // c.x is in ch[i] (the tree parent), c.y in ch[next].
       mark_[ch[next]] = stamp_;
       if (next_even) {
-        label_[ch[next]] = kEven;
-        since_[ch[next]] = delta_;
-        tree_from_[ch[next]] = c.x;
-        tree_to_[ch[next]] = c.y;
-        tree_edge_[ch[next]] = c.e;
-        touched_.push_back(ch[next]);
-        ++stats_.nodes_labelled;
+        set_label(ch[next], kEven, c.x, c.y, c.e, tree);
         even_children.push_back(ch[next]);
       } else {
-        label_odd(ch[next], c.x, c.y, c.e);
+        label_odd(ch[next], c.x, c.y, c.e, tree);
       }
       next_even = !next_even;
       i = next;
@@ -515,12 +526,8 @@ class BlossomSolver {
 
   // ---- augmentation
 
-  // Edge e = (u, v) joins even u to v in an unlabelled blossom with a free base.
-  void augment(NodeId u, NodeId v, EdgeId e) {
-    rebase(top(v), v);
-    mate_[v] = e;
-    NodeId s = u;
-    EdgeId along = e;
+  // Edge `along` joins even node s to another tree: flips the path from s up to its root.
+  void augment_from(NodeId s, EdgeId along) {
     for (;;) {
       const std::uint32_t bs = top(s);
       rebase(bs, s);
@@ -584,6 +591,7 @@ class BlossomSolver {
   std::vector<NodeId> tree_from_;  // the node in the tree parent
   std::vector<NodeId> tree_to_;    // the node in this blossom
   std::vector<EdgeId> tree_edge_;
+  std::vector<std::uint32_t> tree_;  // the tree of a labelled blossom
   std::vector<std::uint32_t> mark_;
   std::vector<std::uint32_t> generation_;
   std::uint32_t stamp_ = 0;
@@ -592,7 +600,9 @@ class BlossomSolver {
   std::vector<std::uint32_t> free_ids_;
   std::int64_t delta_ = 0;
   std::vector<Event> heap_;
-  std::vector<std::uint32_t> touched_;
+  std::vector<std::vector<std::uint32_t>> tree_members_;  // per tree: blossoms labelled in it
+  std::size_t alive_trees_ = 0;
+  std::vector<std::uint32_t> released_;
   std::vector<NodeId> scratch_;
   std::vector<std::uint32_t> odd_children_;
   std::vector<std::uint32_t> path_u_, path_v_;
