@@ -12,13 +12,14 @@
 // edge from child i to child i+1 (mod k), oriented (x in child i, y in child i+1); the edges
 // conn[1], conn[3], .. are matched, conn[0], conn[2], .. not.
 //
-// Each node keeps a hint of its outermost blossom, top_hint[v] (some blossom holding v), and
-// inner[v], the sum of the duals of the sets holding v strictly inside the hint: the dual sum of
-// v (every set holding v) is inner[v] plus the duals met walking parents from the hint to the
-// top, plus the top's dual. A walk moves the hint up to the top. Shrinking and dissolving so
-// touch no node (updating every node of a new blossom made the first version quadratic: 60 % of
-// its time on the 7k-triangle bunny went to listing blossom nodes); a freed blossom id bumps its
-// generation, which invalidates the hints naming it, and those nodes walk again from themselves.
+// Finding a node's outermost blossom and its dual sum (every set holding it) walks parents, with
+// path compression: each blossom x (nodes included) keeps a shortcut up[x] to an ancestor and the
+// duals from x up to it (exclusive), which are frozen while that ancestor lives (only top-level
+// blossoms' duals move, and x's chain below it is not top-level). A freed blossom id bumps its
+// generation, which invalidates the shortcuts naming it. Shrinking and dissolving so touch no
+// node: updating every node of a new blossom made the first version quadratic (60 % of its time
+// on the 7k-triangle bunny listed blossom nodes), and plain parent walks without compression
+// took 27 % of the time on fertility-sub3, whose blossoms nest deeply.
 //
 // A search labels top-level blossoms even or odd and keeps one clock, delta: a labelled
 // blossom's dual is its stored value plus (even) or minus (odd) the time since its label. The
@@ -37,6 +38,7 @@
 #include <vector>
 
 #include "petersen/matching/min_cost_matching.hpp"
+#include "radix_queue.hpp"
 
 namespace petersen::weighted_detail {
 
@@ -52,9 +54,6 @@ class BlossomSolver {
         mate_(mate),
         stats_(stats),
         n_(graph.node_count()),
-        top_(n_),
-        top_generation_(n_, 0),
-        inner_(n_, 0),
         ids_(std::size_t{n_} + n_ / 2 + 1),
         y_(ids_, 0),
         since_(ids_, 0),
@@ -67,10 +66,13 @@ class BlossomSolver {
         tree_(ids_, kNone),
         mark_(ids_, 0),
         generation_(ids_, 0),
+        up_(ids_, kNone),
+        up_generation_(ids_, 0),
+        up_sum_(ids_, 0),
         children_(ids_ - n_),
         conn_(ids_ - n_) {
     mate_.assign(n_, kNoEdge);
-    for (NodeId v = 0; v < n_; ++v) top_[v] = base_[v] = v;
+    for (NodeId v = 0; v < n_; ++v) base_[v] = v;
     for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
     for (NodeId v = 0; v < n_; ++v)
       if (graph_.incident_edges(v).empty())
@@ -170,10 +172,8 @@ class BlossomSolver {
     EdgeId e;
   };
   struct Event {
-    std::int64_t key;
-    std::uint32_t id;
+    std::uint32_t id;  // an edge or a blossom
     std::uint32_t kind;
-    bool operator>(const Event& o) const { return key > o.key; }
   };
 
   // ---- duals
@@ -188,28 +188,34 @@ class BlossomSolver {
         return y_[b];
     }
   }
-  // v's outermost blossom; moves v's hint there (see the top of the file).
-  std::uint32_t top(NodeId v) {
-    std::uint32_t x = top_[v];
-    if (generation_[x] != top_generation_[v]) {
-      x = v;
-      inner_[v] = 0;
-    }
+  // v's outermost blossom; the duals of the sets holding v below it go to `below`.
+  std::uint32_t find(NodeId v, std::int64_t& below) {
+    std::uint32_t x = v;
+    std::int64_t sum = 0;
+    walked_.clear();
     while (parent_[x] != kNone) {
-      inner_[v] += y_[x];
-      x = parent_[x];
+      walked_.push_back({x, sum});
+      if (up_[x] != kNone && generation_[up_[x]] == up_generation_[x]) {
+        sum += up_sum_[x];
+        x = up_[x];
+      } else {
+        sum += y_[x];
+        x = parent_[x];
+      }
     }
-    top_[v] = x;
-    top_generation_[v] = generation_[x];
+    for (auto [w, at] : walked_) {
+      up_[w] = x;
+      up_generation_[w] = generation_[x];
+      up_sum_[w] = sum - at;
+    }
+    below = sum;
     return x;
   }
-  std::int64_t dual_sum(NodeId v) {
-    const std::uint32_t t = top(v);
-    return inner_[v] + current_dual(t);
+  std::uint32_t top(NodeId v) {
+    std::int64_t below;
+    return find(v, below);
   }
-  std::int64_t slack(EdgeId e, NodeId u, NodeId v) {
-    return 2 * cost_[e] - dual_sum(u) - dual_sum(v);
-  }
+
   // Stores b's current dual, so its label can change.
   void settle(std::uint32_t b) {
     y_[b] = current_dual(b);
@@ -219,8 +225,7 @@ class BlossomSolver {
   // ---- the queue
 
   void push(std::int64_t key, std::uint32_t id, std::uint32_t kind) {
-    heap_.push_back({key, id, kind});
-    std::push_heap(heap_.begin(), heap_.end(), std::greater<>{});
+    queue_.push(static_cast<std::uint64_t>(key), {id, kind});
     ++stats_.queue_pushes;
   }
 
@@ -297,13 +302,16 @@ class BlossomSolver {
   void scan_even(std::uint32_t b) {
     scratch_.clear();
     leaves(b, scratch_);
-    const std::uint32_t bx = top(b < n_ ? b : base_[b]);
+    stats_.even_scans += scratch_.size();
     for (NodeId x : scratch_) {
+      std::int64_t below_x, below_w;
+      const std::uint32_t bx = find(x, below_x);
+      const std::int64_t room = -below_x - current_dual(bx);  // the slack less 2·cost
       for (EdgeId e : graph_.incident_edges(x)) {
         const NodeId w = graph_.other_end(e, x);
-        const std::uint32_t bw = top(w);
+        const std::uint32_t bw = find(w, below_w);
         if (bw == bx || label_[bw] == kOdd) continue;
-        const std::int64_t s = slack(e, x, w);
+        const std::int64_t s = 2 * cost_[e] + room - below_w - current_dual(bw);
         push(delta_ + (label_[bw] == kEven ? s / 2 : s), e, kEdgeEvent);
       }
     }
@@ -313,11 +321,16 @@ class BlossomSolver {
   void scan_unlabelled(std::uint32_t b) {
     scratch_.clear();
     leaves(b, scratch_);
+    stats_.released_scans += scratch_.size();
     for (NodeId x : scratch_) {
+      std::int64_t below_x, below_w;
+      const std::uint32_t bx = find(x, below_x);
+      const std::int64_t room = -below_x - current_dual(bx);  // the slack less 2·cost
       for (EdgeId e : graph_.incident_edges(x)) {
         const NodeId w = graph_.other_end(e, x);
-        if (label_[top(w)] != kEven) continue;
-        push(delta_ + slack(e, x, w), e, kEdgeEvent);
+        const std::uint32_t bw = find(w, below_w);
+        if (label_[bw] != kEven) continue;
+        push(delta_ + 2 * cost_[e] + room - below_w - current_dual(bw), e, kEdgeEvent);
       }
     }
   }
@@ -326,15 +339,14 @@ class BlossomSolver {
 
   // Takes the next event from the queue and acts on it.
   void step() {
-    if (heap_.empty()) {
+    if (queue_.empty()) {
       throw GraphError("no perfect matching: " + std::to_string(alive_trees_) +
                        " alternating trees cannot grow");
     }
-    std::pop_heap(heap_.begin(), heap_.end(), std::greater<>{});
-    const Event event = heap_.back();
-    heap_.pop_back();
-    if (event.key > delta_) {
-      delta_ = event.key;
+    Event event;
+    const auto key = static_cast<std::int64_t>(queue_.pop(event));
+    if (key > delta_) {
+      delta_ = key;
       ++stats_.dual_updates;
     }
     if (event.kind == kExpandEvent) {
@@ -350,11 +362,16 @@ class BlossomSolver {
     }
     const EdgeId e = event.id;
     auto [u, v] = graph_.endpoints(e);
-    if (top(u) == top(v)) return;
-    if (label_[top(u)] != kEven) std::swap(u, v);
-    const std::uint32_t bu = top(u), bv = top(v);
+    std::int64_t below_u, below_v;
+    std::uint32_t bu = find(u, below_u), bv = find(v, below_v);
+    if (bu == bv) return;
+    if (label_[bu] != kEven) {
+      std::swap(u, v);
+      std::swap(bu, bv);
+      std::swap(below_u, below_v);
+    }
     if (label_[bu] != kEven || label_[bv] == kOdd) return;
-    const std::int64_t s = slack(e, u, v);
+    const std::int64_t s = 2 * cost_[e] - below_u - current_dual(bu) - below_v - current_dual(bv);
     if (label_[bv] == kEven) {
       if (s > 0) {
         push(delta_ + s / 2, e, kEdgeEvent);
@@ -380,20 +397,24 @@ class BlossomSolver {
     }
   }
 
-  // Tree t augmented: its blossoms store their duals and lose their labels; the edges from the
-  // even blossoms of the other trees into them now lose slack at rate 1, so they are queued
-  // again; the blossoms whose dual is zero dissolve (they constrain nothing).
+  // Tree t augmented: its blossoms store their duals and lose their labels. The edges from
+  // the even blossoms of other trees into its odd blossoms had no entry (an even-odd slack does
+  // not move) and now lose slack at rate 1, so the odd blossoms are scanned; the entries into
+  // its even blossoms, keyed at rate 2, come out early and are queued again at rate 1 (scanning
+  // the even ones too cost 4.1M node scans on fertility-sub3's dual, half of all). The blossoms
+  // whose dual is zero dissolve: they constrain nothing.
   void release(std::uint32_t t) {
     --alive_trees_;
     released_.clear();
     for (std::uint32_t b : tree_members_[t]) {
       if (label_[b] == kUnlabelled || parent_[b] != kNone || tree_[b] != t) continue;
+      const bool odd = label_[b] == kOdd;
       settle(b);
       label_[b] = kUnlabelled;
       released_.push_back(b);
+      if (odd) scan_unlabelled(b);
     }
     std::vector<std::uint32_t>().swap(tree_members_[t]);
-    for (std::uint32_t b : released_) scan_unlabelled(b);
     for (std::uint32_t b : released_) {
       if (b >= n_ && parent_[b] == kNone && !children_[b - n_].empty() && y_[b] == 0) dissolve(b);
     }
@@ -579,9 +600,6 @@ class BlossomSolver {
   HugeVector<EdgeId>& mate_;
   MinCostStats& stats_;
   std::uint32_t n_;
-  std::vector<std::uint32_t> top_;  // the hint
-  std::vector<std::uint32_t> top_generation_;
-  std::vector<std::int64_t> inner_;
   std::size_t ids_;
   std::vector<std::int64_t> y_;
   std::vector<std::int64_t> since_;
@@ -594,12 +612,16 @@ class BlossomSolver {
   std::vector<std::uint32_t> tree_;  // the tree of a labelled blossom
   std::vector<std::uint32_t> mark_;
   std::vector<std::uint32_t> generation_;
+  std::vector<std::uint32_t> up_;  // the shortcuts (see the top)
+  std::vector<std::uint32_t> up_generation_;
+  std::vector<std::int64_t> up_sum_;
+  std::vector<std::pair<std::uint32_t, std::int64_t>> walked_;
   std::uint32_t stamp_ = 0;
   std::vector<std::vector<std::uint32_t>> children_;
   std::vector<std::vector<Conn>> conn_;
   std::vector<std::uint32_t> free_ids_;
   std::int64_t delta_ = 0;
-  std::vector<Event> heap_;
+  RadixQueue<Event> queue_;
   std::vector<std::vector<std::uint32_t>> tree_members_;  // per tree: blossoms labelled in it
   std::size_t alive_trees_ = 0;
   std::vector<std::uint32_t> released_;

@@ -67,7 +67,9 @@ struct MinCostStats {
   std::uint64_t dual_updates = 0;     ///< times a tree's potentials moved
   std::uint64_t blossoms_shrunk = 0;  ///< odd cycles shrunk
   std::uint64_t blossoms_expanded = 0;
-  std::uint64_t queue_pushes = 0;  ///< entries of the slack-keyed priority queues
+  std::uint64_t queue_pushes = 0;      ///< entries of the slack-keyed priority queue
+  std::uint64_t even_scans = 0;        ///< nodes scanned on becoming even
+  std::uint64_t released_scans = 0;    ///< nodes scanned when their tree augmented
 };
 
 struct MinCostResult {
