@@ -37,6 +37,7 @@
 #include <utility>
 #include <vector>
 
+#include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "radix_queue.hpp"
 
@@ -101,6 +102,32 @@ class BlossomSolver {
           break;
         }
       }
+    }
+    augment_tight();
+  }
+
+  /// Grows the matching to a maximum matching of the tight edges by the project's cardinality
+  /// augmentation (augment_matching on a CsrGraph of the tight edges): every edge it matches is
+  /// tight, so the duals stay feasible and complementary, and fewer trees are left to grow.
+  void augment_tight() {
+    std::vector<std::array<NodeId, 2>> ends;
+    std::vector<EdgeId> original;
+    for (EdgeId e = 0; e < graph_.edge_count(); ++e) {
+      const auto [a, b] = graph_.endpoints(e);
+      if (2 * cost_[e] - y_[a] - y_[b] != 0) continue;
+      ends.push_back({a, b});
+      original.push_back(e);
+    }
+    const CsrGraph tight = CsrGraph::from_edges(n_, ends);
+    Matching matching(n_);
+    for (EdgeId i = 0; i < original.size(); ++i) {
+      const auto [a, b] = ends[i];
+      if (mate_[a] == original[i]) matching.mate_edge[a] = matching.mate_edge[b] = i;
+    }
+    augment_matching(tight, matching, Augment::local);
+    for (NodeId v = 0; v < n_; ++v) {
+      const EdgeId i = matching.mate_edge[v];
+      mate_[v] = i == kNoEdge ? kNoEdge : original[i];
     }
   }
 
