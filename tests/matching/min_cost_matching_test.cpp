@@ -110,20 +110,22 @@ RC_GTEST_PROP(MinCostPerfect, CubicBridgelessEqualsLemonAndIsCertified, ()) {
 }
 
 RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
-  // A random perfect matching plus random edges, so most graphs have one; negative costs too.
-  const auto n = 2 * *rc::gen::inRange<std::uint32_t>(1, 60);
+  // A random perfect matching plus random edges, so most graphs with an even number of nodes
+  // have one; odd ones have none; negative costs too, with and without the greedy start.
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 120);
   Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 4 * n));
   if (*rc::gen::arbitrary<bool>()) {
-    for (NodeId v = 0; v < n; v += 2) edges.push_back({v, v + 1});
+    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
   }
   const std::vector<Cost> costs = random_costs(edges.size(), -100, 100);
   const CsrGraph g = CsrGraph::from_edges(n, edges);
+  const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>()};
   const auto lemon = testing::lemon_min_cost_perfect(n, edges, costs);
   if (!lemon) {
-    RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs), GraphError);
+    RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs, options), GraphError);
     return;
   }
-  const MinCostResult r = min_cost_perfect_matching(g, costs);
+  const MinCostResult r = min_cost_perfect_matching(g, costs, options);
   RC_ASSERT(r.total_cost == *lemon);
   const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
                                                                   r.total_cost, r.certificate);

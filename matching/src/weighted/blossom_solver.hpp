@@ -75,19 +75,19 @@ class BlossomSolver {
     mate_.assign(n_, kNoEdge);
     for (NodeId v = 0; v < n_; ++v) base_[v] = v;
     for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
-    for (NodeId v = 0; v < n_; ++v)
+    // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
+    for (NodeId v = 0; v < n_; ++v) {
       if (graph_.incident_edges(v).empty())
         throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
-  }
-
-  /// Blossom V's greedy start: y_v = the cheapest cost at v (C/2), then each free node in id
-  /// order raises y_v by its smallest slack and takes a tight edge to a free neighbour.
-  void greedy_start() {
-    for (NodeId v = 0; v < n_; ++v) {
       Cost cheapest = kNoCost;
       for (EdgeId e : graph_.incident_edges(v)) cheapest = std::min(cheapest, cost_[e]);
       y_[v] = cheapest;
     }
+  }
+
+  /// Blossom V's greedy start: each free node in id order raises y_v by its smallest slack and
+  /// takes a tight edge to a free neighbour; then augment_tight.
+  void greedy_start() {
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
       Cost least = kNoCost;

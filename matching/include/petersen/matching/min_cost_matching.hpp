@@ -52,8 +52,9 @@ struct MatchingCertificate {
 };
 
 struct MinCostOptions {
-  /// Start from potentials y_v = the cheapest edge's cost at v, raised greedily, with tight edges
-  /// matched greedily (Blossom V's greedy start). Off: an empty matching and zero potentials.
+  /// Potentials start at y_v = the cheapest edge's cost at v. On: each is raised greedily and
+  /// tight edges are matched greedily (Blossom V's greedy start), then the matching is grown to
+  /// a maximum one of the tight edges (augment_matching). Off: nothing is matched at the start.
   bool greedy_start = true;
 };
 
@@ -67,9 +68,9 @@ struct MinCostStats {
   std::uint64_t dual_updates = 0;     ///< times a tree's potentials moved
   std::uint64_t blossoms_shrunk = 0;  ///< odd cycles shrunk
   std::uint64_t blossoms_expanded = 0;
-  std::uint64_t queue_pushes = 0;      ///< entries of the slack-keyed priority queue
-  std::uint64_t even_scans = 0;        ///< nodes scanned on becoming even
-  std::uint64_t released_scans = 0;    ///< nodes scanned when their tree augmented
+  std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
+  std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
+  std::uint64_t released_scans = 0;  ///< nodes scanned when their tree augmented
 };
 
 struct MinCostResult {
