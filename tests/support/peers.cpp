@@ -29,4 +29,19 @@ std::uint32_t lemon_matching_size(std::uint32_t node_count,
   return matched / 2;
 }
 
+std::optional<std::int64_t> lemon_min_cost_perfect(
+    std::uint32_t node_count, std::span<const std::array<std::uint32_t, 2>> edges,
+    std::span<const std::int64_t> costs) {
+  std::vector<std::uint32_t> mate(node_count);
+  std::int64_t total = 0;
+  std::vector<std::uint32_t> ends;
+  for (const auto& [a, b] : edges) ends.insert(ends.end(), {a, b});
+  if (!lemon_peer::min_cost_perfect_matching(node_count, ends.data(),
+                                             static_cast<std::uint32_t>(edges.size()), costs.data(),
+                                             mate.data(), total)) {
+    return std::nullopt;
+  }
+  return total;
+}
+
 }  // namespace petersen::testing

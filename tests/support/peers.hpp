@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,5 +26,11 @@ std::uint32_t boost_matching_size(std::uint32_t node_count,
 /// Size of a maximum matching by LEMON's MaxMatching.
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges);
+
+/// The cost of a minimum-cost perfect matching by LEMON's MaxWeightedPerfectMatching (on the
+/// negated costs), or nullopt when the graph has none.
+std::optional<std::int64_t> lemon_min_cost_perfect(
+    std::uint32_t node_count, std::span<const std::array<std::uint32_t, 2>> edges,
+    std::span<const std::int64_t> costs);
 
 }  // namespace petersen::testing

@@ -16,4 +16,12 @@ namespace petersen::lemon_peer {
 void maximum_matching(std::uint32_t node_count, const std::uint32_t* edge_ends,
                       std::uint32_t edge_count, std::uint32_t* mate_edge);
 
+/// Minimum-cost perfect matching by LEMON's MaxWeightedPerfectMatching on the negated costs
+/// (O(n m log n)), the peer of min_cost_perfect_matching. Returns false when the graph has no
+/// perfect matching; otherwise writes the matched edge's index per node to mate_edge and the
+/// matching's cost to total_cost.
+bool min_cost_perfect_matching(std::uint32_t node_count, const std::uint32_t* edge_ends,
+                               std::uint32_t edge_count, const std::int64_t* costs,
+                               std::uint32_t* mate_edge, std::int64_t& total_cost);
+
 }  // namespace petersen::lemon_peer

@@ -1,0 +1,121 @@
+// Exact minimum-cost perfect matching under issue 14's quad measure: petersen's certified solver
+// against LEMON's MaxWeightedPerfectMatching on the same integer costs, beside PS with local
+// augmentation (shape-blind, the cardinality floor), on the dual of each mesh.
+// Usage: petersen_weighted_speed [--no-lemon] [mesh files...]; without files it measures every
+// shared mesh of at least 80k triangles from ../shared/meshes (when present).
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
+
+namespace {
+
+using namespace petersen;
+
+double seconds_of(const std::function<void()>& run) {
+  const auto start = std::chrono::steady_clock::now();
+  run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values[values.size() / 2];
+}
+
+// The machine is shared: ours and PS run kRounds times alternately and report medians; LEMON,
+// far slower, runs once.
+void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon) {
+  constexpr int kRounds = 3;
+  const Dual dual = build_dual(mesh);
+  const CubicGraph& g = dual.graph;
+  const HugeVector<double> degrees = dual_edge_quality(mesh, dual);
+  const HugeVector<Cost> costs = scale_costs(degrees);
+  std::vector<double> ours, ps;
+  MinCostResult result;
+  for (int round = 0; round < kRounds; ++round) {
+    ours.push_back(seconds_of([&] { result = min_cost_perfect_matching(g, costs); }));
+    ps.push_back(seconds_of([&] {
+      perfect_matching(g,
+                       {.algorithm = Algorithm::ps, .augment = Augment::local, .validate = false});
+    }));
+  }
+  CertificateCheck check;
+  const double verify_seconds = seconds_of([&] {
+    check = verify_min_cost_perfect_matching(g.node_count(), g.edge_ends(), costs, result.matching,
+                                             result.total_cost, result.certificate);
+  });
+  if (!check.ok()) {
+    std::printf("%s: CERTIFICATE REJECTED: %s\n", name.c_str(), check.problem.c_str());
+    std::exit(1);
+  }
+  double lemon_seconds = 0;
+  std::int64_t lemon_total = 0;
+  if (with_lemon) {
+    std::vector<std::uint32_t> mate(g.node_count());
+    lemon_seconds = seconds_of([&] {
+      if (!lemon_peer::min_cost_perfect_matching(g.node_count(), g.edge_ends().data(),
+                                                 g.edge_count(), costs.data(), mate.data(),
+                                                 lemon_total)) {
+        std::printf("%s: LEMON found no perfect matching\n", name.c_str());
+        std::exit(1);
+      }
+    });
+    if (lemon_total != result.total_cost) {
+      std::printf("%s: OPTIMA DIFFER: ours %lld, LEMON %lld\n", name.c_str(),
+                  (long long)result.total_cost, (long long)lemon_total);
+      std::exit(1);
+    }
+  }
+  const MinCostStats& s = result.stats;
+  const double t = median(ours), t_ps = median(ps);
+  std::printf(
+      "%-24s %9u %8.3f %8.3f %8.3f %8.3f %8.3f %7.1f %7.3f %7.1f %8.2f %6.1f%% %8llu %8llu\n",
+      name.c_str(), g.node_count(), t, s.init_seconds, s.search_seconds, verify_seconds,
+      lemon_seconds, lemon_seconds / t, t_ps, t / t_ps,
+      double(result.total_cost) / kDefaultCostScale / (g.node_count() / 2),
+      100.0 * s.free_after_init / g.node_count(), (unsigned long long)s.blossoms_shrunk,
+      (unsigned long long)s.queue_pushes);
+  std::fflush(stdout);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string> files;
+  bool with_lemon = true;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--no-lemon") {
+      with_lemon = false;
+    } else {
+      files.push_back(arg);
+    }
+  }
+  if (files.empty()) {
+    for (const char* mesh : {"armadillo.obj.gz", "nefertiti.obj.gz", "fertility-sub3.ply.gz",
+                             "rocker-arm-sub3.ply.gz", "armadillo-sub2.ply.gz"}) {
+      const std::string path = std::string(PETERSEN_SHARED_MESHES) + "/" + mesh;
+      if (std::filesystem::exists(path)) files.push_back(path);
+    }
+  }
+  std::printf("%-24s %9s %8s %8s %8s %8s %8s %7s %7s %7s %8s %7s %8s %8s\n", "mesh", "nodes",
+              "ours_s", "init_s", "search_s", "verify_s", "lemon_s", "xfaster", "ps_s", "x_ps",
+              "mean_deg", "free0", "blossoms", "pushes");
+  for (const std::string& file : files) {
+    measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon);
+  }
+}

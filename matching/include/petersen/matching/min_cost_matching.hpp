@@ -1,0 +1,118 @@
+#pragma once
+// Exact minimum-cost perfect matching with a certificate of optimality (issue 14), and the
+// minimum-cost matching among the maximum ones for graphs without a perfect matching.
+//
+// The certificate is a dual solution of Edmonds' perfect-matching polytope in its odd-cut form:
+// a value per node and per odd set S of 3+ nodes (the blossoms), such that for every edge e
+//   sum over the sets S (nodes included) with exactly one end of e in S of y_S  <=  2·cost(e),
+// every set value is >= 0, equality holds on matched edges, and every set with a positive value
+// holds (|S| - 1)/2 matched edges. Then 2·total = sum of all values proves the matching optimal.
+// The values are in half cost units (2·cost), so they are integers: integer costs have a
+// half-integral optimal dual. verify_min_cost_matching (petersen/matching/verify_min_cost.hpp)
+// checks all of it, sharing no code with the solver.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "petersen/graph/csr_graph.hpp"
+#include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
+#include "petersen/matching/matching.hpp"
+
+namespace petersen {
+
+using Cost = std::int64_t;
+
+/// The largest |cost| accepted: the solver's duals and sums stay far inside 64 bits.
+inline constexpr Cost kMaxCost = Cost{1} << 40;
+
+/// Degrees (or any real cost) to integers: round(cost · scale). The default scale 2^16 keeps
+/// the quad measure (0..270°) exact to 1.5e-5°, and the front door and the LEMON peer get the
+/// same integers from the same doubles. Throws std::invalid_argument naming the first index
+/// whose cost is not finite or whose scaled value exceeds kMaxCost. O(m).
+inline constexpr double kDefaultCostScale = 65536.0;
+HugeVector<Cost> scale_costs(std::span<const double> costs, double scale = kDefaultCostScale);
+
+/// Marks "no set" in MatchingCertificate.
+inline constexpr std::uint32_t kNoSet = 0xFFFFFFFFu;
+
+/// The dual solution (see the top of this file): node_dual[v] per node, and the odd sets with a
+/// positive value as a laminar forest: set s has value set_dual[s] and lies directly inside set
+/// set_parent[s] (kNoSet: none); node v lies directly inside set node_set[v] (kNoSet: none), so
+/// the members of s are the nodes whose chain of sets passes s. A forest, not member lists:
+/// blossoms nest deeply on meshes (on armadillo's dual, 13.7k sets listed 455M members).
+struct MatchingCertificate {
+  std::vector<std::int64_t> node_dual;
+  std::vector<std::uint32_t> node_set;
+  std::vector<std::uint32_t> set_parent;
+  std::vector<std::int64_t> set_dual;
+
+  std::size_t set_count() const { return set_dual.size(); }
+};
+
+struct MinCostOptions {
+  /// Potentials start at y_v = the cheapest edge's cost at v. On: each is raised greedily and
+  /// tight edges are matched greedily (Blossom V's greedy start), then the matching is grown to
+  /// a maximum one of the tight edges (augment_matching). Off: nothing is matched at the start.
+  bool greedy_start = true;
+};
+
+struct MinCostStats {
+  double init_seconds = 0;         ///< potentials and the greedy matching of tight edges
+  double search_seconds = 0;       ///< the alternating-tree searches (one per augmentation)
+  double certificate_seconds = 0;  ///< collecting the odd sets
+  std::uint32_t free_after_init = 0;
+  std::uint64_t searches = 0;         ///< alternating trees grown, one augmentation each
+  std::uint64_t nodes_labelled = 0;   ///< even/odd labels given to top-level blossoms
+  std::uint64_t dual_updates = 0;     ///< times a tree's potentials moved
+  std::uint64_t blossoms_shrunk = 0;  ///< odd cycles shrunk
+  std::uint64_t blossoms_expanded = 0;
+  std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
+  std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
+  std::uint64_t released_scans = 0;  ///< nodes scanned when their tree augmented
+};
+
+struct MinCostResult {
+  Matching matching;
+  Cost total_cost = 0;  ///< sum of the matched edges' costs
+  MatchingCertificate certificate;
+  MinCostStats stats;
+};
+
+/// A minimum-cost perfect matching of `graph` under `costs` (one per edge id, |cost| <=
+/// kMaxCost), with its certificate. Edmonds' primal-dual blossom algorithm grown one
+/// alternating tree at a time: each tree's dual moves lazily (one clock per tree) and the next
+/// event (an edge turning tight, an odd blossom's dual reaching zero) comes from a priority queue
+/// keyed by slack, so a search costs O(r log r) for the r edges it reaches; O(n m log n) in the
+/// worst case. Iterative throughout. Throws GraphError when the graph has no perfect matching,
+/// std::invalid_argument when costs has the wrong size or a cost out of range.
+MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,
+                                        const MinCostOptions& options = {});
+MinCostResult min_cost_perfect_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                        const MinCostOptions& options = {});
+
+/// The result of min_cost_maximum_matching. The certificate is of the doubled graph described
+/// there, whose nodes are v and n + v and whose edges are e, m + e and 2m + v.
+struct MinCostMaximumResult {
+  Matching matching;                ///< of the input graph
+  std::uint32_t size = 0;           ///< matched edges: the maximum
+  Cost total_cost = 0;              ///< the minimum among matchings of that size
+  Cost unmatched_cost = 0;          ///< K, the cost of an edge v–v' of the doubled graph
+  MatchingCertificate certificate;  ///< of the doubled graph's perfect matching
+  MinCostStats stats;
+};
+
+/// A minimum-cost matching among the maximum-cardinality matchings of `graph`, by reduction:
+/// the doubled graph H has G, a copy G' (node n + v, edge m + e, same costs) and an edge v–v' of
+/// cost K = 1 + floor(n/2)·(max(0, max cost) − min(0, min cost)) per node. A perfect matching
+/// of H is M ∪ M' plus v–v' for the u nodes M leaves free, costing 2·cost(M) + K·u; K exceeds
+/// the cost difference of any two matchings of G, so the cheapest perfect matching of H leaves
+/// the fewest nodes free, and among those costs the least. The certificate proves that perfect
+/// matching of H optimal; verify_min_cost_maximum_matching rebuilds H and checks it. Throws
+/// std::invalid_argument when costs has the wrong size, a cost is out of range or K·n would
+/// leave 62 bits. Twice the work of min_cost_perfect_matching on a graph of n nodes.
+MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                               const MinCostOptions& options = {});
+
+}  // namespace petersen

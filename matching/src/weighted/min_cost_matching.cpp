@@ -1,0 +1,132 @@
+#include "petersen/matching/min_cost_matching.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "../stopwatch.hpp"
+#include "blossom_solver.hpp"
+
+namespace petersen {
+
+namespace {
+
+void check_costs(std::span<const Cost> costs, std::uint32_t edge_count, Cost limit) {
+  if (costs.size() != edge_count) {
+    throw std::invalid_argument("min-cost matching: " + std::to_string(costs.size()) +
+                                " costs for " + std::to_string(edge_count) + " edges");
+  }
+  for (std::size_t e = 0; e < costs.size(); ++e) {
+    if (costs[e] > limit || costs[e] < -limit) {
+      throw std::invalid_argument("min-cost matching: cost " + std::to_string(costs[e]) +
+                                  " of edge " + std::to_string(e) + " is out of range");
+    }
+  }
+}
+
+template <class Graph>
+MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
+                    const MinCostOptions& options) {
+  MinCostResult result;
+  Stopwatch init;
+  weighted_detail::BlossomSolver<Graph> solver(graph, costs, result.matching.mate_edge,
+                                               result.stats);
+  if (options.greedy_start) solver.greedy_start();
+  result.stats.init_seconds = init.seconds();
+  result.stats.free_after_init = result.matching.unmatched_count();
+  Stopwatch searches;
+  solver.run();
+  result.stats.search_seconds = searches.seconds();
+  Stopwatch certificate;
+  result.certificate = solver.certificate();
+  result.stats.certificate_seconds = certificate.seconds();
+  for (NodeId v = 0; v < graph.node_count(); ++v) {
+    const EdgeId e = result.matching.mate_edge[v];
+    if (graph.endpoints(e)[0] == v) result.total_cost += costs[e];
+  }
+  return result;
+}
+
+}  // namespace
+
+HugeVector<Cost> scale_costs(std::span<const double> costs, double scale) {
+  HugeVector<Cost> scaled(costs.size());
+  for (std::size_t e = 0; e < costs.size(); ++e) {
+    const double value = std::round(costs[e] * scale);
+    if (!std::isfinite(value) || std::abs(value) > static_cast<double>(kMaxCost)) {
+      throw std::invalid_argument("scale_costs: cost " + std::to_string(costs[e]) + " at index " +
+                                  std::to_string(e) + " is not finite or exceeds 2^40 scaled");
+    }
+    scaled[e] = static_cast<Cost>(value);
+  }
+  return scaled;
+}
+
+MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,
+                                        const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  return solve(graph, costs, options);
+}
+
+MinCostResult min_cost_perfect_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                        const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  return solve(graph, costs, options);
+}
+
+MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                               const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  const std::uint32_t n = graph.node_count(), m = graph.edge_count();
+  if (n > 0x7FFFFFFFu || std::uint64_t{2} * m + n > 0xFFFFFFFEu) {
+    throw std::invalid_argument("min_cost_maximum_matching: the doubled graph needs 32-bit ids");
+  }
+  Cost most = 0, least = 0;
+  for (Cost c : costs) {
+    most = std::max(most, c);
+    least = std::min(least, c);
+  }
+  // K = 1 + floor(n/2)·(max(0, most) − min(0, least)), kept below 2^52 so that the doubled
+  // graph's duals (about K) and their doubling stay far inside 64 bits.
+  // n/2 < 2^31 and most − least <= 2^41, so k fits in 64 bits unsigned.
+  const std::uint64_t k = 1 + std::uint64_t{n / 2} * static_cast<std::uint64_t>(most - least);
+  if (k >= std::uint64_t{1} << 52) {
+    throw std::invalid_argument("min_cost_maximum_matching: the unmatched-node cost exceeds 2^52");
+  }
+  const Cost unmatched_cost = static_cast<Cost>(k);
+  std::vector<std::array<NodeId, 2>> edges;
+  edges.reserve(std::size_t{2} * m + n);
+  for (EdgeId e = 0; e < m; ++e) edges.push_back(graph.endpoints(e));
+  for (EdgeId e = 0; e < m; ++e) {
+    const auto [a, b] = graph.endpoints(e);
+    edges.push_back({n + a, n + b});
+  }
+  for (NodeId v = 0; v < n; ++v) edges.push_back({v, n + v});
+  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges);
+  std::vector<Cost> doubled_costs(costs.begin(), costs.end());
+  doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
+  doubled_costs.insert(doubled_costs.end(), n, unmatched_cost);
+
+  MinCostResult inner = solve(doubled, doubled_costs, options);
+  MinCostMaximumResult result;
+  result.matching = Matching(n);
+  result.unmatched_cost = unmatched_cost;
+  // Both copies are optimal halves of equal cost (else the cheaper one, doubled, would beat the
+  // optimum), so the first copy is a minimum-cost maximum matching.
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = inner.matching.mate_edge[v];
+    if (e < m) {
+      result.matching.mate_edge[v] = e;
+      if (graph.endpoints(e)[0] == v) {
+        ++result.size;
+        result.total_cost += costs[e];
+      }
+    }
+  }
+  result.certificate = std::move(inner.certificate);
+  result.stats = inner.stats;
+  return result;
+}
+
+}  // namespace petersen

@@ -1,0 +1,228 @@
+// The certificate check, written apart from the solver: its own laminar-family walk, its own
+// doubled graph, 128-bit sums.
+
+#include "petersen/matching/verify_min_cost.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+namespace petersen {
+
+namespace {
+
+// __extension__: 128-bit integers are a GNU extension (g++ and clang), named once here.
+__extension__ using Wide = __int128;
+__extension__ using UWide = unsigned __int128;
+
+std::string str(Wide value) {
+  const bool negative = value < 0;
+  UWide magnitude = negative ? -static_cast<UWide>(value) : static_cast<UWide>(value);
+  std::string digits;
+  do {
+    digits.push_back(static_cast<char>('0' + static_cast<int>(magnitude % 10)));
+    magnitude /= 10;
+  } while (magnitude != 0);
+  if (negative) digits.push_back('-');
+  return {digits.rbegin(), digits.rend()};
+}
+
+CertificateCheck fail(std::string problem) {
+  return {std::move(problem)};
+}
+
+// The perfect-matching check with a 128-bit claimed total (the doubled graph's may pass 2^63).
+CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_ends,
+                               std::span<const Cost> costs, const Matching& matching,
+                               Wide total_cost, const MatchingCertificate& certificate) {
+  const std::size_t m = edge_ends.size() / 2;
+  if (edge_ends.size() % 2 != 0) return fail("odd number of edge ends");
+  if (costs.size() != m)
+    return fail("costs: " + std::to_string(costs.size()) + " for " + std::to_string(m) + " edges");
+  // The matching: perfect and consistent.
+  if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
+  Wide primal = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = matching.mate_edge[v];
+    if (e >= m)
+      return fail("node " + std::to_string(v) + " is unmatched or names edge out of range");
+    const NodeId a = edge_ends[2 * std::size_t{e}], b = edge_ends[2 * std::size_t{e} + 1];
+    if (a != v && b != v)
+      return fail("node " + std::to_string(v) + " names edge " + std::to_string(e) +
+                  ", not incident");
+    const NodeId w = a == v ? b : a;
+    if (matching.mate_edge[w] != e)
+      return fail("edge " + std::to_string(e) + " is matched at node " + std::to_string(v) +
+                  " only");
+    if (a == v) primal += costs[e];
+  }
+  if (primal != total_cost) {
+    return fail("the matched edges cost " + str(primal) + ", not " + str(total_cost));
+  }
+
+  // The sets: a forest by their parents (any family of sets given this way is laminar), each
+  // odd, of 3+ nodes, with a value >= 0, and none equal to its only child.
+  const MatchingCertificate& c = certificate;
+  if (c.node_dual.size() != n || c.node_set.size() != n)
+    return fail("node arrays have the wrong size");
+  const std::size_t sets = c.set_dual.size();
+  if (c.set_parent.size() != sets) return fail("set_parent has the wrong size");
+  for (std::size_t s = 0; s < sets; ++s) {
+    if (c.set_parent[s] != kNoSet && c.set_parent[s] >= sets)
+      return fail("set " + std::to_string(s) + " has a parent out of range");
+    if (c.set_dual[s] < 0) return fail("set " + std::to_string(s) + " has a negative value");
+  }
+  const std::vector<std::uint32_t>& parent = c.set_parent;
+  const std::vector<std::uint32_t>& innermost = c.node_set;
+  // Depths, walking each set up to a set of known depth; a walk longer than the number of sets
+  // is a cycle.
+  constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> depth(sets, kUnknown);
+  std::vector<std::uint32_t> walk;
+  for (std::size_t s = 0; s < sets; ++s) {
+    walk.clear();
+    std::uint32_t at = static_cast<std::uint32_t>(s);
+    while (at != kNoSet && depth[at] == kUnknown) {
+      if (walk.size() > sets)
+        return fail("set_parent has a cycle through set " + std::to_string(s));
+      walk.push_back(at);
+      at = parent[at];
+    }
+    std::uint32_t d = at == kNoSet ? 0 : depth[at] + 1;
+    for (std::size_t i = walk.size(); i-- > 0;) depth[walk[i]] = d++;
+  }
+  std::vector<std::uint32_t> order(sets);
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
+  std::vector<std::uint64_t> size(sets, 0), largest_child(sets, 0);
+  for (NodeId v = 0; v < n; ++v) {
+    if (innermost[v] == kNoSet) continue;
+    if (innermost[v] >= sets)
+      return fail("node " + std::to_string(v) + " names a set out of range");
+    ++size[innermost[v]];
+  }
+  for (std::size_t i = sets; i-- > 0;) {  // deepest first: children before parents
+    const std::uint32_t s = order[i];
+    if (size[s] < 3 || size[s] % 2 == 0)
+      return fail("set " + std::to_string(s) + " has " + std::to_string(size[s]) +
+                  " nodes, not an odd 3+");
+    if (largest_child[s] == size[s])
+      return fail("set " + std::to_string(s) + " equals one of its subsets");
+    if (parent[s] != kNoSet) {
+      size[parent[s]] += size[s];
+      largest_child[parent[s]] = std::max(largest_child[parent[s]], size[s]);
+    }
+  }
+  std::vector<Wide> chain(sets, 0);  // the values of s and every set above it
+  for (std::uint32_t s : order)
+    chain[s] = c.set_dual[s] + (parent[s] == kNoSet ? 0 : chain[parent[s]]);
+
+  // The smallest set holding both u and v (kNoSet: none).
+  auto common = [&](NodeId u, NodeId v) {
+    std::uint32_t a = innermost[u], b = innermost[v];
+    while (a != b) {
+      if (a == kNoSet || (b != kNoSet && depth[b] > depth[a])) std::swap(a, b);
+      a = parent[a];
+    }
+    return a;
+  };
+  auto total_over = [&](NodeId v) {
+    return Wide{c.node_dual[v]} + (innermost[v] == kNoSet ? 0 : chain[innermost[v]]);
+  };
+  // Reduced costs; matched edges are tight; count the matched edges inside each set.
+  std::vector<std::uint64_t> inside(sets, 0);
+  for (std::size_t e = 0; e < m; ++e) {
+    const NodeId u = edge_ends[2 * e], v = edge_ends[2 * e + 1];
+    if (u >= n || v >= n || u == v) return fail("edge " + std::to_string(e) + " has bad ends");
+    const std::uint32_t both = common(u, v);
+    const Wide shared = both == kNoSet ? 0 : chain[both];
+    const Wide reduced = 2 * Wide{costs[e]} - (total_over(u) + total_over(v) - 2 * shared);
+    if (reduced < 0)
+      return fail("edge " + std::to_string(e) + " has reduced cost " + str(reduced) + " < 0");
+    const bool matched = matching.mate_edge[u] == e;
+    if (matched && reduced != 0)
+      return fail("matched edge " + std::to_string(e) + " is not tight (reduced cost " +
+                  str(reduced) + ")");
+    if (matched && both != kNoSet) ++inside[both];
+  }
+  // Children before parents: each set's count includes its subsets'.
+  for (std::size_t i = sets; i-- > 0;) {
+    const std::uint32_t s = order[i];
+    if (parent[s] != kNoSet) inside[parent[s]] += inside[s];
+    if (c.set_dual[s] > 0 && inside[s] != (size[s] - 1) / 2) {
+      return fail("set " + std::to_string(s) + " has a positive value but holds " +
+                  std::to_string(inside[s]) + " matched edges, not " +
+                  std::to_string((size[s] - 1) / 2));
+    }
+  }
+  Wide dual = 0;
+  for (std::int64_t y : c.node_dual) dual += y;
+  for (std::int64_t y : c.set_dual) dual += y;
+  if (dual != 2 * primal)
+    return fail("the values sum to " + str(dual) + ", not 2·cost = " + str(2 * primal));
+  return {};
+}
+
+}  // namespace
+
+CertificateCheck verify_min_cost_perfect_matching(std::uint32_t n,
+                                                  std::span<const NodeId> edge_ends,
+                                                  std::span<const Cost> costs,
+                                                  const Matching& matching, Cost total_cost,
+                                                  const MatchingCertificate& certificate) {
+  return check_perfect(n, edge_ends, costs, matching, total_cost, certificate);
+}
+
+CertificateCheck verify_min_cost_maximum_matching(std::uint32_t n,
+                                                  std::span<const NodeId> edge_ends,
+                                                  std::span<const Cost> costs,
+                                                  const Matching& matching, Cost total_cost,
+                                                  Cost unmatched_cost,
+                                                  const MatchingCertificate& certificate) {
+  const std::size_t m = edge_ends.size() / 2;
+  if (costs.size() != m) return fail("costs: wrong size");
+  if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
+  Wide most = 0, least = 0;
+  for (Cost x : costs) {
+    most = std::max<Wide>(most, x);
+    least = std::min<Wide>(least, x);
+  }
+  const Wide needed = 1 + Wide{n / 2} * (most - least);
+  if (Wide{unmatched_cost} < needed) {
+    return fail("unmatched cost " + std::to_string(unmatched_cost) + " is below " + str(needed));
+  }
+  // H: G on 0..n-1 (edge e), G' on n..2n-1 (edge m + e), v–v' (edge 2m + v).
+  std::vector<NodeId> ends;
+  ends.reserve(4 * m + 2 * n);
+  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(edge_ends[i]);
+  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(n + edge_ends[i]);
+  for (NodeId v = 0; v < n; ++v) {
+    ends.push_back(v);
+    ends.push_back(n + v);
+  }
+  std::vector<Cost> h_costs(costs.begin(), costs.end());
+  h_costs.insert(h_costs.end(), costs.begin(), costs.end());
+  h_costs.insert(h_costs.end(), n, unmatched_cost);
+  Matching h(2 * n);
+  std::uint64_t free_nodes = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = matching.mate_edge[v];
+    if (e == kNoEdge) {
+      h.mate_edge[v] = h.mate_edge[n + v] = static_cast<EdgeId>(2 * m + v);
+      ++free_nodes;
+    } else if (e >= m) {
+      return fail("node " + std::to_string(v) + " names edge " + std::to_string(e) +
+                  " out of range");
+    } else {
+      h.mate_edge[v] = e;
+      h.mate_edge[n + v] = static_cast<EdgeId>(m + e);
+    }
+  }
+  const Wide h_total = 2 * Wide{total_cost} + Wide{unmatched_cost} * free_nodes;
+  CertificateCheck check = check_perfect(2 * n, ends, h_costs, h, h_total, certificate);
+  if (!check.ok()) check.problem = "doubled graph: " + check.problem;
+  return check;
+}
+
+}  // namespace petersen

@@ -1,0 +1,88 @@
+// The quad measure of issue 14 (worst-corner deviation from 90°) on hand-made quads, and the
+// per-dual-edge costs against the quads quads_from_matching builds.
+
+#include "petersen/dualize/quad_quality.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+#include "petersen/dualize/quads.hpp"
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+
+namespace petersen {
+namespace {
+
+using P = std::array<double, 3>;
+
+TEST(QuadQuality, SquareAndRectangleCostNothing) {
+  EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}), 0, 1e-12);
+  EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {0, 1, 0}), 0, 1e-12);
+  // Either orientation: the normal follows the corner order.
+  EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}), 0, 1e-12);
+  // A rectangle tilted in space.
+  EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {1, 1, 0}, {1, 1, 2}, {0, 0, 2}), 0, 1e-12);
+}
+
+TEST(QuadQuality, RhombusCostsItsAngleDefect) {
+  // Interior angles 60° and 120°: worst deviation 30°.
+  const double h = std::sqrt(3.0) / 2;
+  EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {1.5, h, 0}, {0.5, h, 0}), 30, 1e-9);
+}
+
+TEST(QuadQuality, NonConvexQuadCostsMoreThanNinety) {
+  // A dart: the corner at (1, 0.3) is reflex (its interior angle is above 180°).
+  const double cost = quad_corner_deviation({0, 0, 0}, {2, 0, 0}, {1, 0.3, 0}, {1, 2, 0});
+  EXPECT_GT(cost, 90);
+  EXPECT_LE(cost, 270);
+}
+
+TEST(QuadQuality, DegenerateQuadsCostTheMaximumWithoutNaN) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  // Repeated corner: zero-length edge.
+  EXPECT_EQ(quad_corner_deviation({0, 0, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}), kDegenerateQuadCost);
+  // All corners on a line: the diagonals are parallel, no normal.
+  EXPECT_EQ(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {3, 0, 0}), kDegenerateQuadCost);
+  EXPECT_EQ(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {nan, 1, 0}),
+            kDegenerateQuadCost);
+  EXPECT_EQ(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {1, inf, 0}, {0, 1, 0}),
+            kDegenerateQuadCost);
+  // Huge but finite coordinates: the cross product overflows.
+  EXPECT_EQ(quad_corner_deviation({0, 0, 0}, {1e200, 0, 0}, {1e200, 1e200, 0}, {0, 1e200, 0}),
+            kDegenerateQuadCost);
+}
+
+TEST(QuadQuality, DualEdgeCostIsTheCostOfTheQuadsFromMatching) {
+  const TriangleMesh mesh = random_closed_surface(2, 60, 60, 5);
+  const Dual dual = build_dual(mesh);
+  const HugeVector<double> cost = dual_edge_quality(mesh, dual);
+  ASSERT_EQ(cost.size(), dual.graph.edge_count());
+  const Result r = perfect_matching(dual.graph);
+  const QuadMesh quads = quads_from_matching(mesh, dual.graph, r.matching);
+  std::size_t q = 0;
+  std::size_t checked = 0;
+  for (FaceId t = 0; t < mesh.triangles.size(); ++t) {
+    const EdgeId e = r.matching.mate_edge[t];
+    if (dual.graph.endpoints(e)[0] != t) continue;
+    const auto& c = quads.quads[q++];
+    const auto& p = mesh.positions;
+    // Two triangles sharing two edges (a parallel dual edge) may give quads_from_matching the
+    // other shared edge's quad; such pairs are skipped.
+    const auto& a = mesh.triangles[t];
+    const auto& b = mesh.triangles[dual.graph.other_end(e, t)];
+    int shared = 0;
+    for (VertexId x : a)
+      for (VertexId y : b) shared += x == y;
+    if (shared != 2) continue;
+    EXPECT_DOUBLE_EQ(cost[e], quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
+    ++checked;
+  }
+  EXPECT_EQ(q, quads.quads.size());
+  EXPECT_GT(checked, quads.quads.size() / 2);
+}
+
+}  // namespace
+}  // namespace petersen

@@ -1,0 +1,298 @@
+// Exact minimum-cost matching (issue 14): every answer's certificate goes through the
+// independent verifier, and its cost is compared with brute force on tiny graphs and with
+// LEMON's MaxWeightedPerfectMatching on generated cubic bridgeless and general graphs; the
+// verifier rejects perturbed answers.
+
+#include "petersen/matching/min_cost_matching.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <optional>
+
+#include "peers.hpp"
+#include "petersen/graph/csr_graph.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
+#include "petersen/testing/arbitrary.hpp"
+
+namespace petersen {
+namespace {
+
+// A cubic bridgeless multigraph drawn by petersen::testing, and its edges as a list.
+CubicGraph any_cubic_bridgeless() {
+  return *rc::gen::arbitrary<CubicGraph>();
+}
+std::vector<std::array<std::uint32_t, 2>> edge_list(const CubicGraph& g) {
+  std::vector<std::array<std::uint32_t, 2>> edges(g.edge_count());
+  for (EdgeId e = 0; e < g.edge_count(); ++e) edges[e] = g.endpoints(e);
+  return edges;
+}
+using Edges = std::vector<std::array<std::uint32_t, 2>>;
+
+// The cheapest matching of the nodes not yet covered, among those of the most edges: returns
+// (edges matched, cost); by recursion over the lowest free node (depth <= n/2, tiny graphs).
+struct Best {
+  int size;
+  Cost cost;
+};
+Best brute_force(std::uint32_t n, const Edges& edges, std::span<const Cost> costs,
+                 std::vector<char>& used, bool perfect_only) {
+  NodeId v = 0;
+  while (v < n && used[v]) ++v;
+  if (v == n) return {0, 0};
+  std::optional<Best> best;
+  auto consider = [&](Best b) {
+    if (b.size < 0) return;
+    if (!best || b.size > best->size || (b.size == best->size && b.cost < best->cost)) best = b;
+  };
+  used[v] = 1;
+  if (!perfect_only) consider(brute_force(n, edges, costs, used, false));  // v stays free
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    const auto [a, b] = edges[e];
+    if (a != v && b != v) continue;
+    const NodeId w = a == v ? b : a;
+    if (used[w]) continue;
+    used[w] = 1;
+    Best rest = brute_force(n, edges, costs, used, perfect_only);
+    used[w] = 0;
+    if (rest.size >= 0) consider({rest.size + 1, rest.cost + costs[e]});
+  }
+  used[v] = 0;
+  return best ? *best : Best{-1, 0};  // -1: no perfect matching of the rest
+}
+
+std::vector<Cost> random_costs(std::size_t m, Cost low, Cost high) {
+  return *rc::gen::container<std::vector<Cost>>(m, rc::gen::inRange<Cost>(low, high + 1));
+}
+
+Edges random_edges(std::uint32_t n, std::uint32_t m) {
+  Edges edges;
+  for (std::uint32_t i = 0; i < m; ++i) {
+    const auto a = *rc::gen::inRange<std::uint32_t>(0, n);
+    const auto b = *rc::gen::inRange<std::uint32_t>(0, n);
+    if (a != b) edges.push_back({a, b});
+  }
+  return edges;
+}
+
+std::span<const NodeId> ends_of(const CsrGraph& g) {
+  return g.edge_ends();
+}
+
+RC_GTEST_PROP(MinCostPerfect, TinyGraphsMatchBruteForce, ()) {
+  const auto n = 2 * *rc::gen::inRange<std::uint32_t>(1, 6);
+  const Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
+  const std::vector<Cost> costs = random_costs(edges.size(), -30, 60);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  std::vector<char> used(n, 0);
+  const Best best = brute_force(n, edges, costs, used, true);
+  if (best.size < 0) {
+    RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs), GraphError);
+    return;
+  }
+  const MinCostResult r = min_cost_perfect_matching(g, costs);
+  RC_ASSERT(r.total_cost == best.cost);
+  const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
+                                                                  r.total_cost, r.certificate);
+  RC_ASSERT(check.ok());
+}
+
+RC_GTEST_PROP(MinCostPerfect, CubicBridgelessEqualsLemonAndIsCertified, ()) {
+  const CubicGraph g = any_cubic_bridgeless();
+  const Edges edges = edge_list(g);
+  const Cost high = *rc::gen::element<Cost>(1, 10, 1000, 1 << 24);
+  const std::vector<Cost> costs = random_costs(edges.size(), 0, high);
+  const bool greedy = *rc::gen::arbitrary<bool>();
+  const MinCostResult r = min_cost_perfect_matching(g, costs, {.greedy_start = greedy});
+  RC_ASSERT(verify_perfect_matching(g, r.matching).ok());
+  const auto lemon = testing::lemon_min_cost_perfect(g.node_count(), edges, costs);
+  RC_ASSERT(lemon.has_value());
+  RC_ASSERT(r.total_cost == *lemon);
+  const CertificateCheck check = verify_min_cost_perfect_matching(
+      g.node_count(), g.edge_ends(), costs, r.matching, r.total_cost, r.certificate);
+  RC_ASSERT(check.ok());
+  RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
+}
+
+RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
+  // A random perfect matching plus random edges, so most graphs with an even number of nodes
+  // have one; odd ones have none; negative costs too, with and without the greedy start.
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 120);
+  Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 4 * n));
+  if (*rc::gen::arbitrary<bool>()) {
+    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
+  }
+  const std::vector<Cost> costs = random_costs(edges.size(), -100, 100);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>()};
+  const auto lemon = testing::lemon_min_cost_perfect(n, edges, costs);
+  if (!lemon) {
+    RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs, options), GraphError);
+    return;
+  }
+  const MinCostResult r = min_cost_perfect_matching(g, costs, options);
+  RC_ASSERT(r.total_cost == *lemon);
+  const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
+                                                                  r.total_cost, r.certificate);
+  RC_ASSERT(check.ok());
+  RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
+}
+
+RC_GTEST_PROP(MinCostMaximum, TinyGraphsMatchBruteForce, ()) {
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 11);
+  const Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 2 * n));
+  const std::vector<Cost> costs = random_costs(edges.size(), -20, 40);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  std::vector<char> used(n, 0);
+  const Best best = brute_force(n, edges, costs, used, false);
+  const MinCostMaximumResult r = min_cost_maximum_matching(g, costs);
+  RC_ASSERT(static_cast<int>(r.size) == best.size);
+  RC_ASSERT(r.total_cost == best.cost);
+  const CertificateCheck check = verify_min_cost_maximum_matching(
+      n, ends_of(g), costs, r.matching, r.total_cost, r.unmatched_cost, r.certificate);
+  RC_ASSERT(check.ok());
+}
+
+RC_GTEST_PROP(MinCostMaximum, SizeEqualsLemonMaximumAndIsCertified, ()) {
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 120);
+  const Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
+  const std::vector<Cost> costs = random_costs(edges.size(), 0, 1 << 20);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  const MinCostMaximumResult r = min_cost_maximum_matching(g, costs);
+  RC_ASSERT(r.size == testing::lemon_matching_size(n, edges));
+  const CertificateCheck check = verify_min_cost_maximum_matching(
+      n, ends_of(g), costs, r.matching, r.total_cost, r.unmatched_cost, r.certificate);
+  RC_ASSERT(check.ok());
+  // A perfect matching, when there is one, costs what LEMON's weighted optimum costs.
+  if (2 * r.size == n) RC_ASSERT(testing::lemon_min_cost_perfect(n, edges, costs) == r.total_cost);
+}
+
+// ---- the verifier rejects perturbed answers
+
+RC_GTEST_PROP(MinCostVerifier, RejectsACostlierPerfectMatching, ()) {
+  // The cardinality algorithm's matching (shape-blind) with the optimum's certificate: when it
+  // costs more, complementary slackness must fail somewhere.
+  const CubicGraph g = any_cubic_bridgeless();
+  const std::vector<Cost> costs = random_costs(g.edge_count(), 0, 1000);
+  const MinCostResult r = min_cost_perfect_matching(g, costs);
+  const Result other = perfect_matching(g, {.algorithm = Algorithm::ps});
+  Cost other_cost = 0;
+  for (EdgeId e = 0; e < g.edge_count(); ++e)
+    if (other.matching.mate_edge[g.endpoints(e)[0]] == e) other_cost += costs[e];
+  RC_PRE(other_cost > r.total_cost);
+  RC_ASSERT(!verify_min_cost_perfect_matching(g.node_count(), g.edge_ends(), costs, other.matching,
+                                              other_cost, r.certificate)
+                 .ok());
+  RC_ASSERT(!verify_min_cost_perfect_matching(g.node_count(), g.edge_ends(), costs, other.matching,
+                                              r.total_cost, r.certificate)
+                 .ok());
+}
+
+RC_GTEST_PROP(MinCostVerifier, RejectsPerturbedDuals, ()) {
+  const CubicGraph g = any_cubic_bridgeless();
+  const std::vector<Cost> costs = random_costs(g.edge_count(), 0, 1000);
+  const MinCostResult r = min_cost_perfect_matching(g, costs);
+  auto check = [&](const Matching& m, const MatchingCertificate& c) {
+    return verify_min_cost_perfect_matching(g.node_count(), g.edge_ends(), costs, m, r.total_cost,
+                                            c);
+  };
+  RC_ASSERT(check(r.matching, r.certificate).ok());
+  const NodeId v = *rc::gen::inRange<NodeId>(0, g.node_count());
+  {  // a raised potential: its matched edge or the dual objective gives it away
+    MatchingCertificate c = r.certificate;
+    c.node_dual[v] += 1;
+    RC_ASSERT(!check(r.matching, c).ok());
+  }
+  {  // a swapped matched edge at v (a matching no longer)
+    Matching m = r.matching;
+    const auto edges = g.incident_edges(v);
+    m.mate_edge[v] = edges[0] == m.mate_edge[v] ? edges[1] : edges[0];
+    RC_ASSERT(!check(m, r.certificate).ok());
+  }
+  if (r.certificate.set_count() > 0) {
+    const std::size_t s = *rc::gen::inRange<std::size_t>(0, r.certificate.set_count());
+    {  // a broken blossom: one member moved out to the enclosing set (an even set)
+      MatchingCertificate c = r.certificate;
+      auto holds = [&](NodeId v) {
+        for (std::uint32_t at = c.node_set[v]; at != kNoSet; at = c.set_parent[at])
+          if (at == s) return true;
+        return false;
+      };
+      NodeId member = 0;
+      while (!holds(member)) ++member;
+      // Out of s and of every set between it and the node: those sets all turn even.
+      c.node_set[member] = c.set_parent[s];
+      RC_ASSERT(!check(r.matching, c).ok());
+    }
+    {  // a cycle of sets
+      MatchingCertificate c = r.certificate;
+      c.set_parent[s] = static_cast<std::uint32_t>(s);
+      RC_ASSERT(!check(r.matching, c).ok());
+    }
+    {  // a blossom's dual moved to a node: same objective, infeasible or not tight somewhere
+      MatchingCertificate c = r.certificate;
+      c.set_dual[s] = -c.set_dual[s];
+      RC_ASSERT(!check(r.matching, c).ok());
+    }
+  }
+  RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
+}
+
+// ---- hand-built cases, optimum by brute force
+
+TEST(MinCostPerfect, TwoTrianglesJoinedNeedABlossom) {
+  // Triangles 0-1-2 and 3-4-5 with cheap inner edges and a costly bridge 2-3: every perfect
+  // matching uses the bridge, and the optimal dual needs the triangles as odd sets.
+  const Edges edges = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}, {2, 3}};
+  const std::vector<Cost> costs = {1, 5, 7, 2, 3, 9, 100};
+  const CsrGraph g = CsrGraph::from_edges(6, edges);
+  std::vector<char> used(6, 0);
+  const Best best = brute_force(6, edges, costs, used, true);
+  const MinCostResult r = min_cost_perfect_matching(g, costs, {.greedy_start = false});
+  EXPECT_EQ(r.total_cost, best.cost);
+  const CertificateCheck check = verify_min_cost_perfect_matching(6, ends_of(g), costs, r.matching,
+                                                                  r.total_cost, r.certificate);
+  EXPECT_TRUE(check.ok()) << check.problem;
+}
+
+TEST(MinCostPerfect, PetersenGraphWithDistinctCosts) {
+  const CubicGraph g = petersen_graph();
+  std::vector<Cost> costs(g.edge_count());
+  for (EdgeId e = 0; e < g.edge_count(); ++e) costs[e] = (7 * e + 3) % 11;
+  const Edges edges = edge_list(g);
+  std::vector<char> used(g.node_count(), 0);
+  const Best best = brute_force(g.node_count(), edges, costs, used, true);
+  const MinCostResult r = min_cost_perfect_matching(g, costs);
+  EXPECT_EQ(r.total_cost, best.cost);
+  const CertificateCheck check = verify_min_cost_perfect_matching(
+      g.node_count(), g.edge_ends(), costs, r.matching, r.total_cost, r.certificate);
+  EXPECT_TRUE(check.ok()) << check.problem;
+}
+
+TEST(MinCostPerfect, NoPerfectMatchingThrows) {
+  const Edges edges = {{0, 1}, {1, 2}, {2, 0}, {3, 4}, {4, 5}, {5, 3}};
+  const CsrGraph g = CsrGraph::from_edges(6, edges);
+  const std::vector<Cost> costs(edges.size(), 1);
+  EXPECT_THROW(min_cost_perfect_matching(g, costs), GraphError);
+}
+
+TEST(MinCostPerfect, RejectsBadCosts) {
+  const CubicGraph g = theta_graph();
+  EXPECT_THROW(min_cost_perfect_matching(g, std::vector<Cost>{1, 2}), std::invalid_argument);
+  EXPECT_THROW(min_cost_perfect_matching(g, std::vector<Cost>{1, 2, kMaxCost + 1}),
+               std::invalid_argument);
+}
+
+TEST(ScaleCosts, RoundsAndRejectsNonFinite) {
+  const std::vector<double> degrees = {0.0, 1.0, 90.5, 270.0};
+  const HugeVector<Cost> scaled = scale_costs(degrees);
+  for (std::size_t i = 0; i < degrees.size(); ++i)
+    EXPECT_EQ(scaled[i], static_cast<Cost>(std::llround(degrees[i] * kDefaultCostScale)));
+  const std::vector<double> bad = {1.0, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_THROW(scale_costs(bad), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace petersen
