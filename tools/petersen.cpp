@@ -42,7 +42,7 @@ int info(const std::string& path) {
 }
 
 struct QuadArgs {
-  std::string input, output, algorithm = "ps", augment = "local", stats_json;
+  std::string input, output, algorithm = "ps", augment = "local", objective = "pairs", stats_json;
   std::uint64_t seed = 1;
   bool all_quad = false;
   std::optional<double> sharp_angle;
@@ -54,12 +54,16 @@ int quad(const QuadArgs& args) {
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
+  const auto objective = parse_objective(args.objective);
+  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
   mesh_format_of(args.output);  // an unknown output format fails before any work
   RunReport report;
   report.input = args.input;
   report.output = args.output;
-  report.algorithm = args.algorithm;
-  if (*algorithm == Algorithm::sg || *algorithm == Algorithm::ps || *algorithm == Algorithm::lrs) {
+  report.algorithm = *objective == Objective::quality ? "min-cost" : args.algorithm;
+  if (*objective == Objective::pairs &&
+      (*algorithm == Algorithm::sg || *algorithm == Algorithm::ps ||
+       *algorithm == Algorithm::lrs)) {
     report.augment = args.augment;
   }
   Clock total, clock;
@@ -75,6 +79,7 @@ int quad(const QuadArgs& args) {
                .augment = *augment,
                .seed = args.seed,
                .all_quad = args.all_quad,
+               .objective = *objective,
                .cuts = {.sharp_angle_degrees = args.sharp_angle, .user_edges = keep_edges},
                .peer = &lemon_peer::maximum_matching});
   } catch (const MeshError& e) {
@@ -164,6 +169,11 @@ int main(int argc, char** argv) {
                    "augmenting-path variant for sg and ps: local or faithful")
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
+      ->capture_default_str();
+  quad_cmd
+      ->add_option("--objective", quad_args.objective,
+                   "pairs (any maximum pairing, by --algorithm) or quality (the exact "
+                   "minimum-cost pairing by quad shape, certified)")
       ->capture_default_str();
   quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
                        "never pair across an edge whose triangles fold by more than DEG degrees");

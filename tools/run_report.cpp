@@ -75,6 +75,11 @@ void print_summary(std::FILE* out, const RunReport& r) {
                s.maximum_certified ? "certified" : "NOT certified");
   std::fprintf(out, "pairs       %" PRIu64 "  triangles left %" PRIu64 " (%.4f s)\n", s.pairs,
                s.triangles_left, s.quads_seconds);
+  std::fprintf(out,
+               "quality     median %.2f, 95th percentile %.2f degrees, %" PRIu64
+               " non-convex, total %.4f%s\n",
+               s.quality_median, s.quality_p95, s.nonconvex_quads, s.objective_total,
+               s.optimality_certified ? " (minimum certified)" : "");
   if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
     std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",
                  s.added_vertices, s.split_quads, s.all_quad_seconds);
@@ -132,6 +137,11 @@ void write_json(std::FILE* out, const RunReport& r) {
   d("verify_seconds", s.verify_seconds);
   std::fprintf(out, "  \"maximum_certified\": %s,\n", s.maximum_certified ? "true" : "false");
   u("pairs", s.pairs);
+  d("quality_median", s.quality_median);
+  d("quality_p95", s.quality_p95);
+  u("nonconvex_quads", s.nonconvex_quads);
+  d("objective_total", s.objective_total);
+  std::fprintf(out, "  \"optimality_certified\": %s,\n", s.optimality_certified ? "true" : "false");
   u("triangles_left", s.triangles_left);
   d("quads_seconds", s.quads_seconds);
   u("added_vertices", s.added_vertices);

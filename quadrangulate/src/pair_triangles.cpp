@@ -4,10 +4,13 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/augment.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
 
 namespace petersen::quad_detail {
 
@@ -218,29 +221,75 @@ bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<
   return true;
 }
 
-// Closed components by `algorithm` (perfect, by Petersen's theorem), verified.
+// Closed components by `algorithm` (perfect, by Petersen's theorem), or with `costs` by the
+// exact minimum-cost perfect matching; verified, and its certificate checked.
 void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
-                 const QuadOptions& options, Algorithm algorithm, TrianglePairing& pairing,
-                 QuadStats& stats, Stopwatch& clock) {
-  // No bridge test: a bridge would leave a set of triangles whose only boundary is one edge,
-  // but a boundary (mod 2) has no ends, and one edge has two.
-  Result result = perfect_matching(cubic, {.algorithm = algorithm,
-                                           .augment = options.augment,
-                                           .seed = options.seed,
-                                           .validate = false,
-                                           .peer = options.peer});
-  add_run(stats.matching, result.stats);
-  clock.lap();
-  if (MatchingCheck check = verify_perfect_matching(cubic, result.matching); !check.ok()) {
-    throw std::logic_error("internal error: " + std::string(to_string(algorithm)) +
+                 std::span<const Cost> costs, const QuadOptions& options, Algorithm algorithm,
+                 TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
+  Matching matching;
+  std::string name(to_string(algorithm));
+  if (costs.empty()) {
+    // No bridge test: a bridge would leave a set of triangles whose only boundary is one edge,
+    // but a boundary (mod 2) has no ends, and one edge has two.
+    Result result = perfect_matching(cubic, {.algorithm = algorithm,
+                                             .augment = options.augment,
+                                             .seed = options.seed,
+                                             .validate = false,
+                                             .peer = options.peer});
+    add_run(stats.matching, result.stats);
+    matching = std::move(result.matching);
+    clock.lap();
+  } else {
+    name = "the minimum-cost matching";
+    MinCostResult result = min_cost_perfect_matching(cubic, costs);
+    stats.matching.initial_seconds += result.stats.init_seconds;
+    stats.matching.unpaired_after_initial += result.stats.free_after_init;
+    stats.matching.augment_seconds +=
+        result.stats.search_seconds + result.stats.certificate_seconds;
+    stats.matching.augmenting_paths += result.stats.searches;
+    stats.matching.blossoms += result.stats.blossoms_shrunk;
+    stats.matching.nodes_labelled += result.stats.nodes_labelled;
+    clock.lap();
+    if (CertificateCheck check = verify_min_cost_perfect_matching(
+            cubic.node_count(), cubic.edge_ends(), costs, result.matching, result.total_cost,
+            result.certificate);
+        !check.ok()) {
+      throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
+                             check.problem);
+    }
+    pairing.objective_units += result.total_cost;
+    matching = std::move(result.matching);
+  }
+  if (MatchingCheck check = verify_perfect_matching(cubic, matching); !check.ok()) {
+    throw std::logic_error("internal error: " + name +
                            " returned a matching that is not perfect: " + check.message);
   }
   for (NodeId v = 0; v < cubic.node_count(); ++v) {
-    pairing.partner[node_of.empty() ? v : node_of[v]] =
-        node_of.empty() ? cubic.other_end(result.matching.mate_edge[v], v)
-                        : node_of[cubic.other_end(result.matching.mate_edge[v], v)];
+    const NodeId w = cubic.other_end(matching.mate_edge[v], v);
+    pairing.partner[node_of.empty() ? v : node_of[v]] = node_of.empty() ? w : node_of[w];
   }
   stats.verify_seconds += clock.lap();
+}
+
+// The cost of each pairable edge: the quad_corner_deviation of the quad its triangles make, in
+// the first triangle's orientation (as the output quad), scaled to the solver's integers.
+HugeVector<Cost> pair_costs(const PairableGraph& graph, const PolygonMesh& mesh) {
+  HugeVector<double> degrees(graph.edge_count());
+  const auto& p = mesh.positions;
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      const EdgeId e = graph.node_edges[3 * std::size_t{v} + k];
+      if (e == kNoEdge || graph.edge_ends[2 * std::size_t{e}] != v) continue;
+      const auto t1 = mesh.face(graph.face_of(v));
+      const auto t2 = mesh.face(graph.face_of(graph.edge_ends[2 * std::size_t{e} + 1]));
+      const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
+      const VertexId d = t2[0] != a && t2[0] != b   ? t2[0]
+                         : t2[1] != a && t2[1] != b ? t2[1]
+                                                    : t2[2];
+      degrees[e] = quad_corner_deviation(p[a], p[d], p[b], p[c]);
+    }
+  }
+  return scale_costs(degrees);
 }
 
 }  // namespace
@@ -253,17 +302,22 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   pairing.partner.assign(n, kNoNode);
   const Algorithm closed_algorithm =
       options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
+  const bool quality = options.objective == Objective::quality;
+  const bool use_lrs = options.algorithm == Algorithm::lrs && !quality;
+  const HugeVector<Cost> costs = quality ? pair_costs(graph, mesh) : HugeVector<Cost>{};
+  stats.dual_seconds += clock.lap();
 
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.
-  if (graph.cubic && options.algorithm != Algorithm::lrs) {
+  if (graph.cubic && !use_lrs) {
     const Components components = components_of(graph);
     stats.components = stats.closed_components = components.closed.size();
     CubicGraph cubic =
         CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
     stats.dual_seconds += clock.lap();
-    pair_closed(cubic, {}, options, closed_algorithm, pairing, stats, clock);
+    pair_closed(cubic, {}, costs, options, closed_algorithm, pairing, stats, clock);
     stats.maximum_certified = true;
+    stats.optimality_certified = quality;
     return pairing;
   }
 
@@ -275,7 +329,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   }
   for (std::uint8_t closed : components.closed) stats.closed_components += closed;
 
-  if (options.algorithm == Algorithm::lrs && !closed_nodes.empty()) {
+  if (use_lrs && !closed_nodes.empty()) {
     // Each closed component on its own; those lrs cannot take stay for ps.
     std::vector<NodeId> by_component = closed_nodes;
     std::stable_sort(by_component.begin(), by_component.end(), [&](NodeId a, NodeId b) {
@@ -313,8 +367,12 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     }
     const CubicGraph cubic =
         CubicGraph::from_valid_incidence(std::move(node_edges), std::move(sub.edge_ends));
+    HugeVector<Cost> local_costs;
+    if (quality) {
+      for (EdgeId e : sub.edge_of) local_costs.push_back(costs[e]);
+    }
     stats.dual_seconds += clock.lap();
-    pair_closed(cubic, sub.nodes, options, closed_algorithm, pairing, stats, clock);
+    pair_closed(cubic, sub.nodes, local_costs, options, closed_algorithm, pairing, stats, clock);
   }
 
   if (!open_nodes.empty()) {
@@ -325,11 +383,30 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     }
     const CsrGraph open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
     stats.dual_seconds += clock.lap();
+    // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
+    // its size maximum, the minimum-cost one included.
     MaximumMatchingResult result = maximum_matching(open, options.augment);
     stats.matching.augmenting_paths += result.stats.augmenting_paths;
     stats.matching.blossoms += result.stats.blossoms;
     stats.matching.nodes_labelled += result.stats.nodes_labelled;
     stats.matching.augment_seconds += clock.lap();
+    if (quality) {
+      HugeVector<Cost> local_costs;
+      for (EdgeId e : sub.edge_of) local_costs.push_back(costs[e]);
+      MinCostMaximumResult cheapest = min_cost_maximum_matching(open, local_costs);
+      stats.matching.augment_seconds += clock.lap();
+      if (CertificateCheck check = verify_min_cost_maximum_matching(
+              open.node_count(), open.edge_ends(), local_costs, cheapest.matching,
+              cheapest.total_cost, cheapest.unmatched_cost, cheapest.certificate);
+          !check.ok()) {
+        throw std::logic_error(
+            "internal error: the minimum-cost maximum matching's certificate "
+            "fails: " +
+            check.problem);
+      }
+      pairing.objective_units += cheapest.total_cost;
+      result.matching = std::move(cheapest.matching);
+    }
     if (MatchingCheck check = verify_maximum_matching(open, result.matching, result.tutte_set);
         !check.ok()) {
       throw std::logic_error(
@@ -345,6 +422,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     stats.verify_seconds += clock.lap();
   }
   stats.maximum_certified = true;
+  stats.optimality_certified = quality;
   return pairing;
 }
 

@@ -1,11 +1,14 @@
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <stdexcept>
 #include <string>
 
 #include "all_quad.hpp"
 #include "pair_triangles.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen {
 
@@ -37,7 +40,37 @@ std::array<VertexId, 4> quad_of(std::span<const VertexId> t1, std::span<const Ve
   throw std::logic_error("internal error: paired triangles share no edge");
 }
 
+// The quality figures of the pairs' quads (QuadStats): median, 95th percentile, non-convex count.
+void measure_quality(std::vector<double> costs, QuadStats& stats) {
+  if (costs.empty()) return;
+  auto at = [&](double q) {
+    const auto k = static_cast<std::ptrdiff_t>(q * double(costs.size() - 1));
+    std::nth_element(costs.begin(), costs.begin() + k, costs.end());
+    return costs[static_cast<std::size_t>(k)];
+  };
+  stats.quality_median = at(0.5);
+  stats.quality_p95 = at(0.95);
+  for (double c : costs) {
+    stats.nonconvex_quads += c > 90.0;
+  }
+}
+
+constexpr std::pair<Objective, std::string_view> kObjectiveNames[] = {
+    {Objective::pairs, "pairs"}, {Objective::quality, "quality"}};
+
 }  // namespace
+
+std::string_view to_string(Objective objective) {
+  for (auto [o, name] : kObjectiveNames)
+    if (o == objective) return name;
+  return "?";
+}
+
+std::optional<Objective> parse_objective(std::string_view name) {
+  for (auto [o, n] : kObjectiveNames)
+    if (n == name) return o;
+  return std::nullopt;
+}
 
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   Stopwatch total, clock;
@@ -107,6 +140,24 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
+  // Quality of the pairs' quads (every output face of four corners made from triangles).
+  std::vector<double> costs;
+  costs.reserve(stats.pairs);
+  double total_cost = 0;
+  for (FaceId o = 0; o < out.face_count(); ++o) {
+    const auto c = out.face(o);
+    if (c.size() != 4 || (result.sources[o][1] == kNoFace && result.sources[o][0] != kNoFace &&
+                          mesh.arity(result.sources[o][0]) != 3)) {
+      continue;
+    }
+    const auto& p = out.positions;
+    costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
+    total_cost += costs.back();
+  }
+  measure_quality(std::move(costs), stats);
+  stats.objective_total = options.objective == Objective::quality
+                              ? double(pairing.objective_units) / kDefaultCostScale
+                              : total_cost;
   stats.quads_seconds = clock.lap();
 
   if (options.all_quad && stats.triangles_left > 0) {

@@ -198,10 +198,14 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
   const bool all_quad = *rc::gen::arbitrary<bool>();
+  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
   QuadResult result;
   try {
-    result = quadrangulate(
-        mesh, {.algorithm = algorithm, .seed = seed, .all_quad = all_quad, .peer = kLemon});
+    result = quadrangulate(mesh, {.algorithm = algorithm,
+                                  .seed = seed,
+                                  .all_quad = all_quad,
+                                  .objective = objective,
+                                  .peer = kLemon});
   } catch (const MeshError& e) {
     RC_ASSERT(all_quad);
     RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
@@ -211,8 +215,9 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   RC_CLASSIFY(result.stats.polygons_kept > 0, "polygons");
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::non_manifold)] > 0, "non-manifold");
   RC_CLASSIFY(result.stats.added_vertices > 0, "split");
-  const std::string problem =
-      check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs);
+  RC_ASSERT(result.stats.optimality_certified == (objective == Objective::quality));
+  const std::string problem = check_quad_result(
+      mesh, result, all_quad, algorithm == Algorithm::lrs && objective == Objective::pairs);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
 }

@@ -5,8 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "peers.hpp"
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "result_check.hpp"
 
@@ -44,7 +50,8 @@ TEST(SharedMeshes, EveryMeshConvertsWithEveryAlgorithm) {
                                 Algorithm::lemon, Algorithm::lrs}) {
       if (!small && algorithm != Algorithm::ps && algorithm != Algorithm::lrs) continue;
       SCOPED_TRACE(std::string(to_string(algorithm)));
-      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
+      const QuadResult result =
+          quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
       EXPECT_TRUE(result.stats.maximum_certified);
       EXPECT_EQ(testing::check_quad_result(mesh, result, false, algorithm == Algorithm::lrs), "");
     }
@@ -69,6 +76,29 @@ TEST(SharedMeshes, FandiskKeepsItsCreases) {
   EXPECT_EQ(testing::check_quad_result(mesh, result, false, false, cuts), "");
   const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true, .cuts = cuts});
   EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false, cuts), "");
+}
+
+// --objective quality on the closed meshes: all quads, both certificates, and the optimum LEMON's
+// weighted perfect matching finds on the dual build_dual makes, with dual_edge_quality's costs.
+TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  for (const auto& shared : testing::shared_meshes_up_to(kAllAlgorithmsUpTo / 5)) {
+    SCOPED_TRACE(shared.file);
+    const TriangleMesh triangles = read_triangle_mesh(*dir + "/" + shared.file);
+    const PolygonMesh mesh = to_polygon_mesh(triangles);
+    const QuadResult result = quadrangulate(mesh, {.objective = Objective::quality});
+    EXPECT_TRUE(result.stats.optimality_certified);
+    EXPECT_EQ(result.stats.triangles_left, 0u);
+    EXPECT_EQ(testing::check_quad_result(mesh, result, false, false), "");
+    const Dual dual = build_dual(triangles);
+    const HugeVector<Cost> costs = scale_costs(dual_edge_quality(triangles, dual));
+    std::vector<std::array<std::uint32_t, 2>> edges(dual.graph.edge_count());
+    for (EdgeId e = 0; e < edges.size(); ++e) edges[e] = dual.graph.endpoints(e);
+    const auto lemon = testing::lemon_min_cost_perfect(dual.graph.node_count(), edges, costs);
+    ASSERT_TRUE(lemon.has_value());
+    EXPECT_EQ(std::llround(result.stats.objective_total * kDefaultCostScale), *lemon);
+  }
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "petersen/dualize/mesh.hpp"
@@ -25,6 +26,14 @@
 namespace petersen {
 
 inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
+
+/// What the pairing optimises besides its size (always the maximum).
+enum class Objective {
+  pairs,    ///< nothing else: the algorithm's pairing, fastest
+  quality,  ///< the least total quad cost (quad_corner_deviation), exact and certified
+};
+std::string_view to_string(Objective objective);
+std::optional<Objective> parse_objective(std::string_view name);
 
 struct QuadOptions {
   /// The algorithm for the closed components: sg, ps, ds, gw, frink, lemon or lrs. lrs works on
@@ -41,6 +50,10 @@ struct QuadOptions {
   /// ends its path at a boundary edge instead. Input vertices never move and the surface's
   /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
   bool all_quad = false;
+  /// Objective::quality pairs by the exact minimum-cost matching (min_cost_matching.hpp) of the
+  /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
+  /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
+  Objective objective = Objective::pairs;
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
   /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
   CutOptions cuts = {};
@@ -67,6 +80,13 @@ struct QuadStats {
   std::uint64_t components = 0;          ///< components of the pairable graph
   std::uint64_t closed_components = 0;   ///< of them, those matched by `algorithm`
   bool maximum_certified = false;        ///< the pairing passed the verifier and the witness check
+  /// Objective::quality: the certificates proved the total cost minimal.
+  bool optimality_certified = false;
+  /// The quads made of two input triangles, by quad_corner_deviation in degrees: median, 95th
+  /// percentile, how many are non-convex (cost above 90), and the sum (for Objective::quality
+  /// the certified optimum, in the solver's integer units over kDefaultCostScale).
+  double quality_median = 0, quality_p95 = 0, objective_total = 0;
+  std::uint64_t nonconvex_quads = 0;
   /// Of `algorithm` on the closed components (the paper's columns), plus the augmentation of the
   /// other components in augmenting_paths, blossoms and nodes_labelled.
   Stats matching;
