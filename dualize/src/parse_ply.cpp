@@ -412,7 +412,7 @@ class PlyParser {
         face_.resize(items);
         std::memcpy(face_.data(), bytes_.data() + in.pos, 4 * items);
         for (VertexId& corner : face_) {
-          if (corner >= vertex_count_) {
+          if (corner >= vertex_count_ || (is_signed && corner > 0x7FFFFFFFu)) {
             const std::int64_t index =
                 is_signed ? std::int64_t{static_cast<std::int32_t>(corner)} : std::int64_t{corner};
             checked_index(element, i, index, fail);
