@@ -59,7 +59,8 @@ FileBytes read_raw(const std::string& path) {
   if (::fstat(file.fd, &status) != 0) fail(path, "cannot read", errno);
   // A regular file's size is known; a pipe's is found by reading (one byte more lets the read
   // that sees the end need no growth).
-  std::size_t capacity = (S_ISREG(status.st_mode) ? static_cast<std::size_t>(status.st_size) : 1 << 20) + 1;
+  std::size_t capacity =
+      (S_ISREG(status.st_mode) ? static_cast<std::size_t>(status.st_size) : 1 << 20) + 1;
   FileBytes bytes = allocate(path, capacity);
   for (;;) {
     if (bytes.size == capacity) {
@@ -132,8 +133,7 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
     if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
       // The member is decompressed again into a larger buffer: doubling bounds the waste.
       if (capacity == limit) {
-        throw MeshError(path + ": decompresses to more than " + std::to_string(limit) +
-                        " bytes (" +
+        throw MeshError(path + ": decompresses to more than " + std::to_string(limit) + " bytes (" +
                         (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
                                                                : "the machine's memory") +
                         "): corrupt or not a mesh");
@@ -152,26 +152,24 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
   return out;
 }
 
-// A new file beside the target, renamed over it by commit(); removed unless committed.
+// A new file beside the target, renamed over it by commit(). Where the file system allows it
+// (Linux's O_TMPFILE), the file has no name until commit() links it: a run killed while writing
+// leaves nothing behind. Elsewhere it is created under a unique hidden name and removed unless
+// committed.
 class TemporaryFile {
  public:
   explicit TemporaryFile(const std::string& target) : target_(target) {
-    namespace fs = std::filesystem;
-    const fs::path path(target);
-    // Unique names as mkstemp makes them, but opened with mode 0666 so the umask applies.
-    std::random_device random;
-    for (int attempt = 0; fd_ < 0; ++attempt) {
-      const std::uint64_t tag = std::uint64_t{random()} << 32 | random();
-      char hex[17];
-      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(tag));
-      // Built by appends: GCC 12 gives a false -Wrestrict on chains of operator+ here.
-      std::string name(1, '.');
-      name.append(path.filename().string()).append(".").append(hex).append(".tmp");
-      path_ = (path.parent_path() / name).string();
-      fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-      if (fd_ < 0 && (errno != EEXIST || attempt == 100)) {
-        fail(target_, "cannot create a file in its folder", errno);
-      }
+    const std::filesystem::path folder = std::filesystem::path(target).parent_path();
+    // Mode 0666 in both cases, so that the umask applies as for any new file.
+    fd_ = ::open(folder.empty() ? "." : folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd_ < 0 && errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {
+      fail(target_, "cannot create a file in its folder", errno);
+    }
+    if (fd_ < 0) {
+      create_named([&](const char* name) {
+        fd_ = ::open(name, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        return fd_ >= 0;
+      });
     }
     // A file that is replaced keeps its permissions.
     struct stat status;
@@ -183,13 +181,12 @@ class TemporaryFile {
   TemporaryFile& operator=(const TemporaryFile&) = delete;
   ~TemporaryFile() {
     if (fd_ >= 0) ::close(fd_);
-    if (!committed_) ::unlink(path_.c_str());
+    if (!committed_ && !path_.empty()) ::unlink(path_.c_str());
   }
 
   void write(std::string_view bytes) {
     while (!bytes.empty()) {
-      const ssize_t put =
-          ::write(fd_, bytes.data(), std::min<std::size_t>(bytes.size(), 1 << 30));
+      const ssize_t put = ::write(fd_, bytes.data(), std::min<std::size_t>(bytes.size(), 1 << 30));
       if (put < 0 && errno == EINTR) continue;
       if (put < 0) fail(target_, "write failed", errno);
       bytes.remove_prefix(static_cast<std::size_t>(put));
@@ -199,6 +196,13 @@ class TemporaryFile {
   // Flushed to disk before the rename, so a crash leaves the old file or the whole new one.
   void commit() {
     if (::fsync(fd_) != 0) fail(target_, "write failed", errno);
+    if (path_.empty()) {
+      // The unnamed file gets a name (through /proc: linking by descriptor needs privileges).
+      const std::string self = "/proc/self/fd/" + std::to_string(fd_);
+      create_named([&](const char* name) {
+        return ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name, AT_SYMLINK_FOLLOW) == 0;
+      });
+    }
     const int fd = fd_;
     fd_ = -1;
     if (::close(fd) != 0) fail(target_, "write failed", errno);
@@ -207,7 +211,31 @@ class TemporaryFile {
   }
 
  private:
-  std::string target_, path_;
+  // Makes path_ a new unique name beside the target, as mkstemp would, by create(name).
+  template <class Create>
+  void create_named(const Create& create) {
+    const std::filesystem::path path(target_);
+    std::random_device random;
+    for (int attempt = 0;; ++attempt) {
+      const std::uint64_t tag = std::uint64_t{random()} << 32 | random();
+      char hex[17];
+      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(tag));
+      // Built by appends: GCC 12 gives a false -Wrestrict on chains of operator+ here.
+      std::string name(1, '.');
+      name.append(path.filename().string()).append(".").append(hex).append(".tmp");
+      const std::string candidate = (path.parent_path() / name).string();
+      if (create(candidate.c_str())) {
+        path_ = candidate;
+        return;
+      }
+      if (errno != EEXIST || attempt == 100) {
+        fail(target_, "cannot create a file in its folder", errno);
+      }
+    }
+  }
+
+  std::string target_;
+  std::string path_;  // empty while the file has no name
   int fd_ = -1;
   bool committed_ = false;
 };
@@ -229,8 +257,8 @@ void write_gzip(TemporaryFile& file, const std::string& path, std::string_view b
   const HugeArray<char> out = make_huge_array<char>(bound);
   do {
     const std::string_view member = bytes.substr(0, chunk);
-    const std::size_t size = libdeflate_gzip_compress(compressor.get(), member.data(),
-                                                      member.size(), out.get(), bound);
+    const std::size_t size =
+        libdeflate_gzip_compress(compressor.get(), member.data(), member.size(), out.get(), bound);
     if (size == 0) throw MeshError(path + ": gzip compression failed");
     file.write({out.get(), size});
     bytes.remove_prefix(member.size());

@@ -365,6 +365,67 @@ class PlyParser {
     }
   }
 
+  // The layouts most tools write (write_mesh too), in the host's byte order: vertices of just x,
+  // y, z of one floating type, faces of just a uchar-counted list of int or uint. Read with
+  // fixed-size copies instead of a switch per value, with the same checks and messages as the
+  // general loop. False (nothing read) for any other layout.
+  bool read_common_layout(const Element& element, BinaryCursor& in, std::uint64_t& i,
+                          const auto& fail, const auto& need) {
+    if ((encoding_ == Encoding::big) != (std::endian::native == std::endian::big)) return false;
+    const auto& properties = element.properties;
+    if (element.name == "vertex" && properties.size() == 3 && layout_.xyz[0] == 0 &&
+        layout_.xyz[1] == 1 && layout_.xyz[2] == 2 && properties[0].type == properties[1].type &&
+        properties[1].type == properties[2].type &&
+        (properties[0].type == Type::f32 || properties[0].type == Type::f64)) {
+      const std::size_t size = size_of(properties[0].type);
+      for (; i < element.count; ++i) {
+        need(3 * size);
+        std::array<double, 3> p;
+        if (size == 8) {
+          std::memcpy(p.data(), bytes_.data() + in.pos, 24);
+        } else {
+          float xyz[3];
+          std::memcpy(xyz, bytes_.data() + in.pos, 12);
+          p = {xyz[0], xyz[1], xyz[2]};
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!std::isfinite(p[axis])) {
+            in.pos += axis * size;
+            fail(record_name(element, i) + ": non-finite " + properties[axis].name);
+          }
+        }
+        in.pos += 3 * size;
+        mesh_.positions.push_back(p);
+      }
+      return true;
+    }
+    if (element.name == "face" && properties.size() == 1 && layout_.face_list == 0 &&
+        properties[0].count_type == Type::u8 &&
+        (properties[0].type == Type::i32 || properties[0].type == Type::u32)) {
+      const bool is_signed = properties[0].type == Type::i32;
+      for (; i < element.count; ++i) {
+        need(1);
+        const std::size_t items = static_cast<unsigned char>(bytes_[in.pos]);
+        in.pos += 1;
+        check_corner_count(i, static_cast<std::int64_t>(items), fail);
+        need(4 * items);
+        face_.resize(items);
+        std::memcpy(face_.data(), bytes_.data() + in.pos, 4 * items);
+        for (VertexId& corner : face_) {
+          if (corner >= vertex_count_ || (is_signed && corner > 0x7FFFFFFFu)) {
+            const std::int64_t index =
+                is_signed ? std::int64_t{static_cast<std::int32_t>(corner)} : std::int64_t{corner};
+            checked_index(element, i, index, fail);
+          }
+        }
+        in.pos += 4 * items;
+        mesh_.add_face(face_);
+      }
+      return true;
+    }
+    return false;
+  }
+
   void read_binary(const Element& element) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
     BinaryCursor in{bytes_, lines_.pos, encoding_ == Encoding::big};
@@ -377,6 +438,10 @@ class PlyParser {
         fail("truncated in " + record_name(element, i) + " of " + std::to_string(element.count));
       }
     };
+    if (read_common_layout(element, in, i, fail, need)) {
+      lines_.pos = in.pos;
+      return;
+    }
     for (; i < element.count && !element.properties.empty(); ++i) {
       std::array<double, 3> p{};
       face_.clear();

@@ -25,8 +25,8 @@ inline bool corner_count_ok(std::uint64_t corners, FaceKinds kinds) {
 /// The complaint about face `face` whose corner count corner_count_ok refused, worded the same
 /// by every parser.
 inline std::string corner_count_error(std::uint64_t face, std::uint64_t corners) {
-  std::string what = "face " + std::to_string(face) + " has " + std::to_string(corners) +
-                     " corners; ";
+  std::string what =
+      "face " + std::to_string(face) + " has " + std::to_string(corners) + " corners; ";
   what += corners < 3 ? "a face needs at least 3" : "only triangles are supported";
   return what;
 }

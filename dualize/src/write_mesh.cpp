@@ -173,8 +173,8 @@ void write_mesh(const std::string& path, const PolygonMesh& mesh) {
     }
   }
   auto face = [&mesh](std::size_t f) { return mesh.face(static_cast<FaceId>(f)); };
-  write_view(path, MeshView<decltype(face)>{mesh.positions, mesh.face_count(),
-                                            mesh.corners.size(), max_arity, face});
+  write_view(path, MeshView<decltype(face)>{mesh.positions, mesh.face_count(), mesh.corners.size(),
+                                            max_arity, face});
 }
 
 void write_quad_mesh(const std::string& path, const QuadMesh& mesh) {
