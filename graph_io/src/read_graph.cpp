@@ -191,13 +191,13 @@ GraphFile parse_graph(std::string_view bytes, GraphFormat format, const std::str
 
 GraphFile read_graph(const std::string& path, std::optional<GraphFormat> format) {
   const GraphFormat chosen = format ? *format : graph_format_of(path);
-  std::string bytes;
+  FileBytes bytes;
   try {
     bytes = read_file_bytes(path);
   } catch (const MeshError& e) {
     throw GraphError(e.what());  // it names the path already
   }
-  return parse_graph(bytes, chosen, path);
+  return parse_graph(bytes.view(), chosen, path);
 }
 
 }  // namespace petersen

@@ -81,31 +81,59 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
     c.midpoint[slot] = m;
   };
 
-  for (FaceId s = 0; s < face_count; ++s) {
-    if (kinds[s] != FaceKind::left || used[s]) continue;
-    const auto corners = mesh.face(s);
-    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0]) {
-      throw MeshError("--all-quad: left triangle (input face " +
-                      std::to_string(result.sources[s][0]) +
-                      ") repeats a vertex; it cannot become a quad");
-    }
-    used[s] = 1;
-    // Breadth-first over pair quads not on a path yet, to the nearest free left triangle or
-    // boundary edge.
+  // A non-manifold edge's halfedges, for the last resort below: splitting it gives every face on
+  // it the midpoint.
+  std::vector<std::uint32_t> group_of(half.count(), kNoNode);
+  std::vector<std::vector<std::uint32_t>> groups;
+  {
+    const EdgeGroups edges = half.group();
+    for_each_edge_group(edges, [&](std::uint32_t first, std::uint32_t end) {
+      if (end - first < 3) return;
+      groups.emplace_back();
+      for (std::uint32_t i = first; i < end; ++i) {
+        group_of[edges.entries[i][1]] = static_cast<std::uint32_t>(groups.size() - 1);
+        groups.back().push_back(edges.entries[i][1]);
+      }
+    });
+  }
+  // Quads that got one midpoint from a split non-manifold edge and need a path of their own.
+  std::vector<FaceId> pending;
+  auto usable_at_split = [&](FaceId g) {
+    return !used[g] && (kinds[g] == FaceKind::left || kinds[g] == FaceKind::pair);
+  };
+
+  // From face s (a left triangle, or a quad with one midpoint): breadth-first over pair quads not
+  // on a path yet, to the nearest free left triangle or boundary edge; failing both, to the
+  // nearest non-manifold edge whose other faces are all free left triangles or free quads (each
+  // such quad then starts a path of its own). Splits along the path found.
+  auto join = [&](FaceId s) {
     visited.assign(1, s);
     queue.assign(1, s);
     reached_by[s] = kStart;
     FaceId target = kNoFace;
     std::uint32_t exit = kNoNode;  // the halfedge the path leaves its last face by
+    FaceId split_face = kNoFace;   // the last resort: a face beside a non-manifold edge
+    std::uint32_t split_exit = kNoNode;
     for (std::size_t head = 0; head < queue.size() && target == kNoFace; ++head) {
       const FaceId f = queue[head];
       const std::uint32_t first = half.first(f);
       for (std::uint32_t k = 0; k < mesh.arity(f) && target == kNoFace; ++k) {
         const std::uint32_t h = first + k;
-        if (half.twin[h] == kBlocked ||
-            (reached_by[f] != kStart && half.twin[reached_by[f]] == h)) {
+        if (half.twin[h] == kBlocked) {
+          if (split_face == kNoFace && group_of[h] != kNoNode) {
+            bool all_usable = true;
+            for (std::uint32_t other : groups[group_of[h]]) {
+              all_usable &=
+                  other == h || (half.face(other) != f && usable_at_split(half.face(other)));
+            }
+            if (all_usable) {
+              split_face = f;
+              split_exit = h;
+            }
+          }
           continue;
         }
+        if (reached_by[f] != kStart && half.twin[reached_by[f]] == h) continue;
         if (half.twin[h] == kBoundary) {
           target = f;
           exit = h;
@@ -124,18 +152,25 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
         }
       }
     }
+    if (target == kNoFace && split_face != kNoFace) {
+      target = split_face;
+      exit = split_exit;
+    }
     if (target == kNoFace) {
-      throw MeshError("--all-quad: left triangle (input face " +
-                      std::to_string(result.sources[s][0]) +
-                      ") can reach no other left triangle and no boundary edge across edges of two "
-                      "faces and quads not already split; no all-quad mesh on these vertices");
+      throw MeshError("--all-quad: face " + std::to_string(result.sources[s][0]) +
+                      " (input) can reach no left triangle, no boundary edge and no non-manifold "
+                      "edge it could split, across edges of two faces and quads not already "
+                      "split; no all-quad mesh on these vertices");
     }
     // Walk back from the target, splitting each edge crossed.
+    VertexId exit_midpoint = kNoNode;
     if (exit != kNoNode) {
-      cross(target, exit, midpoint_of(exit));
+      exit_midpoint = midpoint_of(exit);
+      cross(target, exit, exit_midpoint);
     } else {
       used[target] = 1;
     }
+    if (kinds[target] == FaceKind::pair) used[target] = 1;
     for (FaceId f = target; f != s;) {
       const std::uint32_t entry = reached_by[f];  // f's halfedge, twin in the previous face
       const VertexId m = midpoint_of(entry);
@@ -147,6 +182,37 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
       f = previous;
     }
     for (FaceId f : visited) reached_by[f] = kUnreached;
+    if (exit != kNoNode && group_of[exit] != kNoNode) {
+      for (std::uint32_t other : groups[group_of[exit]]) {
+        if (other == exit) continue;
+        const FaceId g = half.face(other);
+        if (!usable_at_split(g)) {  // the path itself went through it
+          throw MeshError("--all-quad: the split of a non-manifold edge beside input face " +
+                          std::to_string(result.sources[g][0]) +
+                          " meets a face already split; no all-quad mesh found");
+        }
+        cross(g, other, exit_midpoint);
+        used[g] = 1;
+        if (kinds[g] == FaceKind::pair) pending.push_back(g);
+      }
+    }
+  };
+
+  for (FaceId s = 0; s < face_count; ++s) {
+    if (kinds[s] != FaceKind::left || used[s]) continue;
+    const auto corners = mesh.face(s);
+    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0]) {
+      throw MeshError("--all-quad: left triangle (input face " +
+                      std::to_string(result.sources[s][0]) +
+                      ") repeats a vertex; it cannot become a quad");
+    }
+    used[s] = 1;
+    join(s);
+    while (!pending.empty()) {
+      const FaceId g = pending.back();
+      pending.pop_back();
+      join(g);
+    }
   }
 
   // The faces again, with every crossed face replaced by its pieces (same sources).

@@ -4,8 +4,6 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "petersen/dualize/quads.hpp"
-#include "petersen/dualize/surface_check.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/augment.hpp"
@@ -107,12 +105,24 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
 // A closed component as a triangle mesh on its own vertices, for lrs.
 struct ComponentMesh {
   TriangleMesh mesh;
-  std::vector<VertexId> vertex_of;  // local vertex -> input vertex
+  std::vector<VertexId> vertex_of;  // local vertex -> input vertex; empty: the same ids
+  VertexId input_vertex(VertexId v) const { return vertex_of.empty() ? v : vertex_of[v]; }
 };
 
 ComponentMesh component_mesh(const PolygonMesh& mesh, const PairableGraph& graph,
                              std::span<const NodeId> nodes, std::vector<VertexId>& local) {
   ComponentMesh part;
+  if (nodes.size() == graph.node_count && mesh.all_triangles()) {
+    // The whole mesh is one closed component (the common case): no renumbering.
+    part.mesh.positions = mesh.positions;
+    part.mesh.triangles.resize(nodes.size());
+    for (NodeId v = 0; v < nodes.size(); ++v) {
+      const auto corners = mesh.face(v);
+      part.mesh.triangles[v] = {corners[0], corners[1], corners[2]};
+    }
+    return part;
+  }
+  part.mesh.triangles.reserve(nodes.size());
   for (NodeId v : nodes) {
     const auto corners = mesh.face(graph.face_of(v));
     std::array<VertexId, 3> triangle;
@@ -131,18 +141,36 @@ ComponentMesh component_mesh(const PolygonMesh& mesh, const PairableGraph& graph
   return part;
 }
 
-// Why lrs cannot take a closed component: it needs one connected, orientable manifold surface.
-std::string lrs_refusal(const TriangleMesh& mesh) {
-  const SurfaceReport report = inspect_surface(mesh);
-  if (!report.closed()) return "not a closed, consistently oriented surface (non-orientable?)";
-  if (!report.pinched_vertices.empty()) return "a pinched vertex";
-  if (report.edge_components != 1) return "several components";
-  return {};
-}
-
-std::array<VertexId, 3> sorted(std::array<VertexId, 3> t) {
-  std::sort(t.begin(), t.end());
-  return t;
+// The input triangle behind each of K's triangles (kNoFace for one its flips made): K's faces are
+// numbered anew (spatially), so an unflipped one is found by its vertex set, among the input
+// triangles bucketed by their smallest vertex (a counting sort; the buckets hold a few each).
+std::vector<FaceId> input_faces_of(const TriangleMesh& part, std::span<const NodeId> nodes,
+                                   const PairableGraph& graph, const TriangleMesh& k_mesh) {
+  auto sorted = [](std::array<VertexId, 3> t) {
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  std::vector<std::uint32_t> start(part.positions.size() + 1, 0);
+  for (const auto& t : part.triangles) ++start[sorted(t)[0] + 1];
+  for (std::size_t v = 0; v < part.positions.size(); ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> bucket(part.triangles.size());
+  {
+    std::vector<std::uint32_t> next(start.begin(), start.end() - 1);
+    for (std::uint32_t i = 0; i < part.triangles.size(); ++i) {
+      bucket[next[sorted(part.triangles[i])[0]]++] = i;
+    }
+  }
+  std::vector<FaceId> input_face(k_mesh.triangles.size(), kNoFace);
+  for (FaceId f = 0; f < k_mesh.triangles.size(); ++f) {
+    const auto t = sorted(k_mesh.triangles[f]);
+    for (std::uint32_t j = start[t[0]]; j < start[t[0] + 1]; ++j) {
+      if (sorted(part.triangles[bucket[j]]) == t) {
+        input_face[f] = graph.face_of(nodes[bucket[j]]);
+        break;
+      }
+    }
+  }
+  return input_face;
 }
 
 // Runs lrs on one closed component; appends its quads with their input faces. Returns false,
@@ -151,17 +179,19 @@ bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<
                  const QuadOptions& options, std::vector<VertexId>& local, TrianglePairing& pairing,
                  QuadStats& stats) {
   ComponentMesh part = component_mesh(mesh, graph, nodes, local);
-  if (std::string why = lrs_refusal(part.mesh); !why.empty()) {
-    if (stats.lrs_fallback_components++ == 0) stats.lrs_fallback_reason = why;
+  LrsResult result;
+  try {
+    result = quadrangulate_lrs(part.mesh, {.augment = options.augment});
+  } catch (const MeshError& e) {
+    // Its surface check: lrs needs a connected, orientable manifold (no pinched vertex).
+    if (stats.lrs_fallback_components++ == 0) stats.lrs_fallback_reason = e.what();
     return false;
   }
-  LrsResult result = quadrangulate_lrs(part.mesh, {.augment = options.augment});
+  // The quads are made from a perfect matching of K's dual, so the verifier's word on the
+  // matching is all they need; K itself is checked by lrs's tests.
   if (MatchingCheck check = verify_perfect_matching(result.dual, result.matching); !check.ok()) {
     throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +
                            check.message);
-  }
-  if (QuadCheck check = check_quad_mesh(part.mesh, result.quads); !check.ok()) {
-    throw std::logic_error("internal error: lrs's quads fail their check: " + check.problem);
   }
   stats.matching.initial_seconds +=
       result.stats.contraction_seconds + result.stats.expansion_seconds;
@@ -170,34 +200,16 @@ bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<
   stats.matching.augmenting_paths += result.stats.augmenting_paths;
   stats.flipped_edges += result.stats.flipped_edges;
   stats.irreducible_vertices += result.stats.irreducible_vertices;
-  // K's faces are numbered anew (spatially); an unflipped one is found among the input's
-  // triangles by its vertex set.
   const auto& k_triangles = result.flipped_mesh.triangles;
-  std::vector<std::pair<std::array<VertexId, 3>, FaceId>> input(nodes.size()),
-      made(k_triangles.size());
-  for (std::size_t i = 0; i < nodes.size(); ++i) {
-    input[i] = {sorted(part.mesh.triangles[i]), graph.face_of(nodes[i])};
-  }
-  for (FaceId f = 0; f < k_triangles.size(); ++f) made[f] = {sorted(k_triangles[f]), f};
-  std::sort(input.begin(), input.end());
-  std::sort(made.begin(), made.end());
-  std::vector<FaceId> input_face_of(k_triangles.size(), kNoFace);
-  for (std::size_t i = 0, j = 0; i < input.size() && j < made.size();) {
-    if (input[i].first < made[j].first) {
-      ++i;
-    } else if (made[j].first < input[i].first) {
-      ++j;
-    } else {
-      input_face_of[made[j++].second] = input[i++].second;
-    }
-  }
+  const std::vector<FaceId> input_face_of =
+      input_faces_of(part.mesh, nodes, graph, result.flipped_mesh);
   // quads_from_matching makes one quad per matched edge, in order of its first triangle.
   std::size_t q = 0;
   for (FaceId t = 0; t < k_triangles.size(); ++t) {
     const auto [t1, t2] = result.dual.endpoints(result.matching.mate_edge[t]);
     if (t != t1) continue;
     LrsQuad quad;
-    for (int k = 0; k < 4; ++k) quad.corners[k] = part.vertex_of[result.quads.quads[q][k]];
+    for (int k = 0; k < 4; ++k) quad.corners[k] = part.input_vertex(result.quads.quads[q][k]);
     quad.sources = {input_face_of[t1], input_face_of[t2]};
     pairing.lrs_quads.push_back(quad);
     ++q;
@@ -271,6 +283,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     });
     std::vector<VertexId> local(mesh.positions.size(), kNoNode);
     std::vector<NodeId> left_for_ps;
+    const double matching_before = stats.matching.matching_seconds();
     for (std::size_t first = 0; first < by_component.size();) {
       std::size_t last = first + 1;
       const std::uint32_t c = components.of_node[by_component[first]];
@@ -283,7 +296,8 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     }
     std::sort(left_for_ps.begin(), left_for_ps.end());
     closed_nodes = std::move(left_for_ps);
-    clock.lap();
+    // Beside its phases, lrs builds its triangulation and K's dual: set-up, like a dual.
+    stats.dual_seconds += clock.lap() - (stats.matching.matching_seconds() - matching_before);
   }
 
   if (!closed_nodes.empty()) {

@@ -46,16 +46,27 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  PairableGraph graph = build_pairable_graph(mesh);
+  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
   stats.cuts = graph.cuts;
   stats.inconsistent_edges = graph.inconsistent_edges;
+  {
+    std::vector<std::uint8_t> referenced(mesh.positions.size(), 0);
+    for (VertexId v : mesh.corners) referenced[v] = 1;
+    std::int64_t vertices = 0;
+    for (std::uint8_t r : referenced) vertices += r;
+    stats.euler_characteristic =
+        vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);
+  }
   stats.check_seconds = clock.lap();
 
   const quad_detail::TrianglePairing pairing =
       quad_detail::pair_triangles(graph, mesh, options, stats);
+  if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
+    stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
+  }
   clock.lap();  // its phases are in stats already
 
   // Output faces in input order: a pair's quad where its first triangle was.

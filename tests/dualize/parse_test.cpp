@@ -170,7 +170,7 @@ TEST(ParsePly, BinaryErrorsNameTheElement) {
   EXPECT_ERROR(le + body.substr(0, 30), MeshFormat::ply,
                "in:4: element 'vertex' declares 3 records, more than the remaining 30 bytes");
   EXPECT_ERROR(le + body.substr(0, body.size() - 6), MeshFormat::ply,
-               "in: truncated in face 0 of 1 (byte");
+               "in: truncated in face 0 of 1: its list of 3 values runs past the end (byte");
   EXPECT_ERROR(le + binary_body(false, 3), MeshFormat::ply,
                "in: face 0: vertex index 3 out of range (3 vertices)");
   EXPECT_ERROR(le + binary_body(false, -1), MeshFormat::ply, "in: face 0: vertex index -1");

@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,9 @@ struct QuadOptions {
   /// ends its path at a boundary edge instead. Input vertices never move and the surface's
   /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
   bool all_quad = false;
+  /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
+  /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
+  CutOptions cuts;
   /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
   /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
   PeerMatcher peer = nullptr;
@@ -55,6 +59,9 @@ struct QuadStats {
   std::uint64_t added_vertices = 0;  ///< by all_quad
   std::uint64_t split_quads = 0;     ///< faces of the output made by all_quad's splits
   std::uint64_t mesh_edges = 0;
+  std::int64_t euler_characteristic = 0;  ///< referenced vertices − edges + faces, of the input
+  /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera.
+  std::optional<std::int64_t> genus;
   CutCounts cuts;                        ///< mesh edges no pair may cross, by cause
   std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
   std::uint64_t components = 0;          ///< components of the pairable graph
