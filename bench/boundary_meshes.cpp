@@ -12,6 +12,7 @@
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
 namespace {
@@ -57,6 +58,7 @@ void run(const std::string& name, const PolygonMesh& mesh) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  petersen::huge_pages::enable_pool_unless_switched_off();
   std::printf(
       "| mesh | triangles | polygons | cut edges | greedy left | pairs | left (maximum) | "
       "certified | all-quad added vertices | time s | all-quad time s |\n"

@@ -16,6 +16,7 @@
 
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace {
 
@@ -53,6 +54,7 @@ double gzip_seconds(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  petersen::huge_pages::enable_pool_unless_switched_off();
   std::vector<std::string> files(argv + 1, argv + argc);
   const std::string shared = PETERSEN_SHARED_MESHES;
   if (files.empty()) {

@@ -6,7 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
-#include "atomic_file.hpp"
+#include "file_bytes.hpp"
 #include "json_text.hpp"
 #include "petersen/graph_io/read_graph.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
@@ -144,7 +144,7 @@ int run_match(const MatchArgs& args) {
   }
   const bool write = matched.perfect || !args.require_perfect;
   clock = std::chrono::steady_clock::now();
-  if (write) write_file_atomically(args.output, matched_edge_lines(graph, matched));
+  if (write) write_file_bytes(args.output, matched_edge_lines(graph, matched));
   const double write_seconds = seconds_since(clock);
   const double total_seconds = seconds_since(start);
 

@@ -3,6 +3,8 @@
 #include <cinttypes>
 #include <string>
 
+#include "json_text.hpp"
+
 namespace petersen::cli {
 
 namespace {
@@ -11,23 +13,6 @@ double initial_paired_percent(const QuadStats& s) {
   return s.triangles == 0 ? 100.0
                           : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) /
                                 double(s.triangles);
-}
-
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
 }
 
 }  // namespace

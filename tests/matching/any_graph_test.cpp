@@ -8,9 +8,12 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <map>
 
 #include "peers.hpp"
 #include "petersen/adaptors/boost_graph.hpp"
+#include "petersen/graph/generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/testing/arbitrary.hpp"
 
@@ -94,6 +97,25 @@ RC_GTEST_PROP(BoostAdaptor, MatchesLikeEdmondsOnAnyGraph, ()) {
   RC_ASSERT(size == boost::matching_size(bg, &edmonds[0]));
   RC_ASSERT(perfect == (2 * size == g.node_count));
   if (cubic) RC_ASSERT(perfect);
+}
+
+// A graph whose vertex descriptors are not indices (listS), with an index map of the caller's.
+TEST(BoostAdaptor, TakesTheCallersVertexIndexMap) {
+  using ListGraph = boost::adjacency_list<boost::listS, boost::listS, boost::undirectedS,
+                                          boost::property<boost::vertex_index_t, int>>;
+  using ListVertex = boost::graph_traits<ListGraph>::vertex_descriptor;
+  const CubicGraph c = petersen_graph();
+  ListGraph g;
+  std::vector<ListVertex> vertex;
+  for (NodeId v = 0; v < c.node_count(); ++v) vertex.push_back(boost::add_vertex(int(v), g));
+  for (EdgeId e = 0; e < c.edge_count(); ++e)
+    boost::add_edge(vertex[c.endpoints(e)[0]], vertex[c.endpoints(e)[1]], g);
+  std::map<ListVertex, ListVertex> mate_of;
+  auto mate = boost::make_assoc_property_map(mate_of);
+  EXPECT_TRUE(perfect_matching(g, mate, get(boost::vertex_index, g)));
+  const auto index = get(boost::vertex_index, g);
+  EXPECT_TRUE(boost::is_a_matching(g, mate, index));
+  EXPECT_EQ(boost::matching_size(g, mate, index), 5u);
 }
 
 }  // namespace

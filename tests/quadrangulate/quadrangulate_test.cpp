@@ -183,7 +183,8 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   if (*rc::gen::arbitrary<bool>()) cuts.sharp_angle_degrees = *rc::gen::inRange(10, 170);
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::ps, Algorithm::gw, Algorithm::sg});
-  const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts});
+  const QuadResult result =
+      quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts, .peer = kLemon});
   RC_ASSERT(result.stats.maximum_certified);
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
   RC_LOG() << problem;
