@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "keep_edges.hpp"
 #include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
@@ -79,6 +80,8 @@ struct QuadArgs {
   std::vector<double> view;
   std::uint64_t seed = 1;
   bool all_quad = false;
+  std::optional<double> sharp_angle;
+  std::string keep_edges;
 };
 
 int quad(const QuadArgs& args) {
@@ -94,10 +97,17 @@ int quad(const QuadArgs& args) {
   RunReport report;
   report.input = args.input;
   report.output = args.output;
-  report.options = {
-      .algorithm = *algorithm, .augment = *augment, .seed = args.seed, .all_quad = args.all_quad};
+  report.options.algorithm = *algorithm;
+  report.options.augment = *augment;
+  report.options.seed = args.seed;
+  report.options.all_quad = args.all_quad;
   Clock total, clock;
   const PolygonMesh mesh = read_mesh(args.input);
+  const std::vector<std::array<VertexId, 2>> keep_edges =
+      args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
+                              : read_keep_edges(args.keep_edges);
+  report.options.cuts.sharp_angle_degrees = args.sharp_angle;
+  report.options.cuts.user_edges = keep_edges;
   report.load_seconds = clock.lap();
   QuadResult result;
   try {
@@ -202,6 +212,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
       ->capture_default_str();
+  quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
+                       "never pair across an edge whose triangles fold by more than DEG degrees");
+  quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
+                       "never pair across these edges: a file of vertex id pairs, one per line");
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,

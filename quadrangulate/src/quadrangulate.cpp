@@ -46,7 +46,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  PairableGraph graph = build_pairable_graph(mesh);
+  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;

@@ -122,6 +122,68 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
   EXPECT_EQ(quadrangulate(projective_plane(0)).stats.pairs, 5u);
 }
 
+// Each extra cut on two triangles that would otherwise pair: the square (0, 1, 2, 3) cut along
+// its diagonal 0-2, folded by 90 degrees when vertex 3 is lifted.
+TEST(Quadrangulate, ExtraCutsKeepTriangles) {
+  const PolygonMesh flat =
+      mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  const PolygonMesh folded =
+      mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 0.5, 1}}, {{0, 1, 2}, {0, 2, 3}});
+  auto left = [](const PolygonMesh& mesh, const CutOptions& cuts, CutCause cause) {
+    const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
+    EXPECT_EQ(result.stats.cuts.by_cause[int(cause)], result.stats.triangles_left / 2);
+    EXPECT_EQ(check_quad_result(mesh, result, false, false, cuts), "");
+    return result.stats.triangles_left;
+  };
+  EXPECT_EQ(left(flat, {}, CutCause::user), 0u);
+  const std::array<VertexId, 2> diagonal[] = {{2, 0}};
+  EXPECT_EQ(left(flat, {.user_edges = diagonal}, CutCause::user), 2u);
+  EXPECT_EQ(left(flat, {.sharp_angle_degrees = 30}, CutCause::sharp), 0u);
+  EXPECT_EQ(left(folded, {.sharp_angle_degrees = 30}, CutCause::sharp), 2u);
+  EXPECT_EQ(left(folded, {.sharp_angle_degrees = 100}, CutCause::sharp), 0u);
+  const std::uint32_t same_uv[] = {0, 1, 2, 0, 2, 3}, seam_uv[] = {0, 1, 2, 4, 2, 3};
+  EXPECT_EQ(left(flat, {.corner_uv = same_uv}, CutCause::uv_seam), 0u);
+  EXPECT_EQ(left(flat, {.corner_uv = seam_uv}, CutCause::uv_seam), 2u);
+  EXPECT_EQ(left(flat, {.corner_normal = seam_uv}, CutCause::normal_seam), 2u);
+  const std::uint32_t materials[] = {0, 1};
+  EXPECT_EQ(left(flat, {.face_material = materials}, CutCause::material), 2u);
+  EXPECT_EQ(left(flat, {.face_group = materials}, CutCause::group), 2u);
+  EXPECT_EQ(left(flat, {.face_smoothing = materials}, CutCause::smoothing), 2u);
+  const std::uint32_t wrong_size[] = {0};
+  EXPECT_THROW(quadrangulate(flat, {.cuts = {.face_material = wrong_size}}), MeshError);
+}
+
+// Random seams, materials, user edges and a fold threshold on mixed meshes: no pair crosses a
+// cut and the pairing is still the maximum of what is left.
+RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  const PolygonMesh mesh = random_mixed_mesh(seed, *rc::gen::inRange<std::uint32_t>(4, 300));
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
+  const auto corners = static_cast<std::uint32_t>(mesh.corners.size());
+  // UV ids: the vertex id, except at a few corners (seams); materials among three.
+  std::vector<std::uint32_t> uv(mesh.corners.begin(), mesh.corners.end());
+  for (std::uint32_t c : *rc::gen::container<std::vector<std::uint32_t>>(
+           *rc::gen::inRange<std::size_t>(0, 6), rc::gen::inRange<std::uint32_t>(0, corners))) {
+    uv[c] += corners;
+  }
+  const auto material = *rc::gen::container<std::vector<std::uint32_t>>(
+      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
+  std::vector<std::array<VertexId, 2>> user;
+  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
+    user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
+  }
+  CutOptions cuts{.user_edges = user, .corner_uv = uv, .face_material = material};
+  if (*rc::gen::arbitrary<bool>()) cuts.sharp_angle_degrees = *rc::gen::inRange(10, 170);
+  const Algorithm algorithm =
+      *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::ps, Algorithm::gw, Algorithm::sg});
+  const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts});
+  RC_ASSERT(result.stats.maximum_certified);
+  const std::string problem = check_quad_result(mesh, result, false, false, cuts);
+  RC_LOG() << problem;
+  RC_ASSERT(problem.empty());
+}
+
 // The generators' mixed meshes: closed or open, polygons, fins, pinches, flips, components.
 RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);

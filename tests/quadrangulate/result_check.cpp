@@ -1,6 +1,7 @@
 #include "result_check.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
@@ -42,8 +43,56 @@ std::int64_t euler_characteristic(const PolygonMesh& mesh) {
          std::int64_t(mesh.face_count());
 }
 
+// Whether an extra cut forbids pairing triangles f and g across their edge (a, b).
+bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, FaceId f, FaceId g, Edge e) {
+  for (const auto& [u, v] : cuts.user_edges)
+    if (edge(u, v) == e) return true;
+  auto corner = [&](FaceId face, VertexId v) {
+    const std::size_t first = mesh.all_triangles() ? 3 * std::size_t{face} : mesh.face_start[face];
+    for (std::size_t c = first; c < first + 3; ++c)
+      if (mesh.corners[c] == v) return c;
+    return first;
+  };
+  for (auto ids : {cuts.corner_uv, cuts.corner_normal}) {
+    if (ids.empty()) continue;
+    for (VertexId v : {e.first, e.second})
+      if (ids[corner(f, v)] != ids[corner(g, v)]) return true;
+  }
+  for (auto ids : {cuts.face_material, cuts.face_group, cuts.face_object, cuts.face_smoothing,
+                   cuts.face_property}) {
+    if (!ids.empty() && ids[f] != ids[g]) return true;
+  }
+  if (cuts.sharp_angle_degrees) {
+    // The angle between the normals, g's taken in f's orientation (a face that runs along the
+    // edge the same way as f is reversed).
+    auto normal = [&](FaceId face) {
+      const auto t = mesh.face(face);
+      const auto &p = mesh.positions[t[0]], &q = mesh.positions[t[1]], &r = mesh.positions[t[2]];
+      const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+      const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+      return std::array<double, 3>{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                                   u[0] * w[1] - u[1] * w[0]};
+    };
+    auto runs_forward = [&](FaceId face) {
+      const auto t = mesh.face(face);
+      for (int k = 0; k < 3; ++k)
+        if (t[k] == e.first && t[(k + 1) % 3] == e.second) return true;
+      return false;
+    };
+    const auto n = normal(f);
+    auto m = normal(g);
+    const double sign = runs_forward(f) == runs_forward(g) ? -1.0 : 1.0;
+    const double dot = sign * (n[0] * m[0] + n[1] * m[1] + n[2] * m[2]);
+    const double lengths = std::hypot(n[0], n[1], n[2]) * std::hypot(m[0], m[1], m[2]);
+    if (!(lengths > 0)) return true;
+    const double degrees = std::acos(std::clamp(dot / lengths, -1.0, 1.0)) * 180.0 / M_PI;
+    if (degrees > *cuts.sharp_angle_degrees) return true;
+  }
+  return false;
+}
+
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
-                              bool flips_allowed) {
+                              bool flips_allowed, const CutOptions& cuts) {
   const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
   // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
   // repeated vertex, whose union has four vertices.
@@ -61,7 +110,7 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
     std::set<VertexId> four;
     for (FaceId f : fs)
       for (VertexId v : input.face(f)) four.insert(v);
-    if (four.size() != 4) continue;
+    if (four.size() != 4 || extra_cut(input, cuts, fs[0], fs[1], e)) continue;
     pairable.insert({std::min(fs[0], fs[1]), std::max(fs[0], fs[1])});
     edges.push_back({node_of[fs[0]], node_of[fs[1]]});
   }

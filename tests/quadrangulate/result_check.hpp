@@ -11,8 +11,9 @@ namespace petersen::testing {
 
 /// Empty when `result` is a correct maximum pairing of `input` (or, with all_quad, a correct
 /// all-quad mesh made from one); else the first problem found.
+/// `cuts` are the extra cuts the run was given, judged here on their own terms.
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
-                              bool flips_allowed);
+                              bool flips_allowed, const CutOptions& cuts = {});
 
 /// V − E + F over referenced vertices and distinct edges.
 std::int64_t euler_characteristic(const PolygonMesh& mesh);

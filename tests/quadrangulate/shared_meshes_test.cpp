@@ -56,5 +56,19 @@ TEST(SharedMeshes, EveryMeshConvertsWithEveryAlgorithm) {
   }
 }
 
+// Issue 13's case: fandisk's creases kept with a 30-degree fold threshold, a maximum pairing of
+// what is left, and all quads on request.
+TEST(SharedMeshes, FandiskKeepsItsCreases) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/fandisk.obj.gz"));
+  const CutOptions cuts{.sharp_angle_degrees = 30.0};
+  const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
+  EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::sharp)], 0u);
+  EXPECT_EQ(testing::check_quad_result(mesh, result, false, false, cuts), "");
+  const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true, .cuts = cuts});
+  EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false, cuts), "");
+}
+
 }  // namespace
 }  // namespace petersen

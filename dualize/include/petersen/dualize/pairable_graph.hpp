@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
+#include <span>
 #include <string_view>
 
 #include "petersen/dualize/mesh.hpp"
@@ -13,13 +15,22 @@ namespace petersen {
 
 /// Why an edge of the mesh is a cut: a pair of triangles never crosses it.
 enum class CutCause : std::uint8_t {
-  boundary,      ///< the edge belongs to one face
-  non_manifold,  ///< three or more faces
-  polygon,       ///< a face beside it is not a triangle (polygons are kept as they are)
-  degenerate,    ///< a face beside it repeats a vertex, or runs along the edge twice
-  duplicate,     ///< its two triangles have the same three vertices (their union is no quad)
+  boundary,       ///< the edge belongs to one face
+  non_manifold,   ///< three or more faces
+  polygon,        ///< a face beside it is not a triangle (polygons are kept as they are)
+  degenerate,     ///< a face beside it repeats a vertex, or runs along the edge twice
+  duplicate,      ///< its two triangles have the same three vertices (their union is no quad)
+  user,           ///< named by the caller (CutOptions::user_edges)
+  sharp,          ///< its triangles fold by more than CutOptions::sharp_angle_degrees
+  uv_seam,        ///< its two triangles give its ends different texture coordinates
+  normal_seam,    ///< ... different corner normals
+  material,       ///< its two faces have different materials
+  group,          ///< ... different groups
+  object,         ///< ... different objects
+  smoothing,      ///< ... different smoothing groups
+  face_property,  ///< ... different values of another per-face property
 };
-inline constexpr int kCutCauses = 5;
+inline constexpr int kCutCauses = 14;
 std::string_view to_string(CutCause cause);
 
 /// Mesh edges that are cuts, by cause (index: CutCause).
@@ -30,6 +41,17 @@ struct CutCounts {
     for (std::uint64_t n : by_cause) sum += n;
     return sum;
   }
+};
+
+/// Cuts beyond the mesh's own structure; each is off while its span is empty (or the angle unset).
+/// Corner ids are per entry of PolygonMesh::corners, face ids per face: an edge is cut when its
+/// two faces disagree (different ids at one of its ends, or different face ids).
+struct CutOptions {
+  std::optional<double> sharp_angle_degrees;            ///< cut where the normals differ by more
+  std::span<const std::array<VertexId, 2>> user_edges;  ///< vertex pairs, either order
+  std::span<const std::uint32_t> corner_uv, corner_normal;
+  std::span<const std::uint32_t> face_material, face_group, face_object, face_smoothing,
+      face_property;
 };
 
 /// The pairable graph: one node per triangle of the mesh (nodes in face order), one edge per
@@ -55,9 +77,10 @@ struct PairableGraph {
   FaceId face_of(NodeId v) const { return node_face.empty() ? v : node_face[v]; }
 };
 
-/// Builds the pairable graph of any polygon mesh. Throws MeshError naming the face when a corner
-/// is out of range or a face has fewer than three corners, and for meshes past 32-bit ids.
-/// O(C log d) for C corners and maximum vertex degree d, no hashing.
-PairableGraph build_pairable_graph(const PolygonMesh& mesh);
+/// Builds the pairable graph of any polygon mesh, with the extra cuts of `cuts`. Throws MeshError
+/// naming the face when a corner is out of range or a face has fewer than three corners, when a
+/// span of `cuts` has the wrong size, and for meshes past 32-bit ids. O(C log d) for C corners and
+/// maximum vertex degree d, plus O(u log u) for u user edges; no hashing.
+PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts = {});
 
 }  // namespace petersen

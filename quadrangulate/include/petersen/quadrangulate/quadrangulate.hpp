@@ -41,6 +41,9 @@ struct QuadOptions {
   /// ends its path at a boundary edge instead. Input vertices never move and the surface's
   /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
   bool all_quad = false;
+  /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
+  /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
+  CutOptions cuts;
 };
 
 struct QuadStats {
