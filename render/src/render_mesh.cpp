@@ -82,17 +82,17 @@ void draw_legend(cairo_t* cr, double x, double y, double height, bool triangles,
   cairo_set_font_size(cr, 11);
   set_colour(cr, {0, 0, 0});
   draw_text(cr, x, y + 10, "worst corner");
-  const double top = y + 40;
+  const double top = y + 46;
   for (int i = 0; i < 90; ++i) {  // one band per degree
     set_colour(cr, quality_colour(i + 0.5));
     cairo_rectangle(cr, x, top + bar_h * (89 - i) / 90, w, bar_h / 90 + 0.5);
     cairo_fill(cr);
   }
   set_colour(cr, quality_colour(91));
-  cairo_rectangle(cr, x, top - 18, w, 14);
+  cairo_rectangle(cr, x, top - 26, w, 14);
   cairo_fill(cr);
   set_colour(cr, {0, 0, 0});
-  draw_text(cr, x + w + 4, top - 7, "> 90 non-convex");
+  draw_text(cr, x + w + 4, top - 15, "> 90 non-convex");
   for (int deg = 0; deg <= 90; deg += 30) {
     draw_text(cr, x + w + 4, top + bar_h * (90 - deg) / 90 + 4, std::to_string(deg) + "\xc2\xb0");
   }
