@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -64,10 +65,10 @@ int render(const RenderArgs& args) {
   options.width = args.width;
   options.height = args.height;
   options.view = parse_view(args.view);
-  options.caption = {args.input, std::to_string(report.vertices) + " vertices, " +
-                                     std::to_string(report.faces) + " faces (" + faces +
-                                     " corners), " + std::to_string(report.boundary_loops) +
-                                     " boundary loops"};
+  options.caption = {std::filesystem::path(args.input).filename().string(),
+                     std::to_string(report.vertices) + " vertices, " +
+                         std::to_string(report.faces) + " faces (" + faces + " corners), " +
+                         std::to_string(report.boundary_loops) + " boundary loops"};
   const QuadQualityFigures quality = quality_figures(quad_costs(mesh));
   if (quality.quads > 0) options.caption.push_back(describe(quality));
   render_mesh(mesh, args.output, options);
@@ -78,6 +79,7 @@ int render(const RenderArgs& args) {
 struct QuadArgs {
   std::string input, output, algorithm = "ps", augment = "local", stats_json, render;
   std::vector<double> view;
+  std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   bool all_quad = false;
   std::optional<double> sharp_angle;
@@ -131,8 +133,11 @@ int quad(const QuadArgs& args) {
     const QuadStats& s = result.stats;
     RenderOptions options;
     options.view = view;
+    options.width = args.render_width;
+    options.height = args.render_height;
     options.first_added_vertex = VertexId(mesh.positions.size());
-    options.caption = {args.input + " by " + std::string(to_string(report.options.algorithm)) +
+    options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
+                           std::string(to_string(report.options.algorithm)) +
                            (args.all_quad ? ", all quads" : ""),
                        std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) +
                            " pairs, " + std::to_string(s.triangles_left) + " triangles left, " +
@@ -226,6 +231,8 @@ int main(int argc, char** argv) {
   quad_cmd->add_option("--view", quad_args.view, "--render's view direction x,y,z")
       ->delimiter(',')
       ->expected(3);
+  quad_cmd->add_option("--render-width", quad_args.render_width)->capture_default_str();
+  quad_cmd->add_option("--render-height", quad_args.render_height)->capture_default_str();
 
   RenderArgs render_args;
   CLI::App* render_cmd = app.add_subcommand(
