@@ -41,10 +41,11 @@ def test_quad_quality_of_known_quads():
     s = 1 / np.sqrt(3)
     V = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [1 + s, 1, 0], [s, 1, 0], [4, 0, 0],
          [3, 1, 0]]
+    # A square, a 60/120 degree parallelogram, the trapezoid (0,0) (4,0) (3,1) (0,1) of angles
+    # 90, 45, 135, 90.
     quads = np.array([[0, 1, 2, 3], [0, 1, 4, 5], [0, 6, 7, 3]], dtype=np.int32)
     cost = petersen.quad_quality(V, quads)
     assert cost == pytest.approx([0, 30, 45])
-    # The trapezoid (0,0) (4,0) (3,1) (0,1) has angles 90, 45, 135, 90.
     with pytest.raises(ValueError, match="not 4"):
         petersen.quad_quality(V, [[0, 1, 2]])
     with pytest.raises(ValueError, match="out of range"):
