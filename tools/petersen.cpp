@@ -3,8 +3,10 @@
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "keep_edges.hpp"
 #include "match_command.hpp"
@@ -16,6 +18,8 @@
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/render/quad_quality.hpp"
+#include "petersen/render/render_mesh.hpp"
 #include "petersen/version.hpp"
 #include "run_report.hpp"
 
@@ -41,8 +45,46 @@ int info(const std::string& path) {
   return 0;
 }
 
+// --view x,y,z: the direction the eye looks along.
+std::optional<std::array<double, 3>> parse_view(const std::vector<double>& view) {
+  if (view.empty()) return std::nullopt;
+  if (view.size() != 3) throw CLI::ValidationError("--view", "needs three numbers x,y,z");
+  return std::array<double, 3>{view[0], view[1], view[2]};
+}
+
+struct RenderArgs {
+  std::string input, output;
+  std::vector<double> view;
+  std::uint32_t width = 800, height = 800;
+};
+
+int render(const RenderArgs& args) {
+  const PolygonMesh mesh = read_mesh(args.input);
+  const MeshReport report = inspect_mesh(mesh);
+  std::string faces;
+  for (const auto& [arity, count] : report.faces_by_arity) {
+    faces += (faces.empty() ? "" : ", ") + std::to_string(count) + " of " + std::to_string(arity);
+  }
+  RenderOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.view = parse_view(args.view);
+  options.caption = {std::filesystem::path(args.input).filename().string(),
+                     std::to_string(report.vertices) + " vertices, " +
+                         std::to_string(report.faces) + " faces (" + faces + " corners), " +
+                         std::to_string(report.boundary_loops) + " boundary loops"};
+  const QuadQualityFigures quality = quality_figures(quad_costs(mesh));
+  if (quality.quads > 0) options.caption.push_back(describe(quality));
+  render_mesh(mesh, args.output, options);
+  std::printf("%s written\n", args.output.c_str());
+  return 0;
+}
+
 struct QuadArgs {
-  std::string input, output, algorithm = "ps", augment = "local", objective = "pairs", stats_json;
+  std::string input, output, algorithm = "ps", augment = "local", objective = "pairs", stats_json,
+                             render;
+  std::vector<double> view;
+  std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   bool all_quad = false;
   std::optional<double> sharp_angle;
@@ -57,31 +99,30 @@ int quad(const QuadArgs& args) {
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
   mesh_format_of(args.output);  // an unknown output format fails before any work
+  const auto view = parse_view(args.view);
+  if (!args.render.empty() && !is_picture_path(args.render)) {
+    throw CLI::ValidationError("--render", "a picture must be .png or .svg: " + args.render);
+  }
   RunReport report;
   report.input = args.input;
   report.output = args.output;
-  report.algorithm = *objective == Objective::quality ? "min-cost" : args.algorithm;
-  if (*objective == Objective::pairs &&
-      (*algorithm == Algorithm::sg || *algorithm == Algorithm::ps ||
-       *algorithm == Algorithm::lrs)) {
-    report.augment = args.augment;
-  }
+  report.options.algorithm = *algorithm;
+  report.options.augment = *augment;
+  report.options.seed = args.seed;
+  report.options.all_quad = args.all_quad;
+  report.options.objective = *objective;
+  report.options.peer = &lemon_peer::maximum_matching;
   Clock total, clock;
   const PolygonMesh mesh = read_mesh(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges);
+  report.options.cuts.sharp_angle_degrees = args.sharp_angle;
+  report.options.cuts.user_edges = keep_edges;
   report.load_seconds = clock.lap();
   QuadResult result;
   try {
-    result = quadrangulate(
-        mesh, {.algorithm = *algorithm,
-               .augment = *augment,
-               .seed = args.seed,
-               .all_quad = args.all_quad,
-               .objective = *objective,
-               .cuts = {.sharp_angle_degrees = args.sharp_angle, .user_edges = keep_edges},
-               .peer = &lemon_peer::maximum_matching});
+    result = quadrangulate(mesh, report.options);
   } catch (const MeshError& e) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
@@ -96,6 +137,25 @@ int quad(const QuadArgs& args) {
                                                          &std::fclose);
     if (!file) throw std::runtime_error("cannot write " + args.stats_json);
     write_json(file.get(), report);
+  }
+  if (!args.render.empty()) {
+    const QuadStats& s = result.stats;
+    RenderOptions options;
+    options.view = view;
+    options.width = args.render_width;
+    options.height = args.render_height;
+    options.first_added_vertex = VertexId(mesh.positions.size());
+    options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
+                           (report.options.objective == Objective::quality
+                                ? std::string("min-cost (objective quality)")
+                                : std::string(to_string(report.options.algorithm))) +
+                           (args.all_quad ? ", all quads" : ""),
+                       std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) +
+                           " pairs, " + std::to_string(s.triangles_left) + " triangles left, " +
+                           std::to_string(s.polygons_kept) + " polygons kept, " +
+                           std::to_string(s.added_vertices) + " vertices added",
+                       describe(quality_figures(quad_costs(result.mesh)))};
+    render_mesh(result.mesh, args.render, options);
   }
   return 0;
 }
@@ -184,6 +244,28 @@ int main(int argc, char** argv) {
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
                        "also write the summary as one JSON object to this file");
 
+  quad_cmd->add_option("--render", quad_args.render,
+                       "also draw the result into this picture (.png or .svg)");
+  quad_cmd->add_option("--view", quad_args.view, "--render's view direction x,y,z")
+      ->delimiter(',')
+      ->expected(3);
+  quad_cmd->add_option("--render-width", quad_args.render_width)->capture_default_str();
+  quad_cmd->add_option("--render-height", quad_args.render_height)->capture_default_str();
+
+  RenderArgs render_args;
+  CLI::App* render_cmd = app.add_subcommand(
+      "render",
+      "Draw a mesh as a PNG or SVG picture: shaded, edges drawn, quads coloured by their worst "
+      "corner's deviation from 90 degrees, triangles beside quads highlighted");
+  render_cmd->add_option("MESH", render_args.input, "OFF, OBJ or PLY file, optionally .gz")
+      ->required();
+  render_cmd->add_option("OUT", render_args.output, "picture to write: .png or .svg")->required();
+  render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
+      ->delimiter(',')
+      ->expected(3);
+  render_cmd->add_option("--width", render_args.width)->capture_default_str();
+  render_cmd->add_option("--height", render_args.height)->capture_default_str();
+
   GenerateArgs gen_args;
   CLI::App* gen_cmd = app.add_subcommand(
       "generate",
@@ -226,6 +308,7 @@ int main(int argc, char** argv) {
     if (info_cmd->parsed()) return info(info_path);
     if (quad_cmd->parsed()) return quad(quad_args);
     if (gen_cmd->parsed()) return generate(gen_args);
+    if (render_cmd->parsed()) return render(render_args);
     if (match_cmd->parsed()) return run_match(match_args);
   } catch (const CLI::Error& e) {
     return app.exit(e);

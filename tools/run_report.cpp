@@ -2,8 +2,12 @@
 
 #include <cinttypes>
 #include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
 
 #include "json_text.hpp"
+#include "petersen/quadrangulate/stats_fields.hpp"
 
 namespace petersen::cli {
 
@@ -33,8 +37,14 @@ void print_summary(std::FILE* out, const RunReport& r) {
                    s.cuts.by_cause[c]);
     }
   }
-  std::fprintf(out, "\nalgorithm   %s%s%s\n", r.algorithm.c_str(),
-               r.augment.empty() ? "" : ", augment ", r.augment.c_str());
+  const Algorithm a = r.options.algorithm;
+  const bool quality = r.options.objective == Objective::quality;
+  const bool augments =
+      !quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs);
+  std::fprintf(out, "\nalgorithm   %s%s%s\n",
+               quality ? "min-cost (objective quality)" : std::string(to_string(a)).c_str(),
+               augments ? ", augment " : "",
+               augments ? std::string(to_string(r.options.augment)).c_str() : "");
   if (s.lrs_fallback_components > 0) {
     std::fprintf(out, "            %" PRIu64 " closed components by ps: lrs needs %s\n",
                  s.lrs_fallback_components, s.lrs_fallback_reason.c_str());
@@ -51,7 +61,7 @@ void print_summary(std::FILE* out, const RunReport& r) {
       s.matching.nodes_labelled);
   if (s.matching.reductions > 0)
     std::fprintf(out, "reductions  %" PRIu64 "\n", s.matching.reductions);
-  if (r.algorithm == "lrs") {
+  if (a == Algorithm::lrs) {
     std::fprintf(out,
                  "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64 " vertices\n",
                  s.flipped_edges, s.irreducible_vertices);
@@ -74,65 +84,40 @@ void print_summary(std::FILE* out, const RunReport& r) {
 }
 
 void write_json(std::FILE* out, const RunReport& r) {
-  const QuadStats& s = r.quad;
-  auto u = [&](const char* key, std::uint64_t value) {
-    std::fprintf(out, "  \"%s\": %" PRIu64 ",\n", key, value);
-  };
-  auto d = [&](const char* key, double value) {
-    std::fprintf(out, "  \"%s\": %.9f,\n", key, value);
-  };
-  std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"algorithm\": %s,\n",
-               json_string(r.input).c_str(), json_string(r.output).c_str(),
-               json_string(r.algorithm).c_str());
-  if (!r.augment.empty()) std::fprintf(out, "  \"augment\": %s,\n", json_string(r.augment).c_str());
-  u("vertices", s.vertices);
-  u("faces_in", s.faces_in);
-  u("triangles", s.triangles);
-  u("polygons_kept", s.polygons_kept);
-  if (s.genus) std::fprintf(out, "  \"genus\": %" PRId64 ",\n", *s.genus);
-  std::fprintf(out, "  \"euler_characteristic\": %" PRId64 ",\n", s.euler_characteristic);
-  u("components", s.components);
-  u("closed_components", s.closed_components);
-  u("mesh_edges", s.mesh_edges);
-  u("cut_edges", s.cuts.total());
-  std::fprintf(out, "  \"cut_edges_by_cause\": {");
-  for (int c = 0; c < kCutCauses; ++c) {
-    std::fprintf(out, "%s\"%s\": %" PRIu64, c ? ", " : "",
-                 std::string(to_string(CutCause(c))).c_str(), s.cuts.by_cause[c]);
+  const std::vector<StatField> fields = stats_fields(r.quad, r.options,
+                                                     {.input = r.input,
+                                                      .output = r.output,
+                                                      .load_seconds = r.load_seconds,
+                                                      .write_seconds = r.write_seconds,
+                                                      .total_seconds = r.total_seconds});
+  std::fprintf(out, "{\n");
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    std::fprintf(out, "  \"%s\": ", fields[i].key.c_str());
+    std::visit(
+        [&](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            std::fputs(v ? "true" : "false", out);
+          } else if constexpr (std::is_same_v<T, std::int64_t>) {
+            std::fprintf(out, "%" PRId64, v);
+          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+            std::fprintf(out, "%" PRIu64, v);
+          } else if constexpr (std::is_same_v<T, double>) {
+            std::fprintf(out, "%.9f", v);
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            std::fputs(json_string(v).c_str(), out);
+          } else {
+            std::fputs("{", out);
+            for (std::size_t k = 0; k < v.size(); ++k) {
+              std::fprintf(out, "%s\"%s\": %" PRIu64, k ? ", " : "", v[k].first.c_str(),
+                           v[k].second);
+            }
+            std::fputs("}", out);
+          }
+        },
+        fields[i].value);
+    std::fputs(i + 1 < fields.size() ? ",\n" : "\n}\n", out);
   }
-  std::fprintf(out, "},\n");
-  u("inconsistent_edges", s.inconsistent_edges);
-  d("load_seconds", r.load_seconds);
-  d("check_seconds", s.check_seconds);
-  d("dual_seconds", s.dual_seconds);
-  d("initial_seconds", s.matching.initial_seconds);
-  d("initial_paired_percent", initial_paired_percent(s));
-  u("unpaired_after_initial", s.matching.unpaired_after_initial);
-  d("augment_seconds", s.matching.augment_seconds);
-  d("matching_seconds", s.matching.matching_seconds());
-  u("augmenting_paths", s.matching.augmenting_paths);
-  u("blossoms", s.matching.blossoms);
-  u("nodes_labelled", s.matching.nodes_labelled);
-  u("reductions", s.matching.reductions);
-  if (r.algorithm == "lrs") {
-    u("flipped_edges", s.flipped_edges);
-    u("irreducible_vertices", s.irreducible_vertices);
-    u("lrs_fallback_components", s.lrs_fallback_components);
-  }
-  d("verify_seconds", s.verify_seconds);
-  std::fprintf(out, "  \"maximum_certified\": %s,\n", s.maximum_certified ? "true" : "false");
-  u("pairs", s.pairs);
-  d("quality_median", s.quality_median);
-  d("quality_p95", s.quality_p95);
-  u("nonconvex_quads", s.nonconvex_quads);
-  d("objective_total", s.objective_total);
-  std::fprintf(out, "  \"optimality_certified\": %s,\n", s.optimality_certified ? "true" : "false");
-  u("triangles_left", s.triangles_left);
-  d("quads_seconds", s.quads_seconds);
-  u("added_vertices", s.added_vertices);
-  d("all_quad_seconds", s.all_quad_seconds);
-  d("write_seconds", r.write_seconds);
-  std::fprintf(out, "  \"total_seconds\": %.9f\n}\n", r.total_seconds);
 }
 
 }  // namespace petersen::cli

@@ -9,8 +9,8 @@
 namespace petersen::cli {
 
 struct RunReport {
-  std::string input, output, algorithm;
-  std::string augment;  ///< augmenting-path variant, for the algorithms that augment
+  std::string input, output;
+  QuadOptions options;
   double load_seconds = 0, write_seconds = 0, total_seconds = 0;
   QuadStats quad;  ///< the front door's figures
 };

@@ -82,5 +82,20 @@ check "generate with holes, fins, pinches, flips" "$petersen" generate "$work/mi
   --kind klein --holes 2 --fins 2 --pinches 1 --flip-faces 3 --seed 5
 refuses "an unknown kind" "torus" "$petersen" generate "$work/x.off" --kind torus
 
+# render: PNG and SVG of a mesh and of a quad result (the pixels are checked by tests/render).
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8}'; }
+check "render a mesh" "$petersen" render "$example" "$work/example.png" --width 640 --height 480
+[ "$(png_size "$work/example.png")" = "640x480" ] || {
+  failed=$((failed + 1)); echo "FAILED: render wrote $(png_size "$work/example.png")"; }
+check "render as SVG" "$petersen" render "$example" "$work/example.svg" --view 0,0,-1
+grep -q "<svg" "$work/example.svg" || { failed=$((failed + 1)); echo "FAILED: render SVG"; }
+check "quad --render" "$petersen" quad "$work/open.off" "$work/open-q.off" --all-quad \
+  --render "$work/open.png"
+[ "$(png_size "$work/open.png")" = "800x800" ] || { failed=$((failed + 1)); echo "FAILED: quad --render"; }
+refuses "a picture that is not png or svg" "png or .svg" "$petersen" render "$example" "$work/x.jpg"
+refuses "quad --render to a jpg" "png or .svg" "$petersen" quad "$example" "$work/x.obj" \
+  --render "$work/x.jpg"
+refuses "a view of three zeros" "view" "$petersen" render "$example" "$work/x.png" --view 0,0,0
+
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
