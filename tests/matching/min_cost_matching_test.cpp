@@ -12,10 +12,13 @@
 #include <optional>
 
 #include "peers.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/dualize/read_mesh.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/testing/arbitrary.hpp"
+#include "shared_meshes.hpp"
 
 namespace petersen {
 namespace {
@@ -238,6 +241,28 @@ RC_GTEST_PROP(MinCostVerifier, RejectsPerturbedDuals, ()) {
     }
   }
   RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
+}
+
+// ---- the shared meshes under the quad measure
+
+TEST(MinCostPerfect, SharedMeshesUnderTheQuadMeasureEqualLemonAndAreCertified) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no shared meshes";
+  for (const testing::SharedMesh& mesh : testing::shared_meshes_up_to(25'000)) {
+    SCOPED_TRACE(mesh.file);
+    const TriangleMesh triangles = read_triangle_mesh(*dir + "/" + mesh.file);
+    const Dual dual = build_dual(triangles);
+    const HugeVector<Cost> costs = scale_costs(dual_edge_quality(triangles, dual));
+    const MinCostResult r = min_cost_perfect_matching(dual.graph, costs);
+    const CertificateCheck check =
+        verify_min_cost_perfect_matching(dual.graph.node_count(), dual.graph.edge_ends(), costs,
+                                         r.matching, r.total_cost, r.certificate);
+    EXPECT_TRUE(check.ok()) << check.problem;
+    const std::vector<Cost> lemon_costs(costs.begin(), costs.end());
+    EXPECT_EQ(testing::lemon_min_cost_perfect(dual.graph.node_count(), edge_list(dual.graph),
+                                              lemon_costs),
+              r.total_cost);
+  }
 }
 
 // ---- hand-built cases, optimum by brute force

@@ -1,11 +1,13 @@
 #pragma once
-// Edmonds' primal-dual algorithm for minimum-cost perfect matching, one alternating tree at a
-// time, on any Graph with incident_edges(v), other_end(e, v) and endpoints(e).
+// Edmonds' primal-dual algorithm for minimum-cost perfect matching, growing the alternating
+// trees of all free nodes at once, on any Graph with incident_edges(v), other_end(e, v) and
+// endpoints(e).
 //
 // Duals are in the odd-cut form (see min_cost_matching.hpp) on doubled costs C(e) = 2·cost(e),
-// so every dual stays an integer: tree edges are tight, so all nodes of a tree have sums of the
-// same parity, and the slack of an edge between two even nodes, which shrinks twice as fast as
-// the others, is even.
+// so every dual stays an integer: every root's dual is made even, tree edges are tight, and all
+// labelled blossoms move by the same amount, so all labelled nodes have dual sums of one parity
+// and the slack of an edge between two even nodes, which shrinks twice as fast as the others,
+// is even.
 //
 // Blossoms: ids 0..n-1 are the nodes (trivial blossoms), ids n.. the shrunk odd cycles. A
 // nontrivial blossom keeps its children in cycle order from its base child c0, and conn[i], the
@@ -21,14 +23,15 @@
 // on the 7k-triangle bunny listed blossom nodes), and plain parent walks without compression
 // took 27 % of the time on fertility-sub3, whose blossoms nest deeply.
 //
-// A search labels top-level blossoms even or odd and keeps one clock, delta: a labelled
-// blossom's dual is its stored value plus (even) or minus (odd) the time since its label. The
-// priority queue holds when each constraint meets zero: an edge from an even to an unlabelled
-// blossom (its slack, at rate 1), an edge between two even blossoms (half its slack), an odd
-// blossom's dual. Entries are not removed when they go stale; each is checked when it comes out
-// (the earliest key is never later than the true next event, since every event that speeds up
-// is queued again at its new time: a blossom becoming even is scanned, an expanded odd
-// blossom's children are scanned).
+// The forest labels top-level blossoms even or odd (each with its tree) and keeps one clock,
+// delta: a labelled blossom's dual is its stored value plus (even) or minus (odd) the time since
+// its label. The priority queue holds when each constraint meets zero: an edge from an even to
+// an unlabelled blossom (its slack, at rate 1), an edge between two even blossoms (half its
+// slack: a blossom to shrink within a tree, an augmenting path between two trees), an odd
+// blossom's dual (to expand it). Entries are not removed when they go stale; each is checked
+// when it comes out (the earliest key is never later than the true next event, since every
+// event that speeds up is queued again at its new time: a blossom becoming even is scanned, an
+// expanded odd blossom's children are scanned, a released tree's odd blossoms are scanned).
 
 #include <algorithm>
 #include <cstdint>

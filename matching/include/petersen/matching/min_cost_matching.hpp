@@ -81,11 +81,13 @@ struct MinCostResult {
 };
 
 /// A minimum-cost perfect matching of `graph` under `costs` (one per edge id, |cost| <=
-/// kMaxCost), with its certificate. Edmonds' primal-dual blossom algorithm grown one
-/// alternating tree at a time: each tree's dual moves lazily (one clock per tree) and the next
-/// event (an edge turning tight, an odd blossom's dual reaching zero) comes from a priority queue
-/// keyed by slack, so a search costs O(r log r) for the r edges it reaches; O(n m log n) in the
-/// worst case. Iterative throughout. Throws GraphError when the graph has no perfect matching,
+/// kMaxCost), with its certificate. Edmonds' primal-dual blossom algorithm: from the greedy
+/// start, the alternating trees of all free nodes grow at once under one lazy dual clock; the
+/// next event (an edge turning tight, an odd blossom's dual reaching zero) comes from a radix
+/// priority queue keyed by slack; two trees meeting augment and are released. In the worst case
+/// O(n) augmentations, each after O(n) shrinks and expansions that rescan up to m edges: O(n² m);
+/// in practice the work follows the regions the trees cover (armadillo's dual, 86k nodes: 0.2 s).
+/// Iterative throughout. Throws GraphError when the graph has no perfect matching,
 /// std::invalid_argument when costs has the wrong size or a cost out of range.
 MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,
                                         const MinCostOptions& options = {});
