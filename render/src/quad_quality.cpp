@@ -7,54 +7,6 @@
 
 namespace petersen {
 
-namespace {
-
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec scaled(const Vec& a, double s) {
-  return {a[0] * s, a[1] * s, a[2] * s};
-}
-
-}  // namespace
-
-double quad_corner_deviation(const Vec& a, const Vec& b, const Vec& c, const Vec& d) {
-  const Vec corners[4] = {a, b, c, d};
-  for (const Vec& p : corners) {
-    for (double x : p) {
-      if (!std::isfinite(x)) return kDegenerateQuadCost;
-    }
-  }
-  Vec n = cross(sub(c, a), sub(d, b));
-  const double length = std::sqrt(dot(n, n));
-  if (!(length > 0) || !std::isfinite(length)) return kDegenerateQuadCost;
-  n = scaled(n, 1 / length);
-  double worst = 0;
-  for (int i = 0; i < 4; ++i) {
-    const Vec& p = corners[i];
-    // The two edges at corner i, projected onto the plane orthogonal to n.
-    Vec to_next = sub(corners[(i + 1) % 4], p);
-    Vec to_prev = sub(corners[(i + 3) % 4], p);
-    to_next = sub(to_next, scaled(n, dot(to_next, n)));
-    to_prev = sub(to_prev, scaled(n, dot(to_prev, n)));
-    if (!(dot(to_next, to_next) > 0) || !(dot(to_prev, to_prev) > 0)) return kDegenerateQuadCost;
-    // Counter-clockwise about n from to_next to to_prev, in [0, 360).
-    double theta =
-        std::atan2(dot(cross(to_next, to_prev), n), dot(to_next, to_prev)) * 180 / std::numbers::pi;
-    if (theta < 0) theta += 360;
-    worst = std::max(worst, std::abs(90 - theta));
-  }
-  return worst;
-}
-
 std::vector<double> quad_costs(const PolygonMesh& mesh) {
   std::vector<double> costs;
   for (FaceId f = 0; f < mesh.face_count(); ++f) {

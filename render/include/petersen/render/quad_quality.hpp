@@ -1,8 +1,6 @@
 #pragma once
-// The shape of a quad as its worst corner's deviation from a right angle (issue 14's measure),
-// which the pictures colour quads by.
-// The branch of issue 14 declares the same function in petersen/dualize/quad_quality.hpp; when
-// both are on main, this file gives way to that one.
+// The quads of a mesh summarised by issue 14's measure (quad_corner_deviation, in
+// petersen/dualize/quad_quality.hpp), which the pictures colour quads by.
 
 #include <array>
 #include <cstdint>
@@ -10,21 +8,9 @@
 #include <vector>
 
 #include "petersen/dualize/mesh.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 
 namespace petersen {
-
-/// What a degenerate quad costs: the largest deviation any quad can reach.
-inline constexpr double kDegenerateQuadCost = 270.0;
-
-/// The worst-corner deviation of quad a, b, c, d (corners in order), in degrees:
-/// n = unit((c − a) × (d − b)); at each corner the two quad edges are projected onto the plane
-/// orthogonal to n and the interior angle θ is taken in [0°, 360°), counter-clockwise about n
-/// from the edge to the next corner to the edge to the previous one, so a reflex corner of a
-/// non-convex quad is above 180°; cost = max over the four corners of |90° − θ|. A planar
-/// rectangle costs 0, a non-convex quad more than 90. Degenerate quads (a non-finite coordinate,
-/// parallel or zero diagonals, a projected edge of zero length) cost kDegenerateQuadCost. O(1).
-double quad_corner_deviation(const std::array<double, 3>& a, const std::array<double, 3>& b,
-                             const std::array<double, 3>& c, const std::array<double, 3>& d);
 
 /// The quads of a mesh summarised: how many, the median and 95th percentile of their cost (the
 /// nearest-rank element of the sorted costs; 0 when there are no quads), how many are non-convex
