@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <string>
 
 #include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
@@ -20,18 +22,29 @@ namespace petersen {
 namespace {
 
 // The independent check is map-based (O(F log F) with large constants) and LEMON is in it, so the
-// full set of algorithms runs on the meshes below this size; the larger ones run ps and lrs.
+// full set of algorithms runs on the meshes below this size; the larger ones run ps and lrs, and
+// frink (O(n^2), the reductions' test oracle) the meshes below kFrinkUpTo.
+// PETERSEN_FULL_SHARED=1 runs every algorithm on every mesh (frink still by size): minutes.
 #ifdef PETERSEN_SANITIZE
 constexpr std::uint32_t kAllAlgorithmsUpTo = 15000;
 constexpr std::uint32_t kMaxTriangles = 100000;
+constexpr std::uint32_t kFrinkUpTo = 2000;
 #else
 constexpr std::uint32_t kAllAlgorithmsUpTo = 100000;
 constexpr std::uint32_t kMaxTriangles = 600000;
+constexpr std::uint32_t kFrinkUpTo = 15000;
 #endif
+
+bool full_run() {
+  const char* full = std::getenv("PETERSEN_FULL_SHARED");
+  return full != nullptr && std::string(full) == "1";
+}
 
 std::vector<std::string> all_shared_files() {
   std::vector<std::string> files;
-  for (const auto& mesh : testing::shared_meshes_up_to(kMaxTriangles)) files.push_back(mesh.file);
+  for (const auto& mesh : testing::shared_meshes_up_to(full_run() ? 0xFFFFFFFFu : kMaxTriangles)) {
+    files.push_back(mesh.file);
+  }
   for (const char* invalid : {"invalid/beetle.obj.gz", "invalid/cow.obj.gz",
                               "invalid/stanford-bunny.obj.gz", "invalid/teapot.obj.gz"}) {
     files.push_back(invalid);
@@ -45,10 +58,11 @@ TEST(SharedMeshes, EveryMeshConvertsWithEveryAlgorithm) {
   for (const std::string& file : all_shared_files()) {
     SCOPED_TRACE(file);
     const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/" + file));
-    const bool small = mesh.face_count() <= kAllAlgorithmsUpTo;
+    const bool small = full_run() || mesh.face_count() <= kAllAlgorithmsUpTo;
     for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw,
-                                Algorithm::lemon, Algorithm::lrs}) {
+                                Algorithm::frink, Algorithm::lemon, Algorithm::lrs}) {
       if (!small && algorithm != Algorithm::ps && algorithm != Algorithm::lrs) continue;
+      if (algorithm == Algorithm::frink && mesh.face_count() > kFrinkUpTo) continue;
       SCOPED_TRACE(std::string(to_string(algorithm)));
       const QuadResult result =
           quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
