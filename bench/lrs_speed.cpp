@@ -14,6 +14,7 @@
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
@@ -66,6 +67,7 @@ void compare_with_ps(const std::string& name, const TriangleMesh& mesh) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  petersen::huge_pages::enable_pool_unless_switched_off();
   print_header();
   if (argc > 1) {
     for (int i = 1; i < argc; ++i) compare_with_ps(argv[i], read_triangle_mesh(argv[i]));

@@ -18,13 +18,14 @@
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/graph/generators.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/matching/avoiding.hpp"
 
 namespace {
 
 using namespace petersen;
 
-void measure(const std::string& family, const CubicGraph& g, Algorithm chooser) {
+void measure(const std::string& family, const CubicGraph& g, ReductionChooser chooser) {
   const ReductionResult r = perfect_matching_avoiding(g, kNoEdge, {.chooser = chooser});
   if (!verify_perfect_matching(g, r.matching).ok()) {
     std::fprintf(stderr, "%s %s: not a perfect matching\n", family.c_str(),
@@ -38,7 +39,7 @@ void measure(const std::string& family, const CubicGraph& g, Algorithm chooser) 
       "  %7.2f ns/(n lg n)  searches/swaps %llu\n",
       family.c_str(), std::string(to_string(chooser)).c_str(), n, t, r.stats.setup_seconds,
       r.stats.reduce_seconds, r.stats.lift_seconds, 1e9 * t / (n * lg * lg), 1e9 * t / (n * lg),
-      static_cast<unsigned long long>(r.stats.replacement_searches));
+      static_cast<unsigned long long>(r.stats.replacement_searches + r.stats.cover_swaps));
   std::fflush(stdout);
 }
 
@@ -53,7 +54,8 @@ CubicGraph plate_dual_near(std::uint32_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::vector<Algorithm> choosers = {Algorithm::ds, Algorithm::gw};
+  petersen::huge_pages::enable_pool_unless_switched_off();
+  std::vector<ReductionChooser> choosers = {ReductionChooser::ds, ReductionChooser::gw};
   std::uint32_t ds_max = 1u << 21;
   bool random = false;
   std::vector<std::string> positional;
@@ -63,7 +65,7 @@ int main(int argc, char** argv) {
       choosers.clear();
       for (std::string_view list = argv[++i]; !list.empty();) {
         const std::size_t comma = std::min(list.find(','), list.size());
-        const auto a = parse_algorithm(list.substr(0, comma));
+        const auto a = parse_reduction_chooser(list.substr(0, comma));
         if (!a) {
           std::fprintf(stderr, "unknown chooser in %s\n", argv[i]);
           return 2;
@@ -83,16 +85,16 @@ int main(int argc, char** argv) {
   const std::uint32_t hi = positional.size() > 1 ? std::stoul(positional[1]) : 4194304;
   for (std::uint64_t n = lo; n <= hi; n *= 2) {
     const CubicGraph plate = plate_dual_near(static_cast<std::uint32_t>(n));
-    for (Algorithm chooser : choosers)
-      if (chooser != Algorithm::ds || plate.node_count() <= ds_max)
+    for (ReductionChooser chooser : choosers)
+      if (chooser != ReductionChooser::ds || plate.node_count() <= ds_max)
         measure("plate", plate, chooser);
     if (!random) continue;
     const CubicGraph graph = random_cubic_bridgeless(static_cast<std::uint32_t>(n), n);
-    for (Algorithm chooser : choosers)
-      if (chooser != Algorithm::ds || n <= ds_max) measure("random", graph, chooser);
+    for (ReductionChooser chooser : choosers)
+      if (chooser != ReductionChooser::ds || n <= ds_max) measure("random", graph, chooser);
   }
   for (std::size_t i = 2; i < positional.size(); ++i) {
     const CubicGraph g = dual_graph(read_triangle_mesh(positional[i]));
-    for (Algorithm chooser : choosers) measure(positional[i], g, chooser);
+    for (ReductionChooser chooser : choosers) measure(positional[i], g, chooser);
   }
 }

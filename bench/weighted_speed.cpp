@@ -16,7 +16,7 @@
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/read_mesh.hpp"
-#include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
@@ -65,13 +65,11 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon)
   double lemon_seconds = 0;
   std::int64_t lemon_total = 0;
   if (with_lemon) {
-    std::vector<std::array<std::uint32_t, 2>> edges(g.edge_count());
-    for (EdgeId e = 0; e < g.edge_count(); ++e) edges[e] = g.endpoints(e);
-    const std::vector<std::int64_t> lemon_costs(costs.begin(), costs.end());
     std::vector<std::uint32_t> mate(g.node_count());
     lemon_seconds = seconds_of([&] {
-      if (!lemon_adapter::min_cost_perfect_matching(g.node_count(), edges, lemon_costs, mate.data(),
-                                                    lemon_total)) {
+      if (!lemon_peer::min_cost_perfect_matching(g.node_count(), g.edge_ends().data(),
+                                                 g.edge_count(), costs.data(), mate.data(),
+                                                 lemon_total)) {
         std::printf("%s: LEMON found no perfect matching\n", name.c_str());
         std::exit(1);
       }

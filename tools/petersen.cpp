@@ -1,18 +1,26 @@
-// petersen: triangle mesh of a closed surface -> all-quad mesh on the same vertices.
+// petersen: any mesh -> its triangles paired into quads on the same vertices; graphs -> matchings.
 
 #include <CLI/CLI.hpp>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
+#include <optional>
+#include <vector>
 
-#include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/quads.hpp"
+#include "keep_edges.hpp"
+#include "match_command.hpp"
+#include "petersen/dualize/mesh_report.hpp"
+#include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
-#include "petersen/lrs/lrs.hpp"
-#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/graph/huge_pages.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/render/quad_quality.hpp"
+#include "petersen/render/render_mesh.hpp"
+#include "petersen/version.hpp"
 #include "run_report.hpp"
 
 namespace petersen::cli {
@@ -32,81 +40,96 @@ class Clock {
 };
 
 int info(const std::string& path) {
-  TriangleMesh mesh = read_triangle_mesh(path);
-  SurfaceReport report = inspect_surface(mesh);
-  std::fputs(describe(report).c_str(), stdout);
+  const PolygonMesh mesh = read_mesh(path);
+  std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
   return 0;
 }
 
-// The verifier is O(n): every answer is checked before anything is written.
-void verify_or_throw(const CubicGraph& graph, const Matching& matching,
-                     const std::string& algorithm) {
-  if (MatchingCheck check = verify_perfect_matching(graph, matching); !check.ok()) {
-    throw std::logic_error("internal error: " + algorithm +
-                           " returned a matching that is not perfect: " + check.message);
+// --view x,y,z: the direction the eye looks along.
+std::optional<std::array<double, 3>> parse_view(const std::vector<double>& view) {
+  if (view.empty()) return std::nullopt;
+  if (view.size() != 3) throw CLI::ValidationError("--view", "needs three numbers x,y,z");
+  return std::array<double, 3>{view[0], view[1], view[2]};
+}
+
+struct RenderArgs {
+  std::string input, output;
+  std::vector<double> view;
+  std::uint32_t width = 800, height = 800;
+};
+
+int render(const RenderArgs& args) {
+  const PolygonMesh mesh = read_mesh(args.input);
+  const MeshReport report = inspect_mesh(mesh);
+  std::string faces;
+  for (const auto& [arity, count] : report.faces_by_arity) {
+    faces += (faces.empty() ? "" : ", ") + std::to_string(count) + " of " + std::to_string(arity);
   }
+  RenderOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.view = parse_view(args.view);
+  options.caption = {std::filesystem::path(args.input).filename().string(),
+                     std::to_string(report.vertices) + " vertices, " +
+                         std::to_string(report.faces) + " faces (" + faces + " corners), " +
+                         std::to_string(report.boundary_loops) + " boundary loops"};
+  const QuadQualityFigures quality = quality_figures(quad_costs(mesh));
+  if (quality.quads > 0) options.caption.push_back(describe(quality));
+  render_mesh(mesh, args.output, options);
+  std::printf("%s written\n", args.output.c_str());
+  return 0;
 }
 
 struct QuadArgs {
-  std::string input, output, algorithm = "ps", augment = "local", stats_json;
+  std::string input, output, algorithm = "ps", augment = "local", objective = "pairs", stats_json,
+                             render;
+  std::vector<double> view;
+  std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
+  bool all_quad = false;
+  std::optional<double> sharp_angle;
+  std::string keep_edges;
 };
 
-// Checks, matches, verifies and writes; MeshErrors are prefixed with the input by the caller.
-void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, Clock& total) {
-  Clock clock;
-  SurfaceReport surface = inspect_surface(mesh);
-  require_closed_surface(surface);
-  report.vertices = surface.vertices;
-  report.triangles = mesh.triangles.size();
-  report.genus = surface.genus.value_or(0);
-  report.components = surface.components;
-
-  QuadMesh quads;
-  auto augment = parse_augment(args.augment);
+int quad(const QuadArgs& args) {
+  const auto algorithm = parse_algorithm(args.algorithm);
+  if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
+  const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
-  report.augment = args.augment;
-  if (args.algorithm == "lrs") {
-    report.algorithm = "lrs";
-    LrsResult result = quadrangulate_lrs(mesh, {.augment = *augment});
-    report.initial_seconds = result.stats.contraction_seconds + result.stats.expansion_seconds;
-    report.unpaired_after_initial = result.stats.unpaired_after_expansion;
-    report.augment_seconds = result.stats.augment_seconds;
-    report.augmenting_paths = result.stats.augmenting_paths;
-    report.flipped_edges = result.stats.flipped_edges;
-    report.irreducible_vertices = result.stats.irreducible_vertices;
-    verify_or_throw(result.dual, result.matching, report.algorithm);
-    quads = std::move(result.quads);
-  } else {
-    auto algorithm = parse_algorithm(args.algorithm);
-    if (!algorithm) {
-      throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
-    }
-    report.algorithm = args.algorithm;
-    if (*algorithm != Algorithm::sg && *algorithm != Algorithm::ps) report.augment.clear();
-    clock.lap();
-    Dual dual = build_dual(mesh);
-    report.dual_seconds = clock.lap();
-    Result result = perfect_matching(
-        dual.graph,
-        {.algorithm = *algorithm, .augment = *augment, .seed = args.seed, .validate = false});
-    report.initial_seconds = result.stats.initial_seconds;
-    report.unpaired_after_initial = result.stats.unpaired_after_initial;
-    report.augment_seconds = result.stats.augment_seconds;
-    report.augmenting_paths = result.stats.augmenting_paths;
-    report.blossoms = result.stats.blossoms;
-    report.nodes_labelled = result.stats.nodes_labelled;
-    report.reductions = result.stats.reductions;
-    verify_or_throw(dual.graph, result.matching, report.algorithm);
-    quads = quads_from_matching(mesh, dual.graph, result.matching);
+  const auto objective = parse_objective(args.objective);
+  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  mesh_format_of(args.output);  // an unknown output format fails before any work
+  const auto view = parse_view(args.view);
+  if (!args.render.empty() && !is_picture_path(args.render)) {
+    throw CLI::ValidationError("--render", "a picture must be .png or .svg: " + args.render);
   }
-  if (QuadCheck check = check_quad_mesh(mesh, quads); !check.ok()) {
-    throw std::logic_error("internal error: the quad mesh fails its check: " + check.problem);
+  RunReport report;
+  report.input = args.input;
+  report.output = args.output;
+  report.options.algorithm = *algorithm;
+  report.options.augment = *augment;
+  report.options.seed = args.seed;
+  report.options.all_quad = args.all_quad;
+  report.options.objective = *objective;
+  report.options.peer = &lemon_peer::maximum_matching;
+  Clock total, clock;
+  const PolygonMesh mesh = read_mesh(args.input);
+  const std::vector<std::array<VertexId, 2>> keep_edges =
+      args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
+                              : read_keep_edges(args.keep_edges);
+  report.options.cuts.sharp_angle_degrees = args.sharp_angle;
+  report.options.cuts.user_edges = keep_edges;
+  report.load_seconds = clock.lap();
+  QuadResult result;
+  try {
+    result = quadrangulate(mesh, report.options);
+  } catch (const MeshError& e) {
+    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
+  report.quad = result.stats;
   clock.lap();
-  write_quad_mesh(args.output, quads);
+  write_mesh(args.output, result.mesh);
   report.write_seconds = clock.lap();
-  report.quads = quads.quads.size();
   report.total_seconds = total.lap();
   print_summary(stdout, report);
   if (!args.stats_json.empty()) {
@@ -115,36 +138,55 @@ void convert(const QuadArgs& args, const TriangleMesh& mesh, RunReport& report, 
     if (!file) throw std::runtime_error("cannot write " + args.stats_json);
     write_json(file.get(), report);
   }
-}
-
-int quad(const QuadArgs& args) {
-  RunReport report;
-  report.input = args.input;
-  report.output = args.output;
-  mesh_format_of(args.output);  // an unknown output format fails before any work
-  Clock total, clock;
-  TriangleMesh mesh = read_triangle_mesh(args.input);
-  report.load_seconds = clock.lap();
-  try {
-    convert(args, mesh, report, total);
-  } catch (const MeshError& e) {
-    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
+  if (!args.render.empty()) {
+    const QuadStats& s = result.stats;
+    RenderOptions options;
+    options.view = view;
+    options.width = args.render_width;
+    options.height = args.render_height;
+    options.first_added_vertex = VertexId(mesh.positions.size());
+    options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
+                           (report.options.objective == Objective::quality
+                                ? std::string("min-cost (objective quality)")
+                                : std::string(to_string(report.options.algorithm))) +
+                           (args.all_quad ? ", all quads" : ""),
+                       std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) +
+                           " pairs, " + std::to_string(s.triangles_left) + " triangles left, " +
+                           std::to_string(s.polygons_kept) + " polygons kept, " +
+                           std::to_string(s.added_vertices) + " vertices added",
+                       describe(quality_figures(quad_costs(result.mesh)))};
+    render_mesh(result.mesh, args.render, options);
   }
   return 0;
 }
 
 struct GenerateArgs {
-  std::string output;
+  std::string output, kind = "plate";
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
+  std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
   bool dents = false;
   std::uint64_t seed = 1;
 };
 
-int generate(const GenerateArgs& args) {
+PolygonMesh generated_surface(const GenerateArgs& args) {
+  if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
+  if (args.kind == "projective") return projective_plane(args.subdivision);
+  if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
   TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
   }
+  return to_polygon_mesh(mesh);
+}
+
+int generate(const GenerateArgs& args) {
+  PolygonMesh surface = generated_surface(args);
+  // Each step with its own seed, so that asking for one does not change what another does.
+  if (args.holes > 0) surface = punch_holes(surface, args.holes, args.seed + 1);
+  if (args.fins > 0) surface = add_fins(surface, args.fins, args.seed + 2);
+  if (args.pinches > 0) surface = pinch_vertices(surface, args.pinches, args.seed + 3);
+  if (args.flip_faces > 0) surface = flip_faces(surface, args.flip_faces, args.seed + 4);
+  const TriangleMesh mesh = to_triangle_mesh(surface);
   write_triangle_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.triangles.size(),
               mesh.positions.size(), args.output.c_str());
@@ -156,25 +198,29 @@ int generate(const GenerateArgs& args) {
 
 int main(int argc, char** argv) {
   using namespace petersen::cli;
+  petersen::huge_pages::enable_pool_unless_switched_off();
   CLI::App app{
       "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
       "triangle meshes"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
 
   std::string info_path;
-  CLI::App* info_cmd = app.add_subcommand(
-      "info", "Print V, E, F, components, genus and what kind of surface a mesh is");
+  CLI::App* info_cmd =
+      app.add_subcommand("info",
+                         "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
+                         "orientability and genus");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
   QuadArgs quad_args;
-  CLI::App* quad_cmd = app.add_subcommand(
-      "quad", "Convert a closed triangle mesh into a quad mesh on the same vertices");
-  quad_cmd
-      ->add_option("IN", quad_args.input, "closed triangle mesh: OFF, OBJ or PLY, optionally .gz")
-      ->required();
+  CLI::App* quad_cmd = app.add_subcommand("quad",
+                                          "Pair the triangles of any mesh into quads (a certified "
+                                          "maximum pairing; other polygons kept)");
+  quad_cmd->add_option("IN", quad_args.input, "mesh: OFF, OBJ or PLY, optionally .gz")->required();
   quad_cmd
       ->add_option("OUT", quad_args.output,
-                   "quad mesh to write; format from the extension (.off, .obj, .ply)")
+                   "mesh to write (written whole, then renamed into place); format from the "
+                   "extension (.off, .obj, .ply, optionally .gz)")
       ->required();
   quad_cmd->add_option("--algorithm", quad_args.algorithm, "sg, ps, ds, gw, frink, lemon or lrs")
       ->capture_default_str();
@@ -184,17 +230,54 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
       ->capture_default_str();
+  quad_cmd
+      ->add_option("--objective", quad_args.objective,
+                   "pairs (any maximum pairing, by --algorithm) or quality (the exact "
+                   "minimum-cost pairing by quad shape, certified)")
+      ->capture_default_str();
+  quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
+                       "never pair across an edge whose triangles fold by more than DEG degrees");
+  quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
+                       "never pair across these edges: a file of vertex id pairs, one per line");
+  quad_cmd->add_flag("--all-quad", quad_args.all_quad,
+                     "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
                        "also write the summary as one JSON object to this file");
 
+  quad_cmd->add_option("--render", quad_args.render,
+                       "also draw the result into this picture (.png or .svg)");
+  quad_cmd->add_option("--view", quad_args.view, "--render's view direction x,y,z")
+      ->delimiter(',')
+      ->expected(3);
+  quad_cmd->add_option("--render-width", quad_args.render_width)->capture_default_str();
+  quad_cmd->add_option("--render-height", quad_args.render_height)->capture_default_str();
+
+  RenderArgs render_args;
+  CLI::App* render_cmd = app.add_subcommand(
+      "render",
+      "Draw a mesh as a PNG or SVG picture: shaded, edges drawn, quads coloured by their worst "
+      "corner's deviation from 90 degrees, triangles beside quads highlighted");
+  render_cmd->add_option("MESH", render_args.input, "OFF, OBJ or PLY file, optionally .gz")
+      ->required();
+  render_cmd->add_option("OUT", render_args.output, "picture to write: .png or .svg")->required();
+  render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
+      ->delimiter(',')
+      ->expected(3);
+  render_cmd->add_option("--width", render_args.width)->capture_default_str();
+  render_cmd->add_option("--height", render_args.height)->capture_default_str();
+
   GenerateArgs gen_args;
-  CLI::App* gen_cmd = app.add_subcommand("generate",
-                                         "Write a closed test triangulation: a voxel plate with "
-                                         "holes (genus holes-x*holes-y) or dents (genus 0)");
+  CLI::App* gen_cmd = app.add_subcommand(
+      "generate",
+      "Write a test triangulation: a voxel plate with holes (genus holes-x*holes-y) or dents "
+      "(genus 0), a Klein bottle, a projective plane or an open grid; optionally with holes, "
+      "fins, pinched vertices and flipped faces");
   gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")->required();
   gen_cmd->add_option("--holes-x", gen_args.holes_x)->capture_default_str();
   gen_cmd->add_option("--holes-y", gen_args.holes_y)->capture_default_str();
-  gen_cmd->add_option("--subdivision", gen_args.subdivision, "squares per voxel face side")
+  gen_cmd
+      ->add_option("--subdivision", gen_args.subdivision,
+                   "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
       ->capture_default_str();
   gen_cmd->add_flag("--dents", gen_args.dents, "cavities instead of through-holes (genus 0)");
   gen_cmd
@@ -203,12 +286,30 @@ int main(int argc, char** argv) {
   gen_cmd->add_option("--flips", gen_args.flips, "random edge flips, for irregularity")
       ->capture_default_str();
   gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
+  gen_cmd
+      ->add_option("--kind", gen_args.kind,
+                   "plate, klein (Klein bottle), projective (projective plane) or open-grid")
+      ->check(CLI::IsMember({"plate", "klein", "projective", "open-grid"}))
+      ->capture_default_str();
+  gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and open-grid")
+      ->capture_default_str();
+  gen_cmd->add_option("--ny", gen_args.ny, "grid rows of klein and open-grid")
+      ->capture_default_str();
+  gen_cmd->add_option("--holes", gen_args.holes, "random patches of faces to remove");
+  gen_cmd->add_option("--fins", gen_args.fins, "triangles to add on edges (non-manifold edges)");
+  gen_cmd->add_option("--pinches", gen_args.pinches, "vertex pairs to merge (pinched vertices)");
+  gen_cmd->add_option("--flip-faces", gen_args.flip_faces, "faces whose orientation to reverse");
+
+  MatchArgs match_args;
+  CLI::App* match_cmd = add_match_command(app, match_args);
 
   CLI11_PARSE(app, argc, argv);
   try {
     if (info_cmd->parsed()) return info(info_path);
     if (quad_cmd->parsed()) return quad(quad_args);
     if (gen_cmd->parsed()) return generate(gen_args);
+    if (render_cmd->parsed()) return render(render_args);
+    if (match_cmd->parsed()) return run_match(match_args);
   } catch (const CLI::Error& e) {
     return app.exit(e);
   } catch (const std::exception& e) {

@@ -2,89 +2,122 @@
 
 #include <cinttypes>
 #include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "json_text.hpp"
+#include "petersen/quadrangulate/stats_fields.hpp"
 
 namespace petersen::cli {
 
-void print_summary(std::FILE* out, const RunReport& r) {
-  std::fprintf(out, "input       %s\n", r.input.c_str());
-  std::fprintf(out,
-               "triangles   %" PRIu64 " (vertices %" PRIu64 ", genus %" PRId64
-               ", components %" PRIu64 ")\n",
-               r.triangles, r.vertices, r.genus, r.components);
-  std::fprintf(out, "algorithm   %s%s%s\n", r.algorithm.c_str(),
-               r.augment.empty() ? "" : ", augment ", r.augment.c_str());
-  std::fprintf(out, "load        %.4f s\n", r.load_seconds);
-  std::fprintf(out, "dual        %.4f s\n", r.dual_seconds);
-  std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "\n", r.initial_seconds,
-               r.initial_paired_percent(), r.unpaired_after_initial);
-  std::fprintf(
-      out, "augment     %.4f s  paths %" PRIu64 "  blossoms %" PRIu64 "  labelled %" PRIu64 "\n",
-      r.augment_seconds, r.augmenting_paths, r.blossoms, r.nodes_labelled);
-  if (r.reductions > 0) std::fprintf(out, "reductions  %" PRIu64 "\n", r.reductions);
-  if (r.flipped_edges >= 0) {
-    const std::uint64_t edges = r.triangles * 3 / 2;
-    std::fprintf(out,
-                 "flipped     %" PRId64 " of %" PRIu64
-                 " edges (%.2f %%), irreducible triangulation %" PRId64 " vertices\n",
-                 r.flipped_edges, edges, 100.0 * double(r.flipped_edges) / double(edges),
-                 r.irreducible_vertices);
-  }
-  std::fprintf(out, "matching    %.4f s\n", r.matching_seconds());
-  std::fprintf(out, "quads       %" PRIu64 " written to %s (%.4f s)\n", r.quads, r.output.c_str(),
-               r.write_seconds);
-  std::fprintf(out, "total       %.4f s\n", r.total_seconds);
-}
-
 namespace {
 
-std::string json_string(const std::string& s) {
-  std::string out = "\"";
-  for (char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\u%04x", static_cast<unsigned>(c));
-      out += escaped;
-    } else {
-      out += c;
-    }
-  }
-  return out + "\"";
+double initial_paired_percent(const QuadStats& s) {
+  return s.triangles == 0 ? 100.0
+                          : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) /
+                                double(s.triangles);
 }
 
 }  // namespace
 
-void write_json(std::FILE* out, const RunReport& r) {
-  std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"algorithm\": %s,\n",
-               json_string(r.input).c_str(), json_string(r.output).c_str(),
-               json_string(r.algorithm).c_str());
-  if (!r.augment.empty()) std::fprintf(out, "  \"augment\": %s,\n", json_string(r.augment).c_str());
+void print_summary(std::FILE* out, const RunReport& r) {
+  const QuadStats& s = r.quad;
+  std::fprintf(out, "input       %s\n", r.input.c_str());
   std::fprintf(out,
-               "  \"vertices\": %" PRIu64 ",\n  \"triangles\": %" PRIu64 ",\n  \"genus\": %" PRId64
-               ",\n  \"components\": %" PRIu64 ",\n",
-               r.vertices, r.triangles, r.genus, r.components);
-  std::fprintf(out, "  \"load_seconds\": %.9f,\n  \"dual_seconds\": %.9f,\n", r.load_seconds,
-               r.dual_seconds);
-  std::fprintf(out, "  \"initial_seconds\": %.9f,\n  \"initial_paired_percent\": %.6f,\n",
-               r.initial_seconds, r.initial_paired_percent());
-  std::fprintf(out, "  \"unpaired_after_initial\": %" PRIu64 ",\n  \"augment_seconds\": %.9f,\n",
-               r.unpaired_after_initial, r.augment_seconds);
-  std::fprintf(out, "  \"matching_seconds\": %.9f,\n", r.matching_seconds());
-  std::fprintf(out,
-               "  \"augmenting_paths\": %" PRIu64 ",\n  \"blossoms\": %" PRIu64
-               ",\n  \"nodes_labelled\": %" PRIu64 ",\n",
-               r.augmenting_paths, r.blossoms, r.nodes_labelled);
-  std::fprintf(out, "  \"reductions\": %" PRIu64 ",\n", r.reductions);
-  if (r.flipped_edges >= 0) {
-    std::fprintf(out,
-                 "  \"flipped_edges\": %" PRId64 ",\n  \"irreducible_vertices\": %" PRId64 ",\n",
-                 r.flipped_edges, r.irreducible_vertices);
+               "faces       %" PRIu64 ": %" PRIu64 " triangles, %" PRIu64
+               " other polygons kept (vertices %" PRIu64 ")\n",
+               s.faces_in, s.triangles, s.polygons_kept, s.vertices);
+  std::fprintf(out, "components  %" PRIu64 " (%" PRIu64 " closed)\n", s.components,
+               s.closed_components);
+  std::fprintf(out, "cut edges   %" PRIu64 " of %" PRIu64 ":", s.cuts.total(), s.mesh_edges);
+  for (int c = 0; c < kCutCauses; ++c) {
+    if (s.cuts.by_cause[c] > 0) {
+      std::fprintf(out, " %s %" PRIu64, std::string(to_string(CutCause(c))).c_str(),
+                   s.cuts.by_cause[c]);
+    }
   }
+  const Algorithm a = r.options.algorithm;
+  const bool quality = r.options.objective == Objective::quality;
+  const bool augments =
+      !quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs);
+  std::fprintf(out, "\nalgorithm   %s%s%s\n",
+               quality ? "min-cost (objective quality)" : std::string(to_string(a)).c_str(),
+               augments ? ", augment " : "",
+               augments ? std::string(to_string(r.options.augment)).c_str() : "");
+  if (s.lrs_fallback_components > 0) {
+    std::fprintf(out, "            %" PRIu64 " closed components by ps: lrs needs %s\n",
+                 s.lrs_fallback_components, s.lrs_fallback_reason.c_str());
+  }
+  std::fprintf(out, "load        %.4f s\n", r.load_seconds);
+  std::fprintf(out, "check       %.4f s\n", s.check_seconds);
+  std::fprintf(out, "dual        %.4f s\n", s.dual_seconds);
+  std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "\n",
+               s.matching.initial_seconds, initial_paired_percent(s),
+               std::uint64_t{s.matching.unpaired_after_initial});
   std::fprintf(
-      out, "  \"quads\": %" PRIu64 ",\n  \"write_seconds\": %.9f,\n  \"total_seconds\": %.9f\n}\n",
-      r.quads, r.write_seconds, r.total_seconds);
+      out, "augment     %.4f s  paths %" PRIu64 "  blossoms %" PRIu64 "  labelled %" PRIu64 "\n",
+      s.matching.augment_seconds, s.matching.augmenting_paths, s.matching.blossoms,
+      s.matching.nodes_labelled);
+  if (s.matching.reductions > 0)
+    std::fprintf(out, "reductions  %" PRIu64 "\n", s.matching.reductions);
+  if (a == Algorithm::lrs) {
+    std::fprintf(out,
+                 "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64 " vertices\n",
+                 s.flipped_edges, s.irreducible_vertices);
+  }
+  std::fprintf(out, "verify      %.4f s  maximum %s\n", s.verify_seconds,
+               s.maximum_certified ? "certified" : "NOT certified");
+  std::fprintf(out, "pairs       %" PRIu64 "  triangles left %" PRIu64 " (%.4f s)\n", s.pairs,
+               s.triangles_left, s.quads_seconds);
+  std::fprintf(out,
+               "quality     median %.2f, 95th percentile %.2f degrees, %" PRIu64
+               " non-convex, total %.4f%s\n",
+               s.quality_median, s.quality_p95, s.nonconvex_quads, s.objective_total,
+               s.optimality_certified ? " (minimum certified)" : "");
+  if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
+    std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",
+                 s.added_vertices, s.split_quads, s.all_quad_seconds);
+  }
+  std::fprintf(out, "write       %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
+  std::fprintf(out, "total       %.4f s\n", r.total_seconds);
+}
+
+void write_json(std::FILE* out, const RunReport& r) {
+  const std::vector<StatField> fields = stats_fields(r.quad, r.options,
+                                                     {.input = r.input,
+                                                      .output = r.output,
+                                                      .load_seconds = r.load_seconds,
+                                                      .write_seconds = r.write_seconds,
+                                                      .total_seconds = r.total_seconds});
+  std::fprintf(out, "{\n");
+  for (std::size_t i = 0; i < fields.size(); ++i) {
+    std::fprintf(out, "  \"%s\": ", fields[i].key.c_str());
+    std::visit(
+        [&](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, bool>) {
+            std::fputs(v ? "true" : "false", out);
+          } else if constexpr (std::is_same_v<T, std::int64_t>) {
+            std::fprintf(out, "%" PRId64, v);
+          } else if constexpr (std::is_same_v<T, std::uint64_t>) {
+            std::fprintf(out, "%" PRIu64, v);
+          } else if constexpr (std::is_same_v<T, double>) {
+            std::fprintf(out, "%.9f", v);
+          } else if constexpr (std::is_same_v<T, std::string>) {
+            std::fputs(json_string(v).c_str(), out);
+          } else {
+            std::fputs("{", out);
+            for (std::size_t k = 0; k < v.size(); ++k) {
+              std::fprintf(out, "%s\"%s\": %" PRIu64, k ? ", " : "", v[k].first.c_str(),
+                           v[k].second);
+            }
+            std::fputs("}", out);
+          }
+        },
+        fields[i].value);
+    std::fputs(i + 1 < fields.size() ? ",\n" : "\n}\n", out);
+  }
 }
 
 }  // namespace petersen::cli

@@ -9,6 +9,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "petersen/graph/huge_pages.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 
@@ -25,6 +26,7 @@ std::vector<std::string> split(const std::string& list) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  petersen::huge_pages::enable_pool_unless_switched_off();
   using namespace petersen::bench;
   CLI::App app{"petersen_bench: the paper's §4 experiment, our figures beside the paper's"};
   bool full = false, no_meshes = false;

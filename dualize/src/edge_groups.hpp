@@ -1,7 +1,8 @@
 #pragma once
 // Halfedges grouped by the undirected edge they lie on, without hashing: the core shared by the
-// dual builder and the surface inspection.
+// dual builder, the surface inspection and the pairable graph.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -11,24 +12,117 @@
 
 namespace petersen {
 
-/// Halfedge h = 3t + k runs from corner k of triangle t to corner (k+1)%3. `entries` holds
-/// {larger vertex, halfedge} bucketed by the smaller vertex (bucket v is entries[start[v]] up to
-/// entries[start[v+1]]) and sorted within each bucket, so the copies of an edge are adjacent and
-/// in halfedge order. O(F log d) for maximum vertex degree d.
+/// `entries` holds {larger vertex, halfedge} bucketed by the smaller vertex (bucket v is
+/// entries[start[v]] up to entries[start[v+1]]) and sorted within each bucket, so the copies of
+/// an edge are adjacent and in halfedge order.
 struct EdgeGroups {
   HugeVector<std::uint32_t> start;
   HugeVector<std::array<std::uint32_t, 2>> entries;
 };
 
-/// Groups the halfedges of the triangles whose `usable` flag is set (all when `usable` is empty).
-/// The corners of usable triangles must be in range.
-EdgeGroups group_halfedges(const TriangleMesh& mesh, const std::vector<std::uint8_t>& usable);
+/// Groups halfedges 0..halfedge_count-1, halfedge h running from from(h) to to(h) (vertices below
+/// vertex_count), skipping those for which used(h) is false. A counting sort by smaller vertex,
+/// then a sort within each bucket: O(H log d) for maximum vertex degree d.
+template <class From, class To, class Used>
+EdgeGroups group_halfedges(std::size_t vertex_count, std::uint32_t halfedge_count, From from, To to,
+                           Used used) {
+  // After the placement loop start[v] has moved to the end of bucket v; the shift restores it.
+  EdgeGroups groups;
+  auto& start = groups.start;
+  start.assign(vertex_count + 1, 0);
+  std::uint32_t total = 0;
+  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
+    if (!used(h)) continue;
+    ++start[std::min(from(h), to(h)) + 1];
+    ++total;
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  groups.entries.resize(total);
+  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
+    if (!used(h)) continue;
+    const VertexId a = from(h), b = to(h);
+    groups.entries[start[std::min(a, b)]++] = {std::max(a, b), h};
+  }
+  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
+  start[0] = 0;
+  for (std::size_t v = 0; v < vertex_count; ++v) {
+    std::sort(groups.entries.begin() + start[v], groups.entries.begin() + start[v + 1]);
+  }
+  return groups;
+}
 
+/// Halfedge h = 3t + k runs from corner k of triangle t to corner (k+1)%3.
 inline VertexId halfedge_from(const TriangleMesh& mesh, std::uint32_t h) {
   return mesh.triangles[h / 3][h % 3];
 }
 inline VertexId halfedge_to(const TriangleMesh& mesh, std::uint32_t h) {
   return mesh.triangles[h / 3][(h % 3 + 1) % 3];
+}
+
+/// Groups the halfedges of the triangles whose `usable` flag is set (all when `usable` is empty).
+/// The corners of usable triangles must be in range.
+inline EdgeGroups group_halfedges(const TriangleMesh& mesh,
+                                  const std::vector<std::uint8_t>& usable) {
+  return group_halfedges(
+      mesh.positions.size(), static_cast<std::uint32_t>(3 * mesh.triangles.size()),
+      [&](std::uint32_t h) { return halfedge_from(mesh, h); },
+      [&](std::uint32_t h) { return halfedge_to(mesh, h); },
+      [&](std::uint32_t h) { return usable.empty() || usable[h / 3]; });
+}
+
+}  // namespace petersen
+
+namespace petersen {
+
+/// The halfedges of a polygon mesh: halfedge h is corner h of the flat corner array, running to
+/// the next corner of its face. The face of each corner is kept only when some face is not a
+/// triangle (otherwise it is h / 3).
+class PolygonHalfedges {
+ public:
+  explicit PolygonHalfedges(const PolygonMesh& mesh) : mesh_(mesh) {
+    if (mesh.all_triangles()) return;
+    corner_face_.resize(mesh.corners.size());
+    for (FaceId f = 0; f < mesh.face_count(); ++f)
+      for (std::uint32_t c = mesh.face_start[f]; c < mesh.face_start[f + 1]; ++c)
+        corner_face_[c] = f;
+  }
+  std::uint32_t count() const { return static_cast<std::uint32_t>(mesh_.corners.size()); }
+  FaceId face(std::uint32_t h) const { return corner_face_.empty() ? h / 3 : corner_face_[h]; }
+  std::uint32_t first(FaceId f) const {
+    return mesh_.all_triangles() ? 3 * f : mesh_.face_start[f];
+  }
+  std::uint32_t next(std::uint32_t h) const {
+    const FaceId f = face(h);
+    return h + 1 == first(f) + mesh_.arity(f) ? first(f) : h + 1;
+  }
+  VertexId from(std::uint32_t h) const { return mesh_.corners[h]; }
+  VertexId to(std::uint32_t h) const { return mesh_.corners[next(h)]; }
+
+  /// The halfedges grouped by edge; a halfedge from a vertex to itself (inside a face that
+  /// repeats a vertex) lies on no edge and is left out.
+  EdgeGroups group() const {
+    return group_halfedges(
+        mesh_.positions.size(), count(), [&](std::uint32_t h) { return from(h); },
+        [&](std::uint32_t h) { return to(h); }, [&](std::uint32_t h) { return from(h) != to(h); });
+  }
+
+ private:
+  const PolygonMesh& mesh_;
+  HugeVector<FaceId> corner_face_;
+};
+
+/// Calls visit(first, end) for each edge's group of entries [first, end) in `groups`.
+template <class Visit>
+void for_each_edge_group(const EdgeGroups& groups, Visit visit) {
+  for (std::size_t v = 0; v + 1 < groups.start.size(); ++v) {
+    const std::uint32_t last = groups.start[v + 1];
+    for (std::uint32_t first = groups.start[v]; first != last;) {
+      std::uint32_t end = first + 1;
+      while (end != last && groups.entries[end][0] == groups.entries[first][0]) ++end;
+      visit(first, end);
+      first = end;
+    }
+  }
 }
 
 }  // namespace petersen

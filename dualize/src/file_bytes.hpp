@@ -1,16 +1,34 @@
 #pragma once
-// Whole-file reads and writes, through zlib when the name ends in .gz.
+// Whole-file reads and atomic whole-file writes, gzip through libdeflate.
 
 #include <string>
 #include <string_view>
 
+#include "petersen/graph/huge_pages.hpp"
+
 namespace petersen {
 
-/// The decompressed bytes of the file (zlib reads plain files as they are). Throws MeshError
-/// naming the path when it cannot be opened or the compressed stream is corrupt.
-std::string read_file_bytes(const std::string& path);
+/// A file's bytes, in an uninitialised buffer on huge pages (a multi-gigabyte file is neither
+/// zero-filled first nor faulted in afresh; huge_pages.hpp).
+struct FileBytes {
+  HugeArray<char> data;
+  std::size_t size = 0;
 
-/// Writes the bytes, gzip-compressed when the path ends in .gz. Throws MeshError on failure.
+  std::string_view view() const { return {data.get(), size}; }
+};
+
+/// The file's bytes, decompressed when they start with the gzip magic (any name; concatenated
+/// gzip members are decompressed one after the other, trailing zero bytes ignored). Throws
+/// MeshError naming the path when the file cannot be opened or read, when the gzip data is
+/// corrupt, or when it would decompress beyond deflate's largest ratio (1032:1) or the machine's
+/// physical memory. O(decompressed size).
+FileBytes read_file_bytes(const std::string& path);
+
+/// Writes the bytes to `path` atomically, gzip-compressed when the path ends in .gz: into a new
+/// temporary file in the same folder, flushed to disk, then renamed over `path`. On any failure
+/// the temporary file is removed, an existing file at `path` is left untouched, and MeshError
+/// names the path. A new file gets the usual permissions (0666 less the umask), a replaced file
+/// keeps its own.
 void write_file_bytes(const std::string& path, std::string_view bytes);
 
 /// True when the path ends in `suffix`, ignoring ASCII case.

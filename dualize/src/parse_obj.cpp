@@ -1,5 +1,6 @@
-// OBJ: only "v x y z" and "f a b c" lines matter. A corner is written v, v/vt, v//vn or v/vt/vn;
-// a negative v counts back from the last vertex read so far (-1 is the latest), per the OBJ spec.
+// OBJ: only "v x y z" and "f a b c ..." lines matter. A corner is written v, v/vt, v//vn or
+// v/vt/vn; a negative v counts back from the last vertex read so far (-1 is the latest), per the
+// OBJ spec. Faces have any number of corners from 3 on.
 
 #include <vector>
 
@@ -8,16 +9,20 @@
 
 namespace petersen {
 
-TriangleMesh parse_obj(std::string_view bytes, const std::string& source) {
+PolygonMesh parse_obj(std::string_view bytes, const std::string& source, FaceKinds kinds) {
   text::Lines lines{bytes};
   const text::Located at{source, lines};
-  TriangleMesh mesh;
+  PolygonMesh mesh;
   // Reserving by a guess from the size keeps the large files from re-growing many times: a "v"
-  // line is about 30 bytes and there are about two faces per vertex.
+  // line is about 30 bytes and there are about two triangles (6 corners) per vertex.
   mesh.positions.reserve(bytes.size() / 90);
-  mesh.triangles.reserve(bytes.size() / 45);
+  mesh.corners.reserve(bytes.size() / 15);
+  // The corners of the face being read: reused, so a face line allocates nothing. Messages are
+  // built only on error.
+  std::vector<VertexId> face;
   std::string_view line, token;
   bool any_content = false;
+  auto face_name = [&] { return "face " + std::to_string(mesh.face_count()); };
   while (lines.next(line)) {
     text::Tokens tokens{text::strip_comment(line)};
     if (!tokens.next(token)) continue;
@@ -36,35 +41,27 @@ TriangleMesh parse_obj(std::string_view bytes, const std::string& source) {
       if (mesh.positions.size() == 0xFFFFFFFFu) at.fail("more than 2^32 - 1 vertices");
       mesh.positions.push_back(p);
     } else if (token == "f") {
-      const std::string face = "face " + std::to_string(mesh.triangles.size());
-      std::array<VertexId, 3> tri;
-      int corners = 0;
+      face.clear();
+      const std::int64_t count = static_cast<std::int64_t>(mesh.positions.size());
       while (tokens.next(token)) {
-        if (corners == 3) {
-          int total = corners + 1;
-          while (tokens.next(token)) ++total;
-          at.fail(face + " has " + std::to_string(total) +
-                  " corners; only triangles are supported");
-        }
         // Only the vertex index, before the first '/', matters.
         const std::string_view index_text = token.substr(0, token.find('/'));
         std::int64_t index = 0;
         if (!text::parse_integer(index_text, index) || index == 0) {
-          at.fail(face + ": bad vertex index " + text::Located::quote(token));
+          at.fail(face_name() + ": bad vertex index " + text::Located::quote(token));
         }
-        const std::int64_t count = static_cast<std::int64_t>(mesh.positions.size());
         const std::int64_t zero_based = index > 0 ? index - 1 : count + index;
         if (zero_based < 0 || zero_based >= count) {
-          at.fail(face + ": vertex index " + std::to_string(index) + " out of range (" +
+          at.fail(face_name() + ": vertex index " + std::to_string(index) + " out of range (" +
                   std::to_string(count) + " vertices read so far)");
         }
-        tri[corners++] = static_cast<VertexId>(zero_based);
+        face.push_back(static_cast<VertexId>(zero_based));
       }
-      if (corners < 3) {
-        at.fail(face + " has " + std::to_string(corners) + " corners; a triangle needs 3");
+      if (!corner_count_ok(face.size(), kinds)) {
+        at.fail(corner_count_error(mesh.face_count(), face.size()));
       }
-      if (mesh.triangles.size() == 0xFFFFFFFFu) at.fail("more than 2^32 - 1 faces");
-      mesh.triangles.push_back(tri);
+      if (!corners_fit(mesh, face.size())) at.fail("more than 2^32 - 1 face corners");
+      mesh.add_face(face);
     }
   }
   if (!any_content) throw MeshError(source + ": empty file");

@@ -1,5 +1,8 @@
 // OFF: an optional "OFF" keyword (COFF, NOFF, ... too), the counts "V F E", V vertex lines and F
-// face lines "n i j k"; '#' starts a comment; extra values on a line (colours) are ignored.
+// face lines "n i1 ... in" (n >= 3); '#' starts a comment; extra values on a line (colours) are
+// ignored.
+
+#include <vector>
 
 #include "parsers.hpp"
 #include "text_scan.hpp"
@@ -22,7 +25,7 @@ bool next_content(text::Lines& lines, text::Tokens& tokens) {
 
 }  // namespace
 
-TriangleMesh parse_off(std::string_view bytes, const std::string& source) {
+PolygonMesh parse_off(std::string_view bytes, const std::string& source, FaceKinds kinds) {
   text::Lines lines{bytes};
   const text::Located at{source, lines};
   text::Tokens tokens;
@@ -57,7 +60,7 @@ TriangleMesh parse_off(std::string_view bytes, const std::string& source) {
             std::to_string(lines.remaining()) + " bytes can hold");
   }
 
-  TriangleMesh mesh;
+  PolygonMesh mesh;
   mesh.positions.reserve(text::safe_reserve(vertex_count, lines.remaining(), 6));
   for (std::uint64_t v = 0; v < vertex_count; ++v) {
     if (!next_content(lines, tokens)) {
@@ -73,7 +76,9 @@ TriangleMesh parse_off(std::string_view bytes, const std::string& source) {
     }
     mesh.positions.push_back(p);
   }
-  mesh.triangles.reserve(text::safe_reserve(face_count, lines.remaining(), 8));
+  // Triangles are the common case: 3 corners per face, bounded by what the bytes can hold.
+  mesh.corners.reserve(3 * text::safe_reserve(face_count, lines.remaining(), 8));
+  std::vector<VertexId> face;  // reused: a face line allocates nothing
   for (std::uint64_t f = 0; f < face_count; ++f) {
     if (!next_content(lines, tokens)) {
       at.fail("truncated: expected " + std::to_string(face_count) + " faces, found " +
@@ -81,17 +86,19 @@ TriangleMesh parse_off(std::string_view bytes, const std::string& source) {
     }
     std::int64_t corners = 0;
     tokens.next(token);
-    if (!text::parse_integer(token, corners)) {
+    if (!text::parse_integer(token, corners) || corners < 0) {
       at.fail("face " + std::to_string(f) + ": bad corner count " + text::Located::quote(token));
     }
-    if (corners != 3) {
-      at.fail("face " + std::to_string(f) + " has " + std::to_string(corners) +
-              " corners; only triangles are supported");
+    if (!corner_count_ok(static_cast<std::uint64_t>(corners), kinds)) {
+      at.fail(corner_count_error(f, static_cast<std::uint64_t>(corners)));
     }
-    std::array<VertexId, 3> tri;
-    for (VertexId& corner : tri) {
+    face.clear();
+    for (std::int64_t k = 0; k < corners; ++k) {
       std::int64_t index = 0;
-      if (!tokens.next(token)) at.fail("face " + std::to_string(f) + ": expected 3 vertex indices");
+      if (!tokens.next(token)) {
+        at.fail("face " + std::to_string(f) + ": expected " + std::to_string(corners) +
+                " vertex indices");
+      }
       if (!text::parse_integer(token, index)) {
         at.fail("face " + std::to_string(f) + ": bad vertex index " + text::Located::quote(token));
       }
@@ -99,9 +106,10 @@ TriangleMesh parse_off(std::string_view bytes, const std::string& source) {
         at.fail("face " + std::to_string(f) + ": vertex index " + std::to_string(index) +
                 " out of range (" + std::to_string(vertex_count) + " vertices)");
       }
-      corner = static_cast<VertexId>(index);
+      face.push_back(static_cast<VertexId>(index));
     }
-    mesh.triangles.push_back(tri);
+    if (!corners_fit(mesh, face.size())) at.fail("more than 2^32 - 1 face corners");
+    mesh.add_face(face);
   }
   return mesh;
 }

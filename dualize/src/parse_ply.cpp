@@ -139,10 +139,10 @@ struct BinaryCursor {
 
 class PlyParser {
  public:
-  PlyParser(std::string_view bytes, const std::string& source)
-      : bytes_(bytes), source_(source), lines_{bytes}, at_{source, lines_} {}
+  PlyParser(std::string_view bytes, const std::string& source, FaceKinds kinds)
+      : bytes_(bytes), source_(source), kinds_(kinds), lines_{bytes}, at_{source, lines_} {}
 
-  TriangleMesh parse() {
+  PolygonMesh parse() {
     read_header();
     for (const Element& element : elements_) {
       check_fits(element);
@@ -275,7 +275,8 @@ class PlyParser {
                                " bytes can hold");
     }
     if (element.name == "vertex") mesh_.positions.reserve(element.count);
-    if (element.name == "face") mesh_.triangles.reserve(element.count);
+    // Triangles are the common case; a face record holds at least one byte per corner.
+    if (element.name == "face") mesh_.corners.reserve(std::min(3 * element.count, remaining));
   }
 
   std::string record_name(const Element& element, std::uint64_t i) const {
@@ -283,11 +284,12 @@ class PlyParser {
   }
 
   // The face's corner count and corners are checked the same way in both encodings.
-  void check_corner_count(const Element& element, std::uint64_t i, std::int64_t corners,
-                          const auto& fail) const {
-    if (corners != 3) {
-      fail(record_name(element, i) + " has " + std::to_string(corners) +
-           " corners; only triangles are supported");
+  void check_corner_count(std::uint64_t i, std::int64_t corners, const auto& fail) const {
+    if (!corner_count_ok(static_cast<std::uint64_t>(corners), kinds_)) {
+      fail(corner_count_error(i, static_cast<std::uint64_t>(corners)));
+    }
+    if (!corners_fit(mesh_, static_cast<std::uint64_t>(corners))) {
+      fail("more than 2^32 - 1 face corners");
     }
   }
   VertexId checked_index(const Element& element, std::uint64_t i, std::int64_t index,
@@ -315,7 +317,7 @@ class PlyParser {
         if (text::Tokens{line}.next(token)) break;
       }
       std::array<double, 3> p{};
-      std::array<VertexId, 3> tri{};
+      face_.clear();
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
         const Property& property = element.properties[k];
         auto next = [&] {
@@ -346,7 +348,7 @@ class PlyParser {
           fail(record_name(element, i) + ": bad list length " + text::Located::quote(token));
         }
         const bool corners = is_face && layout_.face_list == int(k);
-        if (corners) check_corner_count(element, i, items, fail);
+        if (corners) check_corner_count(i, items, fail);
         for (std::int64_t j = 0; j < items; ++j) {
           next();
           std::int64_t index = 0;
@@ -355,12 +357,73 @@ class PlyParser {
                                           : text::parse_real(token, value))) {
             fail(record_name(element, i) + ": bad list value " + text::Located::quote(token));
           }
-          if (corners) tri[j] = checked_index(element, i, index, fail);
+          if (corners) face_.push_back(checked_index(element, i, index, fail));
         }
       }
       if (is_vertex) mesh_.positions.push_back(p);
-      if (is_face) mesh_.triangles.push_back(tri);
+      if (is_face) mesh_.add_face(face_);
     }
+  }
+
+  // The layouts most tools write (write_mesh too), in the host's byte order: vertices of just x,
+  // y, z of one floating type, faces of just a uchar-counted list of int or uint. Read with
+  // fixed-size copies instead of a switch per value, with the same checks and messages as the
+  // general loop. False (nothing read) for any other layout.
+  bool read_common_layout(const Element& element, BinaryCursor& in, std::uint64_t& i,
+                          const auto& fail, const auto& need) {
+    if ((encoding_ == Encoding::big) != (std::endian::native == std::endian::big)) return false;
+    const auto& properties = element.properties;
+    if (element.name == "vertex" && properties.size() == 3 && layout_.xyz[0] == 0 &&
+        layout_.xyz[1] == 1 && layout_.xyz[2] == 2 && properties[0].type == properties[1].type &&
+        properties[1].type == properties[2].type &&
+        (properties[0].type == Type::f32 || properties[0].type == Type::f64)) {
+      const std::size_t size = size_of(properties[0].type);
+      for (; i < element.count; ++i) {
+        need(3 * size);
+        std::array<double, 3> p;
+        if (size == 8) {
+          std::memcpy(p.data(), bytes_.data() + in.pos, 24);
+        } else {
+          float xyz[3];
+          std::memcpy(xyz, bytes_.data() + in.pos, 12);
+          p = {xyz[0], xyz[1], xyz[2]};
+        }
+        for (int axis = 0; axis < 3; ++axis) {
+          if (!std::isfinite(p[axis])) {
+            in.pos += axis * size;
+            fail(record_name(element, i) + ": non-finite " + properties[axis].name);
+          }
+        }
+        in.pos += 3 * size;
+        mesh_.positions.push_back(p);
+      }
+      return true;
+    }
+    if (element.name == "face" && properties.size() == 1 && layout_.face_list == 0 &&
+        properties[0].count_type == Type::u8 &&
+        (properties[0].type == Type::i32 || properties[0].type == Type::u32)) {
+      const bool is_signed = properties[0].type == Type::i32;
+      for (; i < element.count; ++i) {
+        need(1);
+        const std::size_t items = static_cast<unsigned char>(bytes_[in.pos]);
+        in.pos += 1;
+        check_corner_count(i, static_cast<std::int64_t>(items), fail);
+        need(4 * items);
+        face_.resize(items);
+        std::memcpy(face_.data(), bytes_.data() + in.pos, 4 * items);
+        for (VertexId& corner : face_) {
+          if (corner >= vertex_count_ || (is_signed && corner > 0x7FFFFFFFu)) {
+            const std::int64_t index =
+                is_signed ? std::int64_t{static_cast<std::int32_t>(corner)} : std::int64_t{corner};
+            checked_index(element, i, index, fail);
+          }
+        }
+        in.pos += 4 * items;
+        mesh_.add_face(face_);
+      }
+      return true;
+    }
+    return false;
   }
 
   void read_binary(const Element& element) {
@@ -375,9 +438,13 @@ class PlyParser {
         fail("truncated in " + record_name(element, i) + " of " + std::to_string(element.count));
       }
     };
+    if (read_common_layout(element, in, i, fail, need)) {
+      lines_.pos = in.pos;
+      return;
+    }
     for (; i < element.count && !element.properties.empty(); ++i) {
       std::array<double, 3> p{};
-      std::array<VertexId, 3> tri{};
+      face_.clear();
       for (std::size_t k = 0; k < element.properties.size(); ++k) {
         const Property& property = element.properties[k];
         const std::size_t item = size_of(property.type);
@@ -400,42 +467,43 @@ class PlyParser {
         need(size_of(property.count_type));
         const std::int64_t items = in.integer(property.count_type);
         if (items < 0) fail(record_name(element, i) + ": negative list length");
+        // Compared by division: items * item may not fit in 64 bits.
+        if (static_cast<std::uint64_t>(items) > (bytes_.size() - in.pos) / item) {
+          fail("truncated in " + record_name(element, i) + " of " + std::to_string(element.count) +
+               ": its list of " + std::to_string(items) + " values runs past the end");
+        }
         if (is_face && layout_.face_list == int(k)) {
-          check_corner_count(element, i, items, fail);
-          need(3 * item);
-          for (VertexId& corner : tri) {
-            corner = checked_index(element, i, in.integer(property.type), fail);
+          check_corner_count(i, items, fail);
+          for (std::int64_t j = 0; j < items; ++j) {
+            face_.push_back(checked_index(element, i, in.integer(property.type), fail));
           }
         } else {
-          // Compared by division: items * item may not fit in 64 bits.
-          if (static_cast<std::uint64_t>(items) > (bytes_.size() - in.pos) / item) {
-            fail("truncated in " + record_name(element, i) + ": its list of " +
-                 std::to_string(items) + " values runs past the end");
-          }
           in.pos += static_cast<std::size_t>(items) * item;
         }
       }
       if (is_vertex) mesh_.positions.push_back(p);
-      if (is_face) mesh_.triangles.push_back(tri);
+      if (is_face) mesh_.add_face(face_);
     }
     lines_.pos = in.pos;
   }
 
   std::string_view bytes_;
   const std::string& source_;
+  FaceKinds kinds_;
   text::Lines lines_;
   text::Located at_;
   Encoding encoding_ = Encoding::ascii;
   std::vector<Element> elements_;
   Layout layout_;
-  TriangleMesh mesh_;
+  PolygonMesh mesh_;
+  std::vector<VertexId> face_;  // the corners of the face being read, reused
   std::uint64_t vertex_count_ = 0;
 };
 
 }  // namespace
 
-TriangleMesh parse_ply(std::string_view bytes, const std::string& source) {
-  return PlyParser(bytes, source).parse();
+PolygonMesh parse_ply(std::string_view bytes, const std::string& source, FaceKinds kinds) {
+  return PlyParser(bytes, source, kinds).parse();
 }
 
 }  // namespace petersen

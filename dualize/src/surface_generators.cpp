@@ -123,6 +123,9 @@ TriangleMesh voxel_plate(const PlateSpec& spec) {
 
 TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
                                      std::uint64_t seed) {
+  // Draws are the engine's raw output modulo a size: mt19937_64's output is fixed by the
+  // standard, so a seed gives the same mesh on every library (the example's regeneration command
+  // in README.md relies on it); no std distribution, whose results differ between libraries.
   std::mt19937_64 rng(seed);
   auto& tris = mesh.triangles;
   for (std::uint32_t k = 0; k < splits; ++k) {

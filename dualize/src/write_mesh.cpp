@@ -13,125 +13,176 @@ namespace petersen {
 
 namespace {
 
-// The file's bytes, built in memory and written at once: tens of megabytes for a million faces,
-// so on huge pages and recycled like the meshes' arrays (huge_pages.hpp), not faulted in afresh.
-using Bytes = std::basic_string<char, std::char_traits<char>, HugePageAllocator<char>>;
-
-// Appends numbers with std::to_chars: shortest exact text for doubles, no locale, no iostreams.
-struct Text {
-  Bytes out;
-  void number(double x) { append(x); }
-  void number(std::uint64_t x) { append(x); }
-  void word(std::string_view s) { out += s; }
-  template <typename T>
-  void append(T x) {
-    char buffer[32];
-    const char* end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
-    out.append(buffer, static_cast<std::size_t>(end - buffer));
-  }
+// Any mesh as the writers see it: positions, and face f's corners as face(f).
+template <class FaceAt>
+struct MeshView {
+  std::span<const std::array<double, 3>> positions;
+  std::size_t face_count = 0;
+  std::size_t corner_count = 0;
+  std::uint32_t max_arity = 0;
+  FaceAt face;
 };
 
-template <std::size_t N>
-Bytes off_text(std::span<const std::array<double, 3>> positions,
-               std::span<const std::array<VertexId, N>> faces) {
-  Text t;
-  t.word("OFF\n");
-  t.number(std::uint64_t{positions.size()});
-  t.word(" ");
-  t.number(std::uint64_t{faces.size()});
-  t.word(" 0\n");
-  for (const auto& p : positions) {
-    for (int d = 0; d < 3; ++d) {
-      t.number(p[d]);
-      t.word(d < 2 ? " " : "\n");
-    }
-  }
-  for (const auto& f : faces) {
-    t.number(std::uint64_t{N});
-    for (VertexId v : f) {
-      t.word(" ");
-      t.number(std::uint64_t{v});
-    }
-    t.word("\n");
-  }
-  return std::move(t.out);
-}
+// The file's bytes, built in memory and written at once. The buffer is sized from an upper
+// bound of the output (every number at its longest), so it never grows and is never filled
+// first; on huge pages and recycled like the meshes' arrays (huge_pages.hpp).
+class Buffer {
+ public:
+  explicit Buffer(std::size_t bound) : data_(make_huge_array<char>(bound)), end_(data_.get()) {}
 
-template <std::size_t N>
-Bytes obj_text(std::span<const std::array<double, 3>> positions,
-               std::span<const std::array<VertexId, N>> faces) {
-  Text t;
-  for (const auto& p : positions) {
-    t.word("v");
-    for (double x : p) {
-      t.word(" ");
-      t.number(x);
-    }
-    t.word("\n");
+  std::string_view view() const { return {data_.get(), std::size_t(end_ - data_.get())}; }
+  void word(std::string_view s) {
+    std::memcpy(end_, s.data(), s.size());
+    end_ += s.size();
   }
-  for (const auto& f : faces) {
-    t.word("f");
-    for (VertexId v : f) {
-      t.word(" ");
-      t.number(std::uint64_t{v} + 1);  // OBJ counts from 1
-    }
-    t.word("\n");
+  void put(char c) { *end_++ = c; }
+  // std::to_chars: the shortest text that reads back as the same double, no locale.
+  template <typename T>
+  void number(T x) {
+    end_ = std::to_chars(end_, end_ + kLongestNumber, x).ptr;
   }
-  return std::move(t.out);
-}
+  template <typename T>
+  void binary(const T* values, std::size_t count) {
+    static_assert(std::endian::native == std::endian::little,
+                  "binary PLY writing assumes a little-endian host");
+    std::memcpy(end_, values, count * sizeof(T));
+    end_ += count * sizeof(T);
+  }
 
-template <typename T>
-void put_le(Bytes& out, T value) {
-  static_assert(std::endian::native == std::endian::little || sizeof(T) == 1,
-                "binary PLY writing assumes a little-endian host");
-  char raw[sizeof(T)];
-  std::memcpy(raw, &value, sizeof(T));
-  out.append(raw, sizeof(T));
-}
+  // "-2.2250738585072014e-308" is 24 characters; a 64-bit integer has at most 20 digits.
+  static constexpr std::size_t kLongestNumber = 24;
 
-template <std::size_t N>
-Bytes ply_bytes(std::span<const std::array<double, 3>> positions,
-                std::span<const std::array<VertexId, N>> faces) {
-  Bytes out = "ply\nformat binary_little_endian 1.0\ncomment written by petersen\n";
-  const std::string header = "element vertex " + std::to_string(positions.size()) +
-                             "\nproperty double x\nproperty double y\nproperty double z\n" +
-                             "element face " + std::to_string(faces.size()) +
-                             "\nproperty list uchar uint vertex_indices\nend_header\n";
-  out += header;
-  out.reserve(out.size() + positions.size() * 24 + faces.size() * (1 + 4 * N));
-  for (const auto& p : positions)
-    for (double x : p) put_le(out, x);
-  for (const auto& f : faces) {
-    put_le(out, static_cast<std::uint8_t>(N));
-    for (VertexId v : f) put_le(out, v);
+ private:
+  HugeArray<char> data_;
+  char* end_;
+};
+
+template <class FaceAt>
+Buffer off_text(const MeshView<FaceAt>& mesh) {
+  constexpr std::size_t n = Buffer::kLongestNumber;
+  Buffer out(64 + mesh.positions.size() * 3 * (n + 1) + mesh.face_count * (n + 1) +
+             mesh.corner_count * (n + 1));
+  out.word("OFF\n");
+  out.number(mesh.positions.size());
+  out.put(' ');
+  out.number(mesh.face_count);
+  out.word(" 0\n");
+  for (const auto& p : mesh.positions) {
+    out.number(p[0]);
+    out.put(' ');
+    out.number(p[1]);
+    out.put(' ');
+    out.number(p[2]);
+    out.put('\n');
+  }
+  for (std::size_t f = 0; f < mesh.face_count; ++f) {
+    const std::span<const VertexId> face = mesh.face(f);
+    out.number(face.size());
+    for (VertexId v : face) {
+      out.put(' ');
+      out.number(v);
+    }
+    out.put('\n');
   }
   return out;
 }
 
-template <std::size_t N>
-void write_mesh(const std::string& path, std::span<const std::array<double, 3>> positions,
-                std::span<const std::array<VertexId, N>> faces) {
+template <class FaceAt>
+Buffer obj_text(const MeshView<FaceAt>& mesh) {
+  constexpr std::size_t n = Buffer::kLongestNumber;
+  Buffer out(mesh.positions.size() * (2 + 3 * (n + 1)) + mesh.face_count * 2 +
+             mesh.corner_count * (n + 1));
+  for (const auto& p : mesh.positions) {
+    out.word("v ");
+    out.number(p[0]);
+    out.put(' ');
+    out.number(p[1]);
+    out.put(' ');
+    out.number(p[2]);
+    out.put('\n');
+  }
+  for (std::size_t f = 0; f < mesh.face_count; ++f) {
+    out.put('f');
+    for (VertexId v : mesh.face(f)) {
+      out.put(' ');
+      out.number(std::uint64_t{v} + 1);  // OBJ counts from 1
+    }
+    out.put('\n');
+  }
+  return out;
+}
+
+// Binary little endian: x, y, z as doubles (every position exact), each face as a list of uint
+// indices counted by a uchar, or by a uint when some face has more than 255 corners.
+template <class FaceAt>
+Buffer ply_bytes(const MeshView<FaceAt>& mesh) {
+  const bool wide = mesh.max_arity > 255;
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\ncomment written by petersen\nelement vertex " +
+      std::to_string(mesh.positions.size()) +
+      "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
+      std::to_string(mesh.face_count) + "\nproperty list " + (wide ? "uint" : "uchar") +
+      " uint vertex_indices\nend_header\n";
+  Buffer out(header.size() + mesh.positions.size_bytes() + mesh.face_count * (wide ? 4 : 1) +
+             mesh.corner_count * 4);
+  out.word(header);
+  out.binary(mesh.positions.data(), mesh.positions.size());
+  for (std::size_t f = 0; f < mesh.face_count; ++f) {
+    const std::span<const VertexId> face = mesh.face(f);
+    if (wide) {
+      const std::uint32_t count = static_cast<std::uint32_t>(face.size());
+      out.binary(&count, 1);
+    } else {
+      out.put(static_cast<char>(face.size()));
+    }
+    out.binary(face.data(), face.size());
+  }
+  return out;
+}
+
+template <class FaceAt>
+void write_view(const std::string& path, const MeshView<FaceAt>& mesh) {
   switch (mesh_format_of(path)) {
     case MeshFormat::off:
-      write_file_bytes(path, off_text<N>(positions, faces));
+      write_file_bytes(path, off_text(mesh).view());
       break;
     case MeshFormat::obj:
-      write_file_bytes(path, obj_text<N>(positions, faces));
+      write_file_bytes(path, obj_text(mesh).view());
       break;
     case MeshFormat::ply:
-      write_file_bytes(path, ply_bytes<N>(positions, faces));
+      write_file_bytes(path, ply_bytes(mesh).view());
       break;
   }
 }
 
+// Triangle and quad meshes: every face has N corners.
+template <std::size_t N>
+void write_fixed(const std::string& path, std::span<const std::array<double, 3>> positions,
+                 std::span<const std::array<VertexId, N>> faces) {
+  auto face = [faces](std::size_t f) { return std::span<const VertexId>(faces[f]); };
+  write_view(path, MeshView<decltype(face)>{positions, faces.size(), N * faces.size(), N, face});
+}
+
 }  // namespace
 
+void write_mesh(const std::string& path, const PolygonMesh& mesh) {
+  std::uint32_t max_arity = mesh.face_count() > 0 ? 3 : 0;
+  if (!mesh.all_triangles()) {
+    for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+      max_arity = std::max(max_arity, mesh.arity(static_cast<FaceId>(f)));
+    }
+  }
+  auto face = [&mesh](std::size_t f) { return mesh.face(static_cast<FaceId>(f)); };
+  write_view(path, MeshView<decltype(face)>{mesh.positions, mesh.face_count(), mesh.corners.size(),
+                                            max_arity, face});
+}
+
 void write_quad_mesh(const std::string& path, const QuadMesh& mesh) {
-  write_mesh<4>(path, mesh.positions, mesh.quads);
+  write_fixed<4>(path, mesh.positions, mesh.quads);
 }
 
 void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh) {
-  write_mesh<3>(path, mesh.positions, mesh.triangles);
+  write_fixed<3>(path, mesh.positions, mesh.triangles);
 }
 
 }  // namespace petersen

@@ -1,9 +1,9 @@
 #include "petersen/graph/generators.hpp"
 
-#include <algorithm>
-#include <random>
+#include <utility>
 
 #include "petersen/graph/connectivity.hpp"
+#include "petersen/graph/seeded_random.hpp"
 
 namespace petersen {
 
@@ -68,13 +68,15 @@ CubicGraph random_cubic_bridgeless(std::uint32_t n, std::uint64_t seed) {
   if (n < 2 || n % 2 != 0) {
     throw GraphError("a cubic graph needs an even number >= 2 of nodes; got " + std::to_string(n));
   }
-  std::mt19937_64 rng(seed);
+  SeededRandom random(seed);
   std::vector<NodeId> stubs(3 * std::size_t{n});
   for (std::size_t i = 0; i < stubs.size(); ++i) stubs[i] = static_cast<NodeId>(i / 3);
   EdgeList edges(stubs.size() / 2);
   // Loops appear about once per try whatever n is, so about e tries are expected.
   for (;;) {
-    std::shuffle(stubs.begin(), stubs.end(), rng);
+    // Fisher–Yates with petersen's own draws: the same graph from a seed on any library.
+    for (std::size_t i = stubs.size() - 1; i > 0; --i)
+      std::swap(stubs[i], stubs[random.below64(i + 1)]);
     bool has_loop = false;
     for (std::size_t i = 0; i < edges.size(); ++i) {
       edges[i] = {stubs[2 * i], stubs[2 * i + 1]};

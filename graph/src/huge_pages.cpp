@@ -1,9 +1,11 @@
 #include "petersen/graph/huge_pages.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <cstdlib>
 #include <mutex>
+#include <string_view>
 #include <vector>
 
 #if defined(__linux__)
@@ -21,14 +23,22 @@ struct Range {
   std::size_t bytes;
 };
 
-// Ranges given back and kept for reuse: a handful at a time, so searched linearly. Never
-// destroyed, so that arrays with static storage can still be released at exit.
+// Ranges given back and kept for reuse while the pool is on: a handful at a time, so searched
+// linearly. Made by the first enable_pool() and never destroyed, so that arrays with static
+// storage can still be released at exit. A program that never enables the pool never makes it.
 struct Retained {
   std::mutex mutex;
   std::vector<Range> ranges;
   std::size_t bytes = 0;
+  std::size_t limit = 0;  // 0: the pool is off
 };
-Retained& retained();
+Retained& retained() {
+  static Retained* const kept = new Retained;
+  return *kept;
+}
+// Read without the lock by acquire() and release(), so that with the pool off they touch no
+// shared state; the lock decides once it is on.
+std::atomic<bool> pool_on{false};
 
 // A forked child shares the kept ranges with its parent, copy on write: the first write to each
 // 4 KiB page would copy it (the huge page is split first). The child drops them instead, as
@@ -47,14 +57,6 @@ void drop_in_child() {
   kept.ranges.clear();
   kept.bytes = 0;
   kept.mutex.unlock();
-}
-
-Retained& retained() {
-  static Retained* const kept = [] {
-    pthread_atfork(lock_before_fork, unlock_in_parent, drop_in_child);
-    return new Retained;
-  }();
-  return *kept;
 }
 
 // Straight from the kernel, not through malloc: malloc hands a freed block out again as it is,
@@ -81,6 +83,7 @@ void* map_fresh(std::size_t bytes) {
 }  // namespace
 
 void* acquire(std::size_t bytes) {
+  if (!pool_on.load(std::memory_order_acquire)) return map_fresh(bytes);
   Retained& kept = retained();
   std::vector<Range> too_small;
   {
@@ -119,10 +122,10 @@ void* acquire(std::size_t bytes) {
 }
 
 void release(void* range, std::size_t bytes) {
-  Retained& kept = retained();
-  {
+  if (pool_on.load(std::memory_order_acquire)) {
+    Retained& kept = retained();
     const std::lock_guard lock(kept.mutex);
-    if (kept.bytes + bytes <= kRetainedBytes) {
+    if (kept.bytes + bytes <= kept.limit) {
       kept.ranges.push_back({static_cast<char*>(range), bytes});
       kept.bytes += bytes;
       return;
@@ -131,15 +134,54 @@ void release(void* range, std::size_t bytes) {
   munmap(range, bytes);
 }
 
-void release_retained() {
+void enable_pool(std::size_t retained_bytes) {
+  Retained& kept = retained();
+  static const bool installed = [] {
+    pthread_atfork(lock_before_fork, unlock_in_parent, drop_in_child);
+    return true;
+  }();
+  (void)installed;
+  const std::lock_guard lock(kept.mutex);
+  kept.limit = retained_bytes;
+  pool_on.store(true, std::memory_order_release);
+}
+
+// Empties the pool; with `off`, turns it off under the same lock, so no release() keeps a range
+// after.
+void empty_pool(bool off) {
+  if (!pool_on.load(std::memory_order_acquire)) return;
   Retained& kept = retained();
   std::vector<Range> ranges;
   {
     const std::lock_guard lock(kept.mutex);
     ranges.swap(kept.ranges);
     kept.bytes = 0;
+    if (off) {
+      kept.limit = 0;
+      pool_on.store(false, std::memory_order_release);
+    }
   }
   for (const Range& r : ranges) munmap(r.start, r.bytes);
+}
+
+void disable_pool() {
+  empty_pool(true);
+}
+
+void enable_pool_unless_switched_off() {
+  const char* setting = std::getenv("PETERSEN_HUGE_PAGE_POOL");
+  if (setting == nullptr || std::string_view(setting) != "off") enable_pool();
+}
+
+void release_retained() {
+  empty_pool(false);
+}
+
+std::size_t retained_bytes() {
+  if (!pool_on.load(std::memory_order_acquire)) return 0;
+  Retained& kept = retained();
+  const std::lock_guard lock(kept.mutex);
+  return kept.bytes;
 }
 
 #else  // no huge pages to advise, and no ranges to keep: aligned heap blocks
@@ -152,7 +194,13 @@ void* acquire(std::size_t bytes) {
 void release(void* range, std::size_t) {
   std::free(range);
 }
+void enable_pool(std::size_t) {}
+void enable_pool_unless_switched_off() {}
+void disable_pool() {}
 void release_retained() {}
+std::size_t retained_bytes() {
+  return 0;
+}
 
 #endif
 

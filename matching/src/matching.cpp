@@ -10,7 +10,8 @@ std::uint32_t Matching::unmatched_count() const {
 
 namespace {
 
-MatchingCheck check(const CubicGraph& graph, const Matching& matching, bool require_perfect) {
+template <class Graph>
+MatchingCheck check(const Graph& graph, const Matching& matching, bool require_perfect) {
   using Problem = MatchingCheck::Problem;
   auto fail = [](Problem p, NodeId v, EdgeId e, std::string message) {
     return MatchingCheck{p, v, e, std::move(message)};
@@ -60,6 +61,10 @@ MatchingCheck verify_perfect_matching(const CubicGraph& graph, const Matching& m
 }
 
 MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching) {
+  return check(graph, matching, false);
+}
+
+MatchingCheck verify_matching(const CsrGraph& graph, const Matching& matching) {
   return check(graph, matching, false);
 }
 

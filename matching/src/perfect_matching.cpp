@@ -6,7 +6,6 @@
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
-#include "petersen/lemon_adapter/lemon_matching.hpp"
 #include "reduction/match_by_reductions.hpp"
 #include "stopwatch.hpp"
 
@@ -15,19 +14,19 @@ namespace petersen {
 namespace {
 
 constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
-    {Algorithm::sg, "sg"}, {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
-    {Algorithm::gw, "gw"}, {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
+    {Algorithm::sg, "sg"},   {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
+    {Algorithm::gw, "gw"},   {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
     {Algorithm::lrs, "lrs"},
 };
 constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::local, "local"},
                                                                   {Augment::faithful, "faithful"}};
 
-// LEMON's MaxMatching on a copy of the graph: a one-step algorithm, so all of it is "initial".
-void match_with_lemon(const CubicGraph& graph, Result& result) {
+// The caller's peer (LEMON's MaxMatching from petersen::lemon_peer) on the graph's own arrays:
+// a one-step algorithm, so all of it is "initial".
+void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) {
   Stopwatch clock;
-  std::vector<std::array<std::uint32_t, 2>> edges(graph.edge_count());
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) edges[e] = graph.endpoints(e);
-  lemon_adapter::maximum_matching(graph.node_count(), edges, result.matching.mate_edge.data());
+  peer(graph.node_count(), graph.edge_ends().data(), graph.edge_count(),
+       result.matching.mate_edge.data());
   result.stats.initial_seconds = clock.seconds();
 }
 
@@ -55,14 +54,17 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
 
 // Frink's reductions (paper §3.2, Appendix A): a one-step algorithm, all of it "initial".
 void match_by_reductions(const CubicGraph& graph, const Options& options, Result& result) {
-  ReductionResult r =
-      reduction::match_by_reductions(graph, kNoEdge, {.chooser = options.algorithm});
+  const ReductionChooser chooser = options.algorithm == Algorithm::frink ? ReductionChooser::frink
+                                   : options.algorithm == Algorithm::ds  ? ReductionChooser::ds
+                                                                         : ReductionChooser::gw;
+  ReductionResult r = reduction::match_by_reductions(graph, kNoEdge, {.chooser = chooser});
   result.matching = std::move(r.matching);
   result.stats.initial_seconds =
       r.stats.setup_seconds + r.stats.reduce_seconds + r.stats.lift_seconds;
   result.stats.reductions = r.stats.reductions + r.stats.digon_reductions;
   for (int k = 0; k < 3; ++k) result.stats.lift_cases[k] = r.stats.lift_cases[k];
   result.stats.replacement_searches = r.stats.replacement_searches;
+  result.stats.cover_swaps = r.stats.cover_swaps;
 }
 
 }  // namespace
@@ -97,6 +99,11 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
         "perfect_matching: lrs contracts and flips a triangulation, so it needs a mesh "
         "(use quadrangulate)");
   }
+  if (options.algorithm == Algorithm::lemon && options.peer == nullptr) {
+    throw std::invalid_argument(
+        "perfect_matching: lemon is a comparison peer the core does not link; set Options::peer "
+        "(petersen::lemon_peer::maximum_matching, target petersen::lemon_peer)");
+  }
   Result result{Matching(graph.node_count()), {}};
   if (options.validate) {
     Stopwatch clock;
@@ -105,7 +112,7 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
   }
   switch (options.algorithm) {
     case Algorithm::lemon:
-      match_with_lemon(graph, result);
+      match_with_peer(graph, options.peer, result);
       break;
     case Algorithm::sg:
     case Algorithm::ps:

@@ -120,5 +120,58 @@ RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowMeshError, ()) {
   }
 }
 
+// The polygon reader on the same damaged files and on polygon seeds: MeshError or a well-formed
+// mesh (every face of 3 or more corners, every corner a vertex), and the triangle reader accepts
+// exactly the all-triangle ones.
+const std::vector<Seed>& polygon_seeds() {
+  static const std::vector<Seed> all = [] {
+    std::vector<Seed> seeds = petersen::seeds();
+    seeds.push_back({MeshFormat::off,
+                     "OFF\n5 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n4 0 1 2 3\n3 0 2 4\n"
+                     "5 4 3 2 4 1\n"});
+    seeds.push_back({MeshFormat::obj,
+                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 0\nf 1 2/1 3//1 4/1/1\n"
+                     "f 1 3 5\nf -1 4 -3 5 -4\n"});
+    seeds.push_back({MeshFormat::ply,
+                     "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float "
+                     "y\nproperty float z\nelement face 3\nproperty list uchar int "
+                     "vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n4 0 1 2 "
+                     "3\n3 0 2 4\n5 4 3 2 4 1\n"});
+    return seeds;
+  }();
+  return all;
+}
+
+RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowMeshError, ()) {
+  const Seed& seed = *rc::gen::elementOf(polygon_seeds());
+  std::string bytes = seed.bytes;
+  const auto edits = *rc::gen::inRange(1, 6);
+  for (int i = 0; i < edits; ++i) {
+    const int kind = *rc::gen::inRange(0, 4);
+    const auto where = *rc::gen::arbitrary<std::size_t>();
+    const char byte = *rc::gen::oneOf(rc::gen::arbitrary<char>(),
+                                      rc::gen::elementOf(std::string("0123456789-+.e \n/#")));
+    bytes = mutate(std::move(bytes), kind, where, byte);
+  }
+  bool all_triangles = false;
+  try {
+    const PolygonMesh mesh = parse_mesh(bytes, seed.format, "fuzz");
+    RC_ASSERT(mesh.positions.size() + mesh.face_count() <= bytes.size());
+    all_triangles = mesh.all_triangles();
+    for (FaceId f = 0; f < mesh.face_count(); ++f) {
+      RC_ASSERT(mesh.face(f).size() >= 3u);
+      for (VertexId v : mesh.face(f)) RC_ASSERT(v < mesh.positions.size());
+    }
+  } catch (const MeshError& e) {
+    RC_ASSERT(std::string(e.what()).rfind("fuzz", 0) == 0);
+  }
+  try {
+    parse_triangle_mesh(bytes, seed.format, "fuzz");
+    RC_ASSERT(all_triangles);
+  } catch (const MeshError&) {
+    RC_ASSERT(!all_triangles);
+  }
+}
+
 }  // namespace
 }  // namespace petersen

@@ -2,9 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "petersen/dualize/read_mesh.hpp"
 
@@ -19,6 +21,27 @@ std::string error_of(std::string_view bytes, MeshFormat format) {
   }
   return "no error";
 }
+
+std::string polygon_error_of(std::string_view bytes, MeshFormat format) {
+  try {
+    parse_mesh(bytes, format, "in");
+  } catch (const MeshError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// The faces of a polygon mesh as lists of corners, for comparisons.
+std::vector<std::vector<VertexId>> faces_of(const PolygonMesh& mesh) {
+  std::vector<std::vector<VertexId>> faces;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    faces.emplace_back(mesh.face(f).begin(), mesh.face(f).end());
+  }
+  return faces;
+}
+
+// A square, a triangle, a pentagon with a repeated corner: polygons kept exactly.
+const std::vector<std::vector<VertexId>> kPolygons{{0, 1, 2, 3}, {0, 2, 4}, {4, 3, 2, 4, 1}};
 
 #define EXPECT_ERROR(bytes, format, expected)                                 \
   do {                                                                        \
@@ -170,7 +193,7 @@ TEST(ParsePly, BinaryErrorsNameTheElement) {
   EXPECT_ERROR(le + body.substr(0, 30), MeshFormat::ply,
                "in:4: element 'vertex' declares 3 records, more than the remaining 30 bytes");
   EXPECT_ERROR(le + body.substr(0, body.size() - 6), MeshFormat::ply,
-               "in: truncated in face 0 of 1 (byte");
+               "in: truncated in face 0 of 1: its list of 3 values runs past the end (byte");
   EXPECT_ERROR(le + binary_body(false, 3), MeshFormat::ply,
                "in: face 0: vertex index 3 out of range (3 vertices)");
   EXPECT_ERROR(le + binary_body(false, -1), MeshFormat::ply, "in: face 0: vertex index -1");
@@ -209,6 +232,103 @@ TEST(ParsePly, HeaderAndAsciiErrors) {
                MeshFormat::ply, "in:19: face 0: vertex index -2 out of range");
   EXPECT_ERROR(ply_header("ascii", 3, 1, "list uchar float vertex_indices"), MeshFormat::ply,
                "face indices must have an integer type");
+}
+
+TEST(ParsePolygons, EveryFormatKeepsFacesOfAnyArityExactly) {
+  const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n";
+  const std::string off = "OFF\n5 3 0\n" + vertices + "4 0 1 2 3\n3 0 2 4 255 0 0\n5 4 3 2 4 1\n";
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 0\n"
+      "f 1 2/1 3//1 4/1/1\nf 1 3 5\nf -1 4 -3 5 -4\n";
+  const std::string ply_ascii =
+      "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 3\nproperty list uchar int vertex_indices\nend_header\n" +
+      vertices + "4 0 1 2 3\n3 0 2 4\n5 4 3 2 4 1\n";
+  for (const auto& [bytes, format] :
+       {std::pair{off, MeshFormat::off}, {obj, MeshFormat::obj}, {ply_ascii, MeshFormat::ply}}) {
+    const PolygonMesh mesh = parse_mesh(bytes, format, "in");
+    EXPECT_EQ(faces_of(mesh), kPolygons) << bytes;
+    EXPECT_EQ(mesh.positions.size(), 5u);
+    EXPECT_EQ(mesh.positions[4], (std::array<double, 3>{2, 2, 0}));
+    // The triangle reader refuses the square, located at its line.
+    EXPECT_NE(error_of(bytes, format).find("face 0 has 4 corners; only triangles are supported"),
+              std::string::npos);
+  }
+}
+
+TEST(ParsePolygons, BinaryPlyInBothByteOrdersAndBothLayouts) {
+  for (bool big : {false, true}) {
+    // The common layout (x y z floats, a face list alone) and a general one (extra properties).
+    for (bool extra : {false, true}) {
+      std::string out = std::string("ply\nformat ") +
+                        (big ? "binary_big_endian" : "binary_little_endian") +
+                        " 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"
+                        "property float z\n" +
+                        (extra ? "property uchar red\n" : "") +
+                        "element face 3\nproperty list uchar uint vertex_indices\n" +
+                        (extra ? "property float quality\n" : "") + "end_header\n";
+      auto put = [&](const void* p, std::size_t n) {
+        std::string raw(static_cast<const char*>(p), n);
+        if (big != (std::endian::native == std::endian::big)) {
+          raw = std::string(raw.rbegin(), raw.rend());
+        }
+        out += raw;
+      };
+      const float xyz[5][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 2, 0}};
+      for (const auto& p : xyz) {
+        for (float x : p) put(&x, 4);
+        if (extra) out += '\x09';
+      }
+      for (const auto& face : kPolygons) {
+        const std::uint8_t n = static_cast<std::uint8_t>(face.size());
+        put(&n, 1);
+        for (VertexId v : face) put(&v, 4);
+        const float quality = 0.5f;
+        if (extra) put(&quality, 4);
+      }
+      const PolygonMesh mesh = parse_mesh(out, MeshFormat::ply, "in");
+      EXPECT_EQ(faces_of(mesh), kPolygons) << big << extra;
+      EXPECT_EQ(mesh.positions[4], (std::array<double, 3>{2, 2, 0}));
+      EXPECT_NE(error_of(out, MeshFormat::ply).find("in: face 0 has 4 corners; only triangles"),
+                std::string::npos);
+      // Every cut inside the body is a located truncation error.
+      const std::size_t body = out.find("end_header\n") + 11;
+      for (std::size_t cut = body; cut < out.size(); ++cut) {
+        const std::string error = polygon_error_of(out.substr(0, cut), MeshFormat::ply);
+        EXPECT_TRUE(error.find("in: truncated in ") == 0 ||
+                    error.find("records, more than") != std::string::npos)
+            << cut << ": " << error;
+      }
+    }
+  }
+}
+
+TEST(ParsePolygons, FewerThanThreeCornersAndOtherErrors) {
+  const std::string vs = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  EXPECT_EQ(polygon_error_of(vs + "f 1 2 3\nf 1 2\n", MeshFormat::obj),
+            "in:5: face 1 has 2 corners; a face needs at least 3");
+  EXPECT_EQ(polygon_error_of(vs + "f\n", MeshFormat::obj),
+            "in:4: face 0 has 0 corners; a face needs at least 3");
+  EXPECT_EQ(polygon_error_of(vs + "f 1 2 3 4\n", MeshFormat::obj),
+            "in:4: face 0: vertex index 4 out of range (3 vertices read so far)");
+  const std::string off = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  EXPECT_EQ(polygon_error_of(off + "2 0 1\n", MeshFormat::off),
+            "in:7: face 1 has 2 corners; a face needs at least 3");
+  EXPECT_EQ(polygon_error_of(off + "5 0 1 2 0\n", MeshFormat::off),
+            "in:7: face 1: expected 5 vertex indices");
+  EXPECT_EQ(polygon_error_of(off + "-4 0 1 2 0\n", MeshFormat::off),
+            "in:7: face 1: bad corner count '-4'");
+  EXPECT_EQ(polygon_error_of(off + "4 0 1 2 3\n", MeshFormat::off),
+            "in:7: face 1: vertex index 3 out of range (3 vertices)");
+  const std::string ply =
+      "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n1 0 0\n0 1 0\n";
+  EXPECT_EQ(polygon_error_of(ply + "2 0 1\n", MeshFormat::ply),
+            "in:13: face 0 has 2 corners; a face needs at least 3");
+  EXPECT_EQ(polygon_error_of(ply + "4 0 1 2\n", MeshFormat::ply), "in:13: face 0: too few values");
+  EXPECT_EQ(polygon_error_of("", MeshFormat::ply), "in: empty file");
+  EXPECT_EQ(polygon_error_of(vs, MeshFormat::obj), "in: no faces");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "petersen/dualize/dual.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
 namespace petersen {
@@ -37,7 +38,8 @@ TEST(Quads, KeepTheOrientationOfBothTriangles) {
 TEST(Quads, LemonMatchingGivesAValidQuadMesh) {
   const TriangleMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const Result result = perfect_matching(dual, {.algorithm = Algorithm::lemon});
+  const Result result = perfect_matching(
+      dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const QuadMesh quads = quads_from_matching(mesh, dual, result.matching);
   EXPECT_EQ(quads.quads.size(), 4u);
   EXPECT_TRUE(check_quad_mesh(mesh, quads).ok()) << check_quad_mesh(mesh, quads).problem;
@@ -54,7 +56,9 @@ TEST(Quads, CheckFindsEachKindOfDefect) {
   const TriangleMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
   const QuadMesh good = quads_from_matching(
-      mesh, dual, perfect_matching(dual, {.algorithm = Algorithm::lemon}).matching);
+      mesh, dual,
+      perfect_matching(dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching})
+          .matching);
   auto problem = [&](auto edit) {
     QuadMesh q = good;
     edit(q);

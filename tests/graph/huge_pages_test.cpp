@@ -17,8 +17,44 @@ bool all_bytes(const void* range, std::size_t bytes, unsigned char value) {
   return std::all_of(p, p + bytes, [&](unsigned char b) { return b == value; });
 }
 
+// The pool is off unless a program turns it on; these tests turn it on and off again.
+struct PoolOn {
+  PoolOn() { huge_pages::enable_pool(); }
+  ~PoolOn() { huge_pages::disable_pool(); }
+};
+
+TEST(HugePages, WithThePoolOffNothingIsKept) {
+  void* range = huge_pages::acquire(kRange);
+  std::memset(range, 0xAB, kRange);
+  huge_pages::release(range, kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+  void* fresh = huge_pages::acquire(kRange);
+  EXPECT_TRUE(all_bytes(fresh, kRange, 0));  // mapped afresh, zero-filled
+  huge_pages::release(fresh, kRange);
+}
+
+TEST(HugePages, DisablingThePoolReturnsWhatItKept) {
+  huge_pages::enable_pool();
+  huge_pages::release(huge_pages::acquire(kRange), kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), kRange);
+  huge_pages::disable_pool();
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+  huge_pages::release(huge_pages::acquire(kRange), kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+}
+
+TEST(HugePages, ThePoolKeepsNoMoreThanItsLimit) {
+  huge_pages::enable_pool(kRange);
+  void* a = huge_pages::acquire(kRange);
+  void* b = huge_pages::acquire(kRange);
+  huge_pages::release(a, kRange);
+  huge_pages::release(b, kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), kRange);
+  huge_pages::disable_pool();
+}
+
 TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
-  huge_pages::release_retained();
+  const PoolOn pool;
   void* first = huge_pages::acquire(kRange);
   std::memset(first, 0xAB, kRange);
   huge_pages::release(first, kRange);
@@ -30,7 +66,7 @@ TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
 }
 
 TEST(HugePages, SmallerRequestsSplitAKeptRange) {
-  huge_pages::release_retained();
+  const PoolOn pool;
   auto* range = static_cast<char*>(huge_pages::acquire(kRange));
   huge_pages::release(range, kRange);
   void* front = huge_pages::acquire(huge_pages::kPageBytes);
@@ -43,7 +79,7 @@ TEST(HugePages, SmallerRequestsSplitAKeptRange) {
 }
 
 TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
-  huge_pages::release_retained();
+  const PoolOn pool;
   void* range = huge_pages::acquire(kRange);
   std::memset(range, 0xAB, kRange);
   huge_pages::release(range, kRange);
@@ -55,7 +91,7 @@ TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
 }
 
 TEST(HugePages, ForkedChildDoesNotReuseItsParentsRanges) {
-  huge_pages::release_retained();
+  const PoolOn pool;
   void* range = huge_pages::acquire(kRange);
   std::memset(range, 0xAB, kRange);
   huge_pages::release(range, kRange);

@@ -7,6 +7,7 @@
 #include <rapidcheck/gtest.h>
 
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
 namespace petersen::lrs {
@@ -41,10 +42,8 @@ void check_contraction(const TriangleMesh& mesh, std::uint32_t genus) {
 
 RC_GTEST_PROP(ContractionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  check_contraction(random_closed_surface(genus, splits, flips, seed), genus);
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  check_contraction(mesh, genus);
 }
 
 RC_GTEST_PROP(ContractionStep, VoxelPlates, ()) {

@@ -17,6 +17,7 @@
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/contraction_step.hpp"
 #include "petersen/matching/augment.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
 namespace petersen::lrs {
@@ -79,10 +80,8 @@ void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
 
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  check_expansion(random_closed_surface(genus, splits, flips, seed), genus);
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  check_expansion(mesh, genus);
 }
 
 RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {

@@ -11,6 +11,7 @@
 #include "petersen/dualize/quads.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "shared_meshes.hpp"
 #include "small_meshes.hpp"
 
@@ -48,10 +49,7 @@ void check_result(const TriangleMesh& mesh, const LrsResult& result, std::uint32
 
 RC_GTEST_PROP(Lrs, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const auto splits = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto flips = *rc::gen::inRange<std::uint32_t>(0, 300);
-  const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  const TriangleMesh mesh = random_closed_surface(genus, splits, flips, seed);
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
   const auto augment = *rc::gen::element(Augment::local, Augment::faithful);
   check_result(mesh, quadrangulate_lrs(mesh, {.augment = augment}), genus);
 }

@@ -7,22 +7,22 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
 
-using testing::any_cubic_bridgeless;
 using testing::edge_list;
 
 constexpr Algorithm kGreedy[] = {Algorithm::sg, Algorithm::ps};
 constexpr Augment kVariants[] = {Augment::local, Augment::faithful};
 
 RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const auto edges = edge_list(g);
   const std::uint32_t lemon = testing::lemon_matching_size(g.node_count(), edges);
   const std::uint32_t boost = testing::boost_matching_size(g.node_count(), edges);
@@ -40,7 +40,7 @@ RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
 }
 
 RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const Options options{.algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps),
                         .augment = *rc::gen::element(Augment::local, Augment::faithful),
                         .seed = *rc::gen::arbitrary<std::uint64_t>()};
@@ -52,7 +52,7 @@ RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
 
 RC_GTEST_PROP(AugmentMatching, MakesTheEmptyMatchingPerfect, ()) {
   // No greedy start: every node is free, so the searches meet long paths and many blossoms.
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   for (Augment augment : kVariants) {
     Matching m(g.node_count());
     AugmentStats stats = augment_matching(g, m, augment);
@@ -75,26 +75,6 @@ TEST(AugmentMatching, FindsTheBlossomInThePetersenGraph) {
   }
 }
 
-// A general multigraph: some isolated nodes, odd components, parallel edges, any degrees.
-struct GeneralGraph {
-  std::uint32_t node_count;
-  std::vector<std::array<NodeId, 2>> edges;
-};
-
-GeneralGraph any_general_graph() {
-  GeneralGraph g{*rc::gen::inRange<std::uint32_t>(1, 80), {}};
-  const auto m = *rc::gen::inRange<std::uint32_t>(0, 3 * g.node_count);
-  // Edges fall inside random blocks of nodes, so components of every parity appear.
-  const auto block = *rc::gen::inRange<std::uint32_t>(1, g.node_count + 1);
-  for (std::uint32_t i = 0; i < m; ++i) {
-    const auto a = *rc::gen::inRange<std::uint32_t>(0, g.node_count);
-    const auto lo = a / block * block;
-    const auto b = *rc::gen::inRange<std::uint32_t>(lo, std::min(lo + block, g.node_count));
-    if (a != b) g.edges.push_back({a, b});
-  }
-  return g;
-}
-
 // A valid matching of a general graph: each matched node names an incident edge whose other end
 // names it too.
 bool is_valid_matching(const CsrGraph& g, const Matching& m) {
@@ -110,7 +90,7 @@ bool is_valid_matching(const CsrGraph& g, const Matching& m) {
 }
 
 RC_GTEST_PROP(MaximumMatching, ReachesLemonAndBoostOnGeneralGraphs, ()) {
-  const GeneralGraph input = any_general_graph();
+  const testing::EdgeListGraph input = *testing::general_graphs();
   CsrGraph g = CsrGraph::from_edges(input.node_count, input.edges);
   const std::uint32_t lemon = testing::lemon_matching_size(input.node_count, input.edges);
   RC_ASSERT(lemon == testing::boost_matching_size(input.node_count, input.edges));
@@ -118,12 +98,48 @@ RC_GTEST_PROP(MaximumMatching, ReachesLemonAndBoostOnGeneralGraphs, ()) {
     MaximumMatchingResult r = maximum_matching(g, augment);
     RC_ASSERT(is_valid_matching(g, r.matching));
     RC_ASSERT(r.size == lemon);
+    const MatchingCheck certified = verify_maximum_matching(g, r.matching, r.tutte_set);
+    RC_ASSERT(certified.ok());
+    // One matched edge fewer: still a valid matching, no longer maximum, and the same witness
+    // (or any other) cannot prove it.
+    if (r.size > 0) {
+      Matching smaller = r.matching;
+      const NodeId v =
+          static_cast<NodeId>(std::find_if(smaller.mate_edge.begin(), smaller.mate_edge.end(),
+                                           [](EdgeId e) { return e != kNoEdge; }) -
+                              smaller.mate_edge.begin());
+      const EdgeId e = smaller.mate_edge[v];
+      smaller.mate_edge[v] = smaller.mate_edge[g.other_end(e, v)] = kNoEdge;
+      RC_ASSERT(verify_maximum_matching(g, smaller, r.tutte_set).problem ==
+                MatchingCheck::Problem::not_maximum);
+      RC_ASSERT(verify_maximum_matching(g, smaller, {}).problem ==
+                MatchingCheck::Problem::not_maximum);
+    }
     // The augmentation alone, from nothing.
     Matching empty(g.node_count());
     AugmentStats stats = augment_matching(g, empty, augment);
     RC_ASSERT(is_valid_matching(g, empty));
     RC_ASSERT(stats.augmenting_paths == lemon);
   }
+}
+
+// A star K1,3 plus an isolated node: the centre is the Tutte set (four odd components, one node
+// each, minus one), so any maximum matching leaves three of the five nodes free.
+TEST(MaximumMatching, TutteSetOfAStarIsItsCentre) {
+  const std::vector<std::array<NodeId, 2>> edges{{0, 1}, {0, 2}, {0, 3}};
+  CsrGraph g = CsrGraph::from_edges(5, edges);
+  MaximumMatchingResult r = maximum_matching(g);
+  EXPECT_EQ(r.size, 1u);
+  EXPECT_EQ(r.tutte_set, std::vector<NodeId>{0});
+  EXPECT_TRUE(verify_maximum_matching(g, r.matching, r.tutte_set).ok());
+  const std::vector<NodeId> twice{0, 0}, far{7};
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, twice).problem,
+            MatchingCheck::Problem::bad_witness);
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, far).problem,
+            MatchingCheck::Problem::bad_witness);
+  const std::vector<NodeId> leaf{1};
+  EXPECT_EQ(verify_maximum_matching(g, r.matching, leaf).problem,
+            MatchingCheck::Problem::not_maximum);
 }
 
 TEST(CsrGraph, RefusesLoopsAndEndpointsOutOfRange) {

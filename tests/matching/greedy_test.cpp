@@ -5,12 +5,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "cubic_families.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
-
-using testing::any_cubic_bridgeless;
 
 // No edge joins two unpaired nodes: both greedy pairings run until no free edge is left.
 bool is_maximal(const CubicGraph& g, const Matching& m) {
@@ -22,7 +20,7 @@ bool is_maximal(const CubicGraph& g, const Matching& m) {
 }
 
 RC_GTEST_PROP(SimpleGreedy, ReturnsAValidMaximalMatching, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   Matching m(g.node_count());
   simple_greedy(g, m, *rc::gen::arbitrary<std::uint64_t>());
   RC_ASSERT(verify_matching(g, m).ok());
@@ -30,7 +28,7 @@ RC_GTEST_PROP(SimpleGreedy, ReturnsAValidMaximalMatching, ()) {
 }
 
 RC_GTEST_PROP(PuliSegal, ReturnsAValidMaximalMatching, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   Matching m(g.node_count());
   puli_segal(g, m, *rc::gen::arbitrary<std::uint64_t>());
   RC_ASSERT(verify_matching(g, m).ok());
@@ -38,7 +36,7 @@ RC_GTEST_PROP(PuliSegal, ReturnsAValidMaximalMatching, ()) {
 }
 
 RC_GTEST_PROP(Greedy, SameSeedSamePairing, ()) {
-  CubicGraph g = any_cubic_bridgeless();
+  CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   for (auto pairing : {&simple_greedy, &puli_segal}) {
     Matching first(g.node_count()), second(g.node_count());

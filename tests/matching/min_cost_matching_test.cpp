@@ -11,20 +11,27 @@
 #include <algorithm>
 #include <optional>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "shared_meshes.hpp"
 
 namespace petersen {
 namespace {
 
-using testing::any_cubic_bridgeless;
-using testing::edge_list;
+// A cubic bridgeless multigraph drawn by petersen::testing, and its edges as a list.
+CubicGraph any_cubic_bridgeless() {
+  return *rc::gen::arbitrary<CubicGraph>();
+}
+std::vector<std::array<std::uint32_t, 2>> edge_list(const CubicGraph& g) {
+  std::vector<std::array<std::uint32_t, 2>> edges(g.edge_count());
+  for (EdgeId e = 0; e < g.edge_count(); ++e) edges[e] = g.endpoints(e);
+  return edges;
+}
 using Edges = std::vector<std::array<std::uint32_t, 2>>;
 
 // The cheapest matching of the nodes not yet covered, among those of the most edges: returns

@@ -7,18 +7,18 @@
 
 #include <vector>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/matching/avoiding.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
 
-using testing::any_cubic_bridgeless;
 using testing::edge_list;
 
-constexpr Algorithm kChoosers[] = {Algorithm::frink, Algorithm::ds, Algorithm::gw};
+constexpr ReductionChooser kChoosers[] = {ReductionChooser::frink, ReductionChooser::ds,
+                                          ReductionChooser::gw};
 
 // A ring of k random cubic graphs, each with one edge cut open and its ends joined to the
 // neighbouring graphs: every pair of ring edges is a 2-edge cut.
@@ -51,13 +51,13 @@ CubicGraph any_test_graph() {
                            2 * *rc::gen::inRange<std::uint32_t>(2, 8),
                            *rc::gen::arbitrary<std::uint64_t>());
     case 1:
-      return disjoint_union(any_cubic_bridgeless(), any_cubic_bridgeless());
+      return disjoint_union(*rc::gen::arbitrary<CubicGraph>(), *rc::gen::arbitrary<CubicGraph>());
     default:
-      return any_cubic_bridgeless();
+      return *rc::gen::arbitrary<CubicGraph>();
   }
 }
 
-void check_avoiding(const CubicGraph& g, EdgeId forbidden, Algorithm chooser) {
+void check_avoiding(const CubicGraph& g, EdgeId forbidden, ReductionChooser chooser) {
   const bool small = g.node_count() <= 400;
   ReductionResult r =
       perfect_matching_avoiding(g, forbidden, {.chooser = chooser, .check_each_step = small});
@@ -78,7 +78,7 @@ RC_GTEST_PROP(Reductions, PerfectAvoidingTheForbiddenEdgeAndAsLargeAsLemonAndBoo
   const auto edges = edge_list(g);
   RC_ASSERT(testing::lemon_matching_size(g.node_count(), edges) == g.node_count() / 2);
   RC_ASSERT(testing::boost_matching_size(g.node_count(), edges) == g.node_count() / 2);
-  for (Algorithm chooser : kChoosers) check_avoiding(g, forbidden, chooser);
+  for (ReductionChooser chooser : kChoosers) check_avoiding(g, forbidden, chooser);
 }
 
 TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
@@ -86,7 +86,7 @@ TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
   for (const CubicGraph& g : {theta_graph(), complete_k4(), complete_k33(), petersen_graph(),
                               prism(2), prism(7), necklace(1), necklace(5)}) {
     for (EdgeId f = 0; f < g.edge_count(); ++f)
-      for (Algorithm chooser : kChoosers) {
+      for (ReductionChooser chooser : kChoosers) {
         ReductionResult r =
             perfect_matching_avoiding(g, f, {.chooser = chooser, .check_each_step = true});
         ASSERT_TRUE(verify_perfect_matching(g, r.matching).ok());
@@ -99,8 +99,8 @@ TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
 
 TEST(Reductions, FrontDoorMatchesDisconnectedGraphs) {
   const CubicGraph g = disjoint_union(petersen_graph(), necklace(3));
-  for (Algorithm chooser : kChoosers) {
-    Result r = perfect_matching(g, {.algorithm = chooser});
+  for (Algorithm algorithm : {Algorithm::frink, Algorithm::ds, Algorithm::gw}) {
+    Result r = perfect_matching(g, {.algorithm = algorithm});
     EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok());
     EXPECT_EQ(r.stats.reductions, (g.node_count() - 4) / 2);
   }

@@ -3,8 +3,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cubic_families.hpp"
 #include "peers.hpp"
+#include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "shared_meshes.hpp"

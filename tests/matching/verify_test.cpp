@@ -2,8 +2,11 @@
 #include <rapidcheck/gtest.h>
 
 #include "peers.hpp"
+#include "petersen/graph/connectivity.hpp"
 #include "petersen/graph/generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
 namespace {
@@ -51,12 +54,23 @@ TEST(Verifier, NamesAnEdgeOutOfRangeOrNotIncident) {
 }
 
 TEST(Algorithms, NamesRoundTrip) {
-  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink, Algorithm::lrs,
-                      Algorithm::lemon}) {
+  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink,
+                      Algorithm::lrs, Algorithm::lemon}) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }
   EXPECT_FALSE(parse_algorithm("blossom").has_value());
   EXPECT_EQ(parse_augment("faithful"), Augment::faithful);
+}
+
+TEST(PerfectMatching, LemonNeedsTheCallersPeer) {
+  EXPECT_THROW(perfect_matching(petersen_graph(), {.algorithm = Algorithm::lemon}),
+               std::invalid_argument);
+}
+
+RC_GTEST_PROP(PerfectMatching, RefusesEveryPlantedBridge, ()) {
+  const testing::GraphWithBridge input = *testing::cubic_graphs_with_a_bridge();
+  RC_ASSERT(find_bridge(input.graph) == std::optional<EdgeId>(input.bridge));
+  RC_ASSERT_THROWS_AS(perfect_matching(input.graph), GraphError);
 }
 
 TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
@@ -68,22 +82,19 @@ TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
   }
   edges.push_back({4, 9});
   CubicGraph g = CubicGraph::from_edges(10, edges);
-  EXPECT_THROW(perfect_matching(g, {.algorithm = Algorithm::lemon}), GraphError);
-}
-
-std::vector<std::array<std::uint32_t, 2>> edge_list(const CubicGraph& g) {
-  std::vector<std::array<std::uint32_t, 2>> edges;
-  for (EdgeId e = 0; e < g.edge_count(); ++e) edges.push_back(g.endpoints(e));
-  return edges;
+  EXPECT_THROW(
+      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching}),
+      GraphError);
 }
 
 RC_GTEST_PROP(PerfectMatching, LemonIsPerfectAndAgreesWithBoost, ()) {
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 150) * 2;
   CubicGraph g = random_cubic_bridgeless(n, *rc::gen::arbitrary<std::uint64_t>());
-  Result result = perfect_matching(g, {.algorithm = Algorithm::lemon});
+  Result result =
+      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   MatchingCheck check = verify_perfect_matching(g, result.matching);
   RC_ASSERT(check.ok());
-  RC_ASSERT(testing::boost_matching_size(n, edge_list(g)) == n / 2);
+  RC_ASSERT(testing::boost_matching_size(n, testing::edge_list(g)) == n / 2);
 }
 
 }  // namespace

@@ -3,7 +3,7 @@
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
 
-#include "petersen/lemon_adapter/lemon_matching.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 
 namespace petersen::testing {
 
@@ -19,10 +19,13 @@ std::uint32_t boost_matching_size(std::uint32_t node_count,
 
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges) {
+  std::vector<std::uint32_t> ends;
+  for (auto [a, b] : edges) ends.insert(ends.end(), {a, b});
   std::vector<std::uint32_t> mate(node_count);
-  lemon_adapter::maximum_matching(node_count, {edges.begin(), edges.end()}, mate.data());
+  lemon_peer::maximum_matching(node_count, ends.data(), static_cast<std::uint32_t>(edges.size()),
+                               mate.data());
   std::uint32_t matched = 0;
-  for (std::uint32_t e : mate) matched += e != lemon_adapter::kUnmatched;
+  for (std::uint32_t e : mate) matched += e != 0xFFFFFFFFu;
   return matched / 2;
 }
 
@@ -31,8 +34,11 @@ std::optional<std::int64_t> lemon_min_cost_perfect(
     std::span<const std::int64_t> costs) {
   std::vector<std::uint32_t> mate(node_count);
   std::int64_t total = 0;
-  if (!lemon_adapter::min_cost_perfect_matching(node_count, {edges.begin(), edges.end()},
-                                                {costs.begin(), costs.end()}, mate.data(), total)) {
+  std::vector<std::uint32_t> ends;
+  for (const auto& [a, b] : edges) ends.insert(ends.end(), {a, b});
+  if (!lemon_peer::min_cost_perfect_matching(node_count, ends.data(),
+                                             static_cast<std::uint32_t>(edges.size()), costs.data(),
+                                             mate.data(), total)) {
     return std::nullopt;
   }
   return total;

@@ -7,9 +7,18 @@
 #include <span>
 #include <vector>
 
+#include "petersen/graph/cubic_graph.hpp"
+
 namespace petersen::testing {
 
 using EdgeList = std::vector<std::array<std::uint32_t, 2>>;
+
+/// The edges of a cubic graph, in id order.
+inline EdgeList edge_list(const CubicGraph& g) {
+  EdgeList edges(g.edge_count());
+  for (EdgeId e = 0; e < g.edge_count(); ++e) edges[e] = g.endpoints(e);
+  return edges;
+}
 
 /// Size of a maximum matching by Boost's edmonds_maximum_cardinality_matching.
 std::uint32_t boost_matching_size(std::uint32_t node_count,

@@ -21,26 +21,81 @@ grep -q "genus 2" "$work/out" || { failed=$((failed + 1)); echo "FAILED: info do
 for algorithm in "$@"; do
   check "quad --algorithm $algorithm" "$petersen" quad "$example" "$work/q-$algorithm.obj" \
     --algorithm "$algorithm" --stats-json "$work/$algorithm.json"
-  for key in algorithm triangles genus load_seconds dual_seconds initial_seconds \
-    initial_paired_percent unpaired_after_initial augment_seconds matching_seconds total_seconds; do
+  for key in algorithm faces_in triangles polygons_kept genus load_seconds check_seconds \
+    dual_seconds initial_seconds initial_paired_percent unpaired_after_initial augment_seconds \
+    matching_seconds verify_seconds pairs triangles_left added_vertices cut_edges \
+    cut_edges_by_cause maximum_certified write_seconds total_seconds; do
     grep -q "\"$key\":" "$work/$algorithm.json" || {
       failed=$((failed + 1)); echo "FAILED: $algorithm stats lack $key"; }
   done
-  # The quads it wrote read back as a mesh of quads: 'info' refuses them as non-triangles.
-  refuses "written quads are quads ($algorithm)" "has 4 corners" \
-    "$petersen" info "$work/q-$algorithm.obj"
+  grep -q '"triangles_left": 0,' "$work/$algorithm.json" || {
+    failed=$((failed + 1)); echo "FAILED: $algorithm left triangles on a closed mesh"; }
+  # The quads it wrote read back as a mesh of quads only.
+  check "info on the quads ($algorithm)" "$petersen" info "$work/q-$algorithm.obj"
+  grep -q "faces by corners: 4: 1550$" "$work/out" || {
+    failed=$((failed + 1)); echo "FAILED: $algorithm did not write 1550 quads"; cat "$work/out"; }
 done
-for format in off ply; do
+for format in off ply obj.gz; do
   check "quad to .$format" "$petersen" quad "$example" "$work/q.$format"
 done
 
+# Any mesh: a lone triangle is left, and --all-quad splits a boundary edge to make it a quad.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$work/open.off"
-refuses "an open mesh" "open.off.*boundary edge" "$petersen" quad "$work/open.off" "$work/x.obj"
-printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$work/range.off"
+check "an open mesh" "$petersen" quad "$work/open.off" "$work/open-q.off" --stats-json "$work/open.json"
+grep -q '"triangles_left": 1,' "$work/open.json" || { failed=$((failed + 1)); echo "FAILED: open mesh"; }
+check "an open mesh, all quads" "$petersen" quad "$work/open.off" "$work/open-q.off" --all-quad \
+  --stats-json "$work/open.json"
+grep -q '"added_vertices": 1,' "$work/open.json" || { failed=$((failed + 1)); echo "FAILED: all-quad"; }
+grep -q "^4 " "$work/open-q.off" || { failed=$((failed + 1)); echo "FAILED: all-quad wrote no quad"; }
+# A quad beside two triangles: the quad is kept as it is, the triangles paired.
+printf 'OFF\n6 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n4 0 1 2 3\n3 1 4 5\n3 1 5 2\n' \
+  >"$work/mixed.off"
+check "a mesh with a quad" "$petersen" quad "$work/mixed.off" "$work/mixed-q.off"
+grep -q "^4 0 1 2 3$" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: quad not kept"; }
+# A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
+cp "$work/mixed-q.off" "$work/keep.off"
+refuses "all-quad on a degenerate triangle" "repeats a vertex" \
+  "$petersen" quad "$work/degenerate.off" "$work/keep.off" --all-quad
+cmp -s "$work/keep.off" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: OUT damaged"; }
+ls "$work" | grep -q "tmp" && { failed=$((failed + 1)); echo "FAILED: a temporary file was left"; }
+# OUT may be the input: it is read whole before anything is written.
+cp "$work/mixed.off" "$work/same.off"
+check "OUT is IN" "$petersen" quad "$work/same.off" "$work/same.off"
+grep -q "^4 0 1 2 3$" "$work/same.off" || { failed=$((failed + 1)); echo "FAILED: OUT is IN"; }
+
 refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "$work/x.obj"
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
+
+# generate --kind: V and F of the OFF header are those of the generator's grid.
+for spec in "klein 20 40" "open-grid 30 40" "projective 21 40"; do
+  read -r kind vertices faces <<<"$spec"
+  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" --nx 5 \
+    --ny 4 --subdivision 1
+  header=$(sed -n 2p "$work/$kind.off")
+  [ "$header" = "$vertices $faces 0" ] || {
+    failed=$((failed + 1)); echo "FAILED: generate --kind $kind wrote header $header"; }
+done
+check "generate with holes, fins, pinches, flips" "$petersen" generate "$work/mixed.obj" \
+  --kind klein --holes 2 --fins 2 --pinches 1 --flip-faces 3 --seed 5
+refuses "an unknown kind" "torus" "$petersen" generate "$work/x.off" --kind torus
+
+# render: PNG and SVG of a mesh and of a quad result (the pixels are checked by tests/render).
+png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8}'; }
+check "render a mesh" "$petersen" render "$example" "$work/example.png" --width 640 --height 480
+[ "$(png_size "$work/example.png")" = "640x480" ] || {
+  failed=$((failed + 1)); echo "FAILED: render wrote $(png_size "$work/example.png")"; }
+check "render as SVG" "$petersen" render "$example" "$work/example.svg" --view 0,0,-1
+grep -q "<svg" "$work/example.svg" || { failed=$((failed + 1)); echo "FAILED: render SVG"; }
+check "quad --render" "$petersen" quad "$work/open.off" "$work/open-q.off" --all-quad \
+  --render "$work/open.png"
+[ "$(png_size "$work/open.png")" = "800x800" ] || { failed=$((failed + 1)); echo "FAILED: quad --render"; }
+refuses "a picture that is not png or svg" "png or .svg" "$petersen" render "$example" "$work/x.jpg"
+refuses "quad --render to a jpg" "png or .svg" "$petersen" quad "$example" "$work/x.obj" \
+  --render "$work/x.jpg"
+refuses "a view of three zeros" "view" "$petersen" render "$example" "$work/x.png" --view 0,0,0
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -85,6 +85,18 @@ class AlternatingForest {
   }
 
   const std::vector<NodeId>& free_nodes() const { return free_; }
+
+  /// After a complete growth (grow(false), or a single search that failed): the odd nodes of the
+  /// living trees. No augmenting path is left then, so they are the set A of the Gallai–Edmonds
+  /// decomposition, a Tutte–Berge witness of maximality. O(n).
+  std::vector<NodeId> odd_nodes() const {
+    std::vector<NodeId> odd_nodes;
+    for (NodeId v = 0; v < n_; ++v) {
+      const std::uint32_t tag = slot(v).tag;
+      if (alive(tag) && label_of(tag) == odd) odd_nodes.push_back(v);
+    }
+    return odd_nodes;
+  }
   bool is_free(NodeId v) const { return slot(v).mate == kNoNode; }
 
   /// Forgets every label and tree: the paper's O(n) reset before each search.

@@ -2,6 +2,7 @@
 // cubic and general graphs, and the general maximum-matching fallback.
 
 #include <algorithm>
+#include <stdexcept>
 
 #include "alternating_forest.hpp"
 #include "augment_cubic.hpp"
@@ -56,13 +57,29 @@ AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment
 }
 
 MaximumMatchingResult maximum_matching(const CsrGraph& graph, Augment variant) {
-  MaximumMatchingResult result{Matching(graph.node_count()), 0, {}};
-  HugeVector<EdgeId>& mate = result.matching.mate_edge;
+  Matching greedy(graph.node_count());
+  HugeVector<EdgeId>& mate = greedy.mate_edge;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     auto [a, b] = graph.endpoints(e);
     if (mate[a] == kNoEdge && mate[b] == kNoEdge) mate[a] = mate[b] = e;
   }
+  return maximum_matching(graph, std::move(greedy), variant);
+}
+
+MaximumMatchingResult maximum_matching(const CsrGraph& graph, Matching initial, Augment variant) {
+  MaximumMatchingResult result{std::move(initial), 0, {}, {}};
   result.stats = augment_matching(graph, result.matching, variant);
+  // The witness: one more complete growth from the free nodes finds no path (the matching is
+  // maximum) and leaves the Gallai–Edmonds forest, whose odd nodes are the Tutte set. Its cost
+  // follows the region the free nodes reach, like the local searches themselves.
+  AugmentStats witness_stats;
+  augment_detail::AlternatingForest<CsrGraph> forest(graph, result.matching.mate_edge,
+                                                     witness_stats);
+  for (NodeId r : forest.free_nodes()) forest.add_root(r);
+  if (forest.free_nodes().size() >= 2 && forest.grow(/*stop_at_first=*/false) != 0) {
+    throw std::logic_error("maximum_matching: an augmenting path survived the augmentation");
+  }
+  result.tutte_set = forest.odd_nodes();
   result.size = (graph.node_count() - result.matching.unmatched_count()) / 2;
   return result;
 }

@@ -25,7 +25,7 @@
 
 #include "greedy.hpp"
 #include "neighbour_table.hpp"
-#include "seeded_random.hpp"
+#include "petersen/graph/seeded_random.hpp"
 
 namespace petersen {
 

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "greedy.hpp"
-#include "seeded_random.hpp"
+#include "petersen/graph/seeded_random.hpp"
 
 namespace petersen {
 

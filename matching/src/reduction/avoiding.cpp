@@ -1,11 +1,29 @@
 #include "petersen/matching/avoiding.hpp"
 
 #include <string>
+#include <utility>
 
 #include "petersen/graph/connectivity.hpp"
 #include "reduction/match_by_reductions.hpp"
 
 namespace petersen {
+
+namespace {
+constexpr std::pair<ReductionChooser, std::string_view> kChooserNames[] = {
+    {ReductionChooser::frink, "frink"}, {ReductionChooser::ds, "ds"}, {ReductionChooser::gw, "gw"}};
+}  // namespace
+
+std::string_view to_string(ReductionChooser chooser) {
+  for (auto [c, name] : kChooserNames)
+    if (c == chooser) return name;
+  return "?";
+}
+
+std::optional<ReductionChooser> parse_reduction_chooser(std::string_view name) {
+  for (auto [c, n] : kChooserNames)
+    if (n == name) return c;
+  return std::nullopt;
+}
 
 ReductionResult perfect_matching_avoiding(const CubicGraph& graph, EdgeId forbidden,
                                           const ReductionOptions& options) {

@@ -19,8 +19,10 @@ class Chooser {
   virtual bool choose_h1(const ReductionGraph& graph, const Step& step) = 0;
   /// `edges` were just added by ReductionGraph::apply.
   virtual void add(const ReductionGraph& graph, std::span<const EdgeId> edges) = 0;
-  /// Replacement-edge searches of the dynamic-connectivity structure, if any.
+  /// Replacement-edge searches of the dynamic-connectivity structure (ds), if any.
   virtual std::uint64_t replacement_searches() const { return 0; }
+  /// Tree edges swapped for the non-tree edge covering them (gw), if any.
+  virtual std::uint64_t cover_swaps() const { return 0; }
   /// Debug mode, after every step: throws std::logic_error if the chooser's own structures no
   /// longer describe `graph` (brute force; choosers without checkable invariants do nothing).
   virtual void verify(const ReductionGraph& /*graph*/) {}

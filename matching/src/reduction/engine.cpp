@@ -98,6 +98,7 @@ Matching reduce_and_lift(const CubicGraph& graph, std::span<const std::uint32_t>
     mate[p] = mate[g.other_end(m, p)] = m;
   }
   stats.replacement_searches = chooser.replacement_searches();
+  stats.cover_swaps = chooser.cover_swaps();
   stats.reduce_seconds = reduce_clock.seconds();
 
   // Appendix A, cases (i)-(iii); n13 carries the forbidden edge, so case (iv) never arises.

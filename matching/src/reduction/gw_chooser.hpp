@@ -55,7 +55,7 @@ class GwChooser final : public Chooser {
   bool choose_h1(const ReductionGraph& graph, const Step& step) override;
   void add(const ReductionGraph& graph, std::span<const EdgeId> edges) override;
   /// Swaps of a cover into the forest (stage 0 and 1 above).
-  std::uint64_t replacement_searches() const override { return swaps_; }
+  std::uint64_t cover_swaps() const override { return swaps_; }
   /// Brute force: T is a spanning forest of the live graph and every cover is valid.
   void verify(const ReductionGraph& graph) override;
 

@@ -92,7 +92,7 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   std::optional<DepthFirstCopy> copy;
   HugeVector<std::uint32_t> component;
   std::uint32_t components = 0;
-  if (options.chooser == Algorithm::gw) {
+  if (options.chooser == ReductionChooser::gw) {
     copy = depth_first_copy(graph);
     if (forbidden != kNoEdge)
       forbidden =
@@ -108,18 +108,15 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   const CubicGraph& renumbered = copy ? copy->graph : graph;
   std::unique_ptr<Chooser> chooser;
   switch (options.chooser) {
-    case Algorithm::frink:
+    case ReductionChooser::frink:
       chooser = std::make_unique<FrinkChooser>(components);
       break;
-    case Algorithm::ds:
+    case ReductionChooser::ds:
       chooser = std::make_unique<DsChooser>(renumbered, graph.edge_count() + graph.node_count());
       break;
-    case Algorithm::gw:
+    case ReductionChooser::gw:
       chooser = std::make_unique<GwChooser>(renumbered, graph.edge_count() + graph.node_count());
       break;
-    default:
-      throw std::invalid_argument("perfect_matching_avoiding: chooser '" +
-                                  std::string(to_string(options.chooser)) + "' is not available");
   }
   result.stats.setup_seconds = setup.seconds();
   Matching matching = reduce_and_lift(renumbered, component, components, forbidden, *chooser,

@@ -1,5 +1,5 @@
 #pragma once
-// Reading triangle meshes from OFF, OBJ and PLY files, plain or gzip-compressed.
+// Reading polygon and triangle meshes from OFF, OBJ and PLY files, plain or gzip-compressed.
 
 #include <string>
 #include <string_view>
@@ -14,20 +14,32 @@ enum class MeshFormat { off, obj, ply };
 /// trailing .gz. Throws MeshError naming the path for any other extension.
 MeshFormat mesh_format_of(const std::string& path);
 
-/// Reads a triangle mesh, choosing the format by extension; `name.ext.gz` is decompressed on the
-/// fly through zlib. OFF: faces must be triangles. OBJ: faces may be written v, v/vt, v//vn or
-/// v/vt/vn, indices may be negative (relative to the vertices read so far); only `v` and `f` lines
-/// matter. PLY: ascii, binary_little_endian or binary_big_endian; x, y, z of any numeric type;
-/// faces as a list named vertex_indices or vertex_index; other properties and elements are
-/// skipped. Every vertex is kept, referenced or not.
+/// Reads a polygon mesh, choosing the format by extension; a gzip-compressed file (recognised by
+/// its first bytes, whatever its name; several gzip members are read one after the other) is
+/// decompressed first. Faces of any arity from 3 are kept exactly as written: same corners, same
+/// order, repeated corners included. OFF: "n i1 ... in" face lines. OBJ: corners may be written
+/// v, v/vt, v//vn or v/vt/vn, indices may be negative (relative to the vertices read so far);
+/// only `v` and `f` lines matter. PLY: ascii, binary_little_endian or binary_big_endian; x, y, z
+/// of any numeric type; faces as a list named vertex_indices or vertex_index; other properties
+/// and elements are skipped. Every vertex is kept, referenced or not.
 /// Throws MeshError with the file name and the line (text) or element index (binary) on: an
-/// empty file, an unknown format, truncation, wrong counts, NaN or infinite coordinates, negative
-/// or out-of-range indices, faces that are not triangles, counts the file cannot hold (checked
-/// before anything is allocated). O(file size).
+/// empty file, no faces, an unknown format, truncation, wrong counts, NaN or infinite
+/// coordinates, negative or out-of-range indices, faces of fewer than 3 corners, counts the file
+/// cannot hold (checked before anything is allocated), a corrupt or absurdly large gzip stream.
+/// O(file size).
+PolygonMesh read_mesh(const std::string& path);
+
+/// Parses a mesh already in memory (as read_mesh does after decompression); `source` names it in
+/// error messages.
+PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source);
+
+/// Reads a mesh like read_mesh, for code that needs triangles: a face that is not a triangle is
+/// a MeshError located like the others ("FILE:LINE: face F has 4 corners; only triangles are
+/// supported"). Peak memory: the file's bytes and the mesh while parsing, then the triangles'
+/// corners twice while they are converted (the file's bytes are gone by then).
 TriangleMesh read_triangle_mesh(const std::string& path);
 
-/// Parses a mesh already in memory (as read_triangle_mesh does after decompression); `source`
-/// names it in error messages.
+/// Parses a triangle mesh already in memory, like read_triangle_mesh.
 TriangleMesh parse_triangle_mesh(std::string_view bytes, MeshFormat format,
                                  const std::string& source);
 

@@ -14,28 +14,45 @@ namespace petersen {
 namespace huge_pages {
 
 inline constexpr std::size_t kPageBytes = std::size_t{2} << 20;
-
-/// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory, advised onto huge pages, its
-/// contents unspecified. The smallest range that release() kept and that is large enough is
-/// handed out again (split if larger); when none is, the largest kept ranges go back to the
-/// kernel, as many bytes as the request, and the range is mapped fresh, so that kept memory does
-/// not pile up beside the live arrays. Throws std::bad_alloc.
-void* acquire(std::size_t bytes);
-
-/// Gives back a range from acquire(). Up to kRetainedBytes in all are kept for the next
-/// acquire() (the rest goes back to the kernel), because on virtual machines a fresh page is
-/// expensive: here the host backs guest memory lazily and takes freed memory back, so filling
-/// fresh memory ran at 0.25-1.2 GB/s against 15 GB/s for reused huge pages (a touch loop on the
-/// development VM, 256 MB at a time).
-/// A forked child drops the ranges its parent kept (writing them would copy every page).
-/// malloc keeps freed memory in its heap for the same reason, but maps blocks above 32 MiB
-/// afresh every time and hands reused blocks out on whatever pages they had.
-void release(void* range, std::size_t bytes);
-
 inline constexpr std::size_t kRetainedBytes = std::size_t{1} << 30;
 
-/// Returns every kept range to the kernel.
+/// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory, advised onto huge pages, its
+/// contents unspecified. With the pool off (the default) it is mapped fresh from the kernel. With
+/// the pool on, the smallest kept range that is large enough is handed out again (split if
+/// larger); when none is, the largest kept ranges go back to the kernel, as many bytes as the
+/// request, and the range is mapped fresh, so that kept memory does not pile up beside the live
+/// arrays. Throws std::bad_alloc.
+void* acquire(std::size_t bytes);
+
+/// Gives back a range from acquire(): unmapped at once with the pool off; with it on, kept for
+/// the next acquire() while the pool holds less than its limit (the rest goes back to the kernel).
+void release(void* range, std::size_t bytes);
+
+/// Turns the pool on for this process: released ranges, up to `retained_bytes` in all, are kept
+/// for reuse, because on virtual machines a fresh page is expensive: here the host backs guest
+/// memory lazily and takes freed memory back, so filling fresh memory ran at 0.25-1.2 GB/s
+/// against 15 GB/s for reused huge pages (a touch loop on the development VM, 256 MB at a time);
+/// bench/RESULTS.md has what the pool buys end to end. The first call installs a fork handler
+/// (pthread_atfork): a forked child drops the ranges its parent kept, as writing them would copy
+/// every page. Off by default: a program that never calls this gets plain mappings, keeps no
+/// memory and has no handler installed. The CLI and the bench call it first thing in main().
+/// (malloc keeps freed memory in its heap for the same reason, but maps blocks above 32 MiB
+/// afresh every time and hands reused blocks out on whatever pages they had.)
+void enable_pool(std::size_t retained_bytes = kRetainedBytes);
+
+/// enable_pool() unless the environment variable PETERSEN_HUGE_PAGE_POOL is "off": what the CLI
+/// and the bench call, so that the same binaries measure what the pool buys.
+void enable_pool_unless_switched_off();
+
+/// Turns the pool off and returns every kept range to the kernel (the fork handler stays, and
+/// does nothing while the pool is empty).
+void disable_pool();
+
+/// Returns every kept range to the kernel; the pool stays on if it was.
 void release_retained();
+
+/// The bytes the pool keeps now (0 while it is off).
+std::size_t retained_bytes();
 
 }  // namespace huge_pages
 

@@ -3,6 +3,7 @@
 // one with Edmonds' blossoms, shrunk through a disjoint-set structure, searched breadth-first.
 
 #include <cstdint>
+#include <vector>
 
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/matching.hpp"
@@ -35,10 +36,18 @@ struct MaximumMatchingResult {
   Matching matching;
   std::uint32_t size = 0;  ///< matched edges
   AugmentStats stats;
+  /// The proof of maximality: the odd nodes of the final Edmonds forest (the Gallai–Edmonds set
+  /// A). verify_maximum_matching (tutte_berge.hpp) checks it. Sorted by node id.
+  std::vector<NodeId> tutte_set;
 };
 
-/// A maximum matching of a general graph: a greedy pass over the edges in id order, then
-/// augment_matching. The library's maximum-matching fallback. O(n + m) plus the augmentation.
+/// A maximum matching of a general graph with its Tutte–Berge witness: a greedy pass over the
+/// edges in id order, then augment_matching, then one more complete growth from the free nodes
+/// for the witness. The library's maximum-matching fallback. O(n + m) plus the augmentation.
 MaximumMatchingResult maximum_matching(const CsrGraph& graph, Augment variant = Augment::local);
+
+/// The same from a given (valid) initial matching instead of the greedy pass.
+MaximumMatchingResult maximum_matching(const CsrGraph& graph, Matching initial,
+                                       Augment variant = Augment::local);
 
 }  // namespace petersen

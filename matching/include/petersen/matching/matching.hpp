@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "petersen/graph/csr_graph.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 
 namespace petersen {
@@ -25,7 +26,16 @@ struct Matching {
 
 /// What the verifier found; `ok` is true exactly when the matching is perfect and consistent.
 struct MatchingCheck {
-  enum class Problem { none, wrong_size, edge_out_of_range, not_incident, inconsistent, unmatched };
+  enum class Problem {
+    none,
+    wrong_size,
+    edge_out_of_range,
+    not_incident,
+    inconsistent,
+    unmatched,
+    bad_witness,  ///< a Tutte set names a node out of range or twice
+    not_maximum,  ///< the Tutte set does not prove the matching maximum
+  };
   Problem problem = Problem::none;
   NodeId node = kNoNode;
   EdgeId edge = kNoEdge;
@@ -41,5 +51,7 @@ MatchingCheck verify_perfect_matching(const CubicGraph& graph, const Matching& m
 /// Like verify_perfect_matching but unmatched nodes are allowed (a valid, possibly partial,
 /// matching). O(n).
 MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching);
+/// The same check on a general graph. O(n).
+MatchingCheck verify_matching(const CsrGraph& graph, const Matching& matching);
 
 }  // namespace petersen

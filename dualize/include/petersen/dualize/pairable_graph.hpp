@@ -1,0 +1,86 @@
+#pragma once
+// Which triangles of a polygon mesh may be paired into a quad: the pairable graph, and the cuts
+// no pair may cross, with their causes.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string_view>
+
+#include "petersen/dualize/mesh.hpp"
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+/// Why an edge of the mesh is a cut: a pair of triangles never crosses it.
+enum class CutCause : std::uint8_t {
+  boundary,       ///< the edge belongs to one face
+  non_manifold,   ///< three or more faces
+  polygon,        ///< a face beside it is not a triangle (polygons are kept as they are)
+  degenerate,     ///< a face beside it repeats a vertex, or runs along the edge twice
+  duplicate,      ///< its two triangles have the same three vertices (their union is no quad)
+  user,           ///< named by the caller (CutOptions::user_edges)
+  sharp,          ///< its triangles fold by more than CutOptions::sharp_angle_degrees
+  uv_seam,        ///< its two triangles give its ends different texture coordinates
+  normal_seam,    ///< ... different corner normals
+  material,       ///< its two faces have different materials
+  group,          ///< ... different groups
+  object,         ///< ... different objects
+  smoothing,      ///< ... different smoothing groups
+  face_property,  ///< ... different values of another per-face property
+};
+inline constexpr int kCutCauses = 14;
+std::string_view to_string(CutCause cause);
+
+/// Mesh edges that are cuts, by cause (index: CutCause).
+struct CutCounts {
+  std::array<std::uint64_t, kCutCauses> by_cause{};
+  std::uint64_t total() const {
+    std::uint64_t sum = 0;
+    for (std::uint64_t n : by_cause) sum += n;
+    return sum;
+  }
+};
+
+/// Cuts beyond the mesh's own structure; each is off while its span is empty (or the angle unset).
+/// Corner ids are per entry of PolygonMesh::corners, face ids per face: an edge is cut when its
+/// two faces disagree (different ids at one of its ends, or different face ids).
+struct CutOptions {
+  std::optional<double> sharp_angle_degrees = {};  ///< cut where the normals differ by more
+  std::span<const std::array<VertexId, 2>> user_edges = {};  ///< vertex pairs, either order
+  std::span<const std::uint32_t> corner_uv = {}, corner_normal = {};
+  std::span<const std::uint32_t> face_material = {}, face_group = {}, face_object = {},
+                                 face_smoothing = {}, face_property = {};
+};
+
+/// The pairable graph: one node per triangle of the mesh (nodes in face order), one edge per
+/// mesh edge that belongs to exactly two faces, both triangles, whose union has four distinct
+/// vertices. Every other edge is a cut. Orientation does not matter: two triangles that run along
+/// their shared edge the same way are still pairable (counted in inconsistent_edges).
+struct PairableGraph {
+  std::uint32_t node_count = 0;
+  /// The face of each node; empty when every face is a triangle (node t is face t).
+  HugeVector<FaceId> node_face;
+  /// node_edges[3v + k]: the pairable edge across side k of node v's triangle (its corners k and
+  /// k+1), or kNoEdge when that side is a cut.
+  HugeVector<EdgeId> node_edges;
+  /// Edge e joins nodes edge_ends[2e] and edge_ends[2e + 1]; edges are numbered by their mesh
+  /// edge {a, b} in order of (min, max).
+  HugeVector<NodeId> edge_ends;
+  std::uint64_t mesh_edges = 0;  ///< distinct undirected edges of the mesh
+  CutCounts cuts;
+  std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
+  bool cubic = false;                    ///< every side of every triangle is pairable
+
+  std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends.size() / 2); }
+  FaceId face_of(NodeId v) const { return node_face.empty() ? v : node_face[v]; }
+};
+
+/// Builds the pairable graph of any polygon mesh, with the extra cuts of `cuts`. Throws MeshError
+/// naming the face when a corner is out of range or a face has fewer than three corners, when a
+/// span of `cuts` has the wrong size, and for meshes past 32-bit ids. O(C log d) for C corners and
+/// maximum vertex degree d, plus O(u log u) for u user edges; no hashing.
+PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts = {});
+
+}  // namespace petersen

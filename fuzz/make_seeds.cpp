@@ -1,0 +1,163 @@
+// Writes the fuzzers' seed corpora: small meshes made by the project's own generators and
+// writers, in every format the readers take (OFF, OBJ in several corner spellings, PLY ascii,
+// binary little and big endian), triangles and polygons. Usage: petersen_fuzz_seeds DIR; writes
+// DIR/off, DIR/obj and DIR/ply.
+
+#include <bit>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/dualize/write_mesh.hpp"
+
+namespace {
+
+using namespace petersen;
+namespace fs = std::filesystem;
+
+// A pentagonal prism (two pentagons, five quads) and, beside it, a fan of a hexagon, a triangle
+// and a face with a repeated corner: polygons of several arities in one mesh.
+PolygonMesh mixed_polygons() {
+  PolygonMesh mesh;
+  for (int level = 0; level < 2; ++level) {
+    for (int k = 0; k < 5; ++k) {
+      mesh.positions.push_back({std::cos(1.2566 * k), std::sin(1.2566 * k), double(level)});
+    }
+  }
+  const std::vector<VertexId> bottom{4, 3, 2, 1, 0}, top{5, 6, 7, 8, 9};
+  mesh.add_face(bottom);
+  mesh.add_face(top);
+  for (VertexId k = 0; k < 5; ++k) {
+    const std::vector<VertexId> side{k, VertexId((k + 1) % 5), VertexId(5 + (k + 1) % 5),
+                                     VertexId(5 + k)};
+    mesh.add_face(side);
+  }
+  const std::vector<VertexId> triangle{0, 1, 5}, hexagon{0, 1, 2, 3, 4, 5}, repeated{0, 1, 0, 2};
+  mesh.add_face(triangle);
+  mesh.add_face(hexagon);
+  mesh.add_face(repeated);
+  return mesh;
+}
+
+void save(const fs::path& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary) << bytes;
+}
+
+// OBJ with corners spelled v/vt/vn, v//vn and negative (relative) indices.
+std::string obj_spellings(const PolygonMesh& mesh) {
+  std::string out = "# seed\nmtllib m.mtl\nvt 0 0\nvn 0 0 1\n";
+  for (const auto& p : mesh.positions) {
+    out += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) +
+           "\n";
+  }
+  const long count = static_cast<long>(mesh.positions.size());
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    out += f % 2 ? "f" : "g part\nf";
+    int k = 0;
+    for (VertexId v : mesh.face(static_cast<FaceId>(f))) {
+      const long one_based = long(v) + 1, relative = long(v) - count;
+      switch ((f + k++) % 3) {
+        case 0:
+          out += " " + std::to_string(one_based) + "/1/1";
+          break;
+        case 1:
+          out += " " + std::to_string(relative) + "//1";
+          break;
+        default:
+          out += " " + std::to_string(one_based);
+      }
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+// PLY in ascii or binary big endian, with float coordinates, an extra property and an extra
+// element, so the readers' skipping and conversions are in the corpus too.
+std::string ply_other(const PolygonMesh& mesh, bool ascii) {
+  std::string out = std::string("ply\nformat ") + (ascii ? "ascii" : "binary_big_endian") +
+                    " 1.0\ncomment seed\nelement vertex " + std::to_string(mesh.positions.size()) +
+                    "\nproperty float x\nproperty uchar red\nproperty float y\nproperty float z\n"
+                    "element face " +
+                    std::to_string(mesh.face_count()) +
+                    "\nproperty list uchar int vertex_indices\nproperty float quality\n"
+                    "element edge 1\nproperty list ushort uint pair\nend_header\n";
+  auto put = [&](const void* p, std::size_t n) {
+    std::string raw(static_cast<const char*>(p), n);
+    if (std::endian::native == std::endian::little) raw = std::string(raw.rbegin(), raw.rend());
+    out += raw;
+  };
+  const std::uint8_t red = 7;
+  const float quality = 0.5f;
+  for (const auto& p : mesh.positions) {
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    if (ascii) {
+      out += std::to_string(xyz[0]) + " 7 " + std::to_string(xyz[1]) + " " +
+             std::to_string(xyz[2]) + "\n";
+      continue;
+    }
+    put(&xyz[0], 4);
+    put(&red, 1);
+    put(&xyz[1], 4);
+    put(&xyz[2], 4);
+  }
+  for (std::size_t f = 0; f < mesh.face_count(); ++f) {
+    const auto face = mesh.face(static_cast<FaceId>(f));
+    const std::uint8_t n = static_cast<std::uint8_t>(face.size());
+    if (ascii) {
+      out += std::to_string(n);
+      for (VertexId v : face) out += " " + std::to_string(v);
+      out += " 0.5\n";
+      continue;
+    }
+    put(&n, 1);
+    for (VertexId v : face) {
+      const std::int32_t index = static_cast<std::int32_t>(v);
+      put(&index, 4);
+    }
+    put(&quality, 4);
+  }
+  const std::uint16_t two = 2;
+  const std::uint32_t pair[2] = {0, 1};
+  if (ascii) {
+    out += "2 0 1\n";
+  } else {
+    put(&two, 2);
+    put(&pair[0], 4);
+    put(&pair[1], 4);
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: %s DIR\n", argv[0]);
+    return 2;
+  }
+  const fs::path dir = argv[1];
+  for (const char* format : {"off", "obj", "ply"}) fs::create_directories(dir / format);
+  const std::vector<std::pair<std::string, PolygonMesh>> meshes = {
+      {"cube", to_polygon_mesh(random_closed_surface(0, 0, 0, 1))},
+      {"irregular", to_polygon_mesh(random_closed_surface(0, 6, 12, 2))},
+      {"torus", to_polygon_mesh(random_closed_surface(1, 2, 4, 3))},
+      {"polygons", mixed_polygons()},
+  };
+  for (const auto& [name, mesh] : meshes) {
+    for (const char* format : {"off", "obj", "ply"}) {
+      write_mesh((dir / format / (name + "." + format)).string(), mesh);
+    }
+    save(dir / "obj" / (name + "-spellings.obj"), obj_spellings(mesh));
+    save(dir / "ply" / (name + "-ascii.ply"), ply_other(mesh, true));
+    save(dir / "ply" / (name + "-big-endian.ply"), ply_other(mesh, false));
+  }
+  std::size_t files = 0;
+  for (const auto& entry : fs::recursive_directory_iterator(dir)) files += entry.is_regular_file();
+  std::printf("%zu seed files in %s\n", files, dir.c_str());
+}

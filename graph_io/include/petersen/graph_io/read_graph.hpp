@@ -1,0 +1,49 @@
+#pragma once
+// Graph files for `petersen match` and for library users: DIMACS and plain edge lists, plain or
+// gzip-compressed, with errors located at "file:line".
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "petersen/graph/cubic_graph.hpp"
+
+namespace petersen {
+
+enum class GraphFormat {
+  dimacs,  ///< "c" comment lines, one "p edge N M" line ("p col" too), M lines "e U V", 1-based
+  edges,   ///< one "U V" per line, 0-based, '#' comments; a first line "N M" is a header when M
+           ///< equals the number of edge lines after it (without one, N is the largest id + 1)
+};
+
+std::string_view to_string(GraphFormat format);
+std::optional<GraphFormat> parse_graph_format(std::string_view name);
+
+/// The format by extension: .dimacs or .col is DIMACS, .txt or .edges an edge list, each
+/// optionally followed by .gz. Throws GraphError naming the path for any other name.
+GraphFormat graph_format_of(const std::string& path);
+
+/// A graph as its file gave it.
+struct GraphFile {
+  std::uint32_t node_count = 0;
+  /// 0-based endpoints, in the file's order; loops and parallel edges kept.
+  std::vector<std::array<NodeId, 2>> edges;
+  /// Added to a node id to give the file's own id: 1 for DIMACS, 0 for edge lists.
+  std::uint32_t first_id = 0;
+};
+
+/// Parses a graph file's bytes; `source` names it in errors. Throws GraphError
+/// "source:line: what" for a line that does not parse, an id out of range, a missing or repeated
+/// DIMACS header, an edge count that differs from the header's, or more nodes than the file's
+/// edges could touch plus 2^24 isolated ones (so that a forged count allocates nothing absurd).
+/// O(bytes).
+GraphFile parse_graph(std::string_view bytes, GraphFormat format, const std::string& source);
+
+/// Reads and parses a graph file (zlib when it is compressed), in the given format or the one
+/// its extension names. Throws GraphError naming the path when it cannot be read.
+GraphFile read_graph(const std::string& path, std::optional<GraphFormat> format = std::nullopt);
+
+}  // namespace petersen

@@ -1,0 +1,76 @@
+#pragma once
+// What perfect_matching is asked to do and what it reports: the algorithms, the options and the
+// statistics. C++17, like everything it includes, so that the LEMON adaptor (whose Debian headers
+// do not compile as C++20) can take an Options.
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+namespace petersen {
+
+enum class Algorithm {
+  sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
+  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths
+  ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
+  gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
+  frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
+  lemon,  ///< the comparison peer (LEMON's MaxMatching): runs Options::peer, see there
+  lrs,    ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run by
+          ///< quadrangulate (petersen/quadrangulate), not by perfect_matching
+};
+
+/// How augmenting paths are searched (paper §3.1, Tarjan's procedure).
+enum class Augment {
+  local,     ///< each search resets only what it labelled: cost follows the region explored
+  faithful,  ///< the paper's: a full O(n) reset before every search
+};
+
+std::string_view to_string(Algorithm algorithm);
+std::optional<Algorithm> parse_algorithm(std::string_view name);
+std::string_view to_string(Augment augment);
+std::optional<Augment> parse_augment(std::string_view name);
+
+/// A maximum-matching routine of another library, run for Algorithm::lemon on the graph's flat
+/// arrays: edge e joins edge_ends[2e] and edge_ends[2e + 1] (CubicGraph::edge_ends()); it writes
+/// each node's matched edge, or 0xFFFFFFFF when the node is left free, to mate_edge[v]. Plain
+/// arrays, so that a peer compiled as C++17 (LEMON) can be handed in without a copy.
+using PeerMatcher = void (*)(std::uint32_t node_count, const std::uint32_t* edge_ends,
+                             std::uint32_t edge_count, std::uint32_t* mate_edge);
+
+struct Options {
+  Algorithm algorithm = Algorithm::ps;
+  Augment augment = Augment::local;
+  std::uint64_t seed = 1;
+  /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
+  bool validate = true;
+  /// The matcher Algorithm::lemon runs. The core links no peer library: a caller that compares
+  /// against LEMON links the optional target petersen::lemon_peer and sets this to
+  /// petersen::lemon_peer::maximum_matching (petersen/lemon_peer/lemon_peer.hpp), as the CLI and
+  /// the bench do. Left empty, Algorithm::lemon throws std::invalid_argument. Its answer goes
+  /// through the same verifier as every other algorithm's.
+  PeerMatcher peer = nullptr;
+};
+
+/// Statistics of one run, in the columns of the paper's Table 4.3 plus per-algorithm counts.
+struct Stats {
+  double validate_seconds = 0;
+  double initial_seconds = 0;  ///< (a) initial pairing, or the whole one-step algorithm
+  std::uint32_t unpaired_after_initial = 0;  ///< (c)
+  double augment_seconds = 0;                ///< (d) time to make the initial pairing perfect
+  std::uint64_t augmenting_paths = 0;
+  std::uint64_t blossoms = 0;
+  std::uint64_t nodes_labelled = 0;
+  std::uint64_t reductions = 0;             ///< Frink reductions (ds, gw, frink)
+  std::uint64_t lift_cases[3] = {0, 0, 0};  ///< Appendix A cases (i), (ii), (iii)
+  std::uint64_t replacement_searches = 0;   ///< ds: dynamic-connectivity replacement searches
+  std::uint64_t cover_swaps = 0;            ///< gw: tree edges swapped for a covering non-tree edge
+
+  double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)
+  double paired_percent(std::uint32_t node_count) const {                        ///< (b)
+    return node_count == 0 ? 100.0
+                           : 100.0 * (node_count - unpaired_after_initial) / double(node_count);
+  }
+};
+
+}  // namespace petersen

@@ -1,0 +1,118 @@
+#include "petersen/matching/any_graph.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+#include "petersen/graph/connectivity.hpp"
+#include "petersen/graph/csr_graph.hpp"
+#include "petersen/matching/augment.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+#include "stopwatch.hpp"
+
+namespace petersen {
+
+namespace {
+
+std::string edge_name(EdgeId e, const std::array<NodeId, 2>& ends) {
+  return "edge " + std::to_string(e) + " (" + std::to_string(ends[0]) + ", " +
+         std::to_string(ends[1]) + ")";
+}
+
+// Why the graph is not cubic (the first node of another degree, or the first loop), or nothing.
+std::optional<std::string> not_cubic(std::uint32_t node_count,
+                                     const std::vector<std::array<NodeId, 2>>& edges) {
+  std::vector<std::uint32_t> degree(node_count, 0);
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    auto [a, b] = edges[e];
+    if (a == b) return edge_name(e, edges[e]) + " is a loop";
+    ++degree[a];
+    ++degree[b];
+  }
+  for (NodeId v = 0; v < node_count; ++v) {
+    if (degree[v] != 3)
+      return "node " + std::to_string(v) + " has degree " + std::to_string(degree[v]);
+  }
+  return std::nullopt;
+}
+
+// Options::algorithm on a cubic graph, verified; false (and the bridge in `note`) if it has one.
+bool match_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 2>>& edges,
+                 const Options& options, AnyGraphMatching& result) {
+  const CubicGraph graph = CubicGraph::from_edges(node_count, edges);
+  Stopwatch validate;
+  if (const std::optional<EdgeId> bridge = find_bridge(graph)) {
+    result.note = edge_name(*bridge, edges[*bridge]) + " is a bridge";
+    return false;
+  }
+  const double validate_seconds = validate.seconds();
+  Options without_check = options;
+  without_check.validate = false;
+  Result matched = perfect_matching(graph, without_check);
+  if (MatchingCheck check = verify_perfect_matching(graph, matched.matching); !check.ok()) {
+    throw std::logic_error("internal error: " + std::string(to_string(options.algorithm)) +
+                           " returned a matching that is not perfect: " + check.message);
+  }
+  result.mate_edge.assign(matched.matching.mate_edge.begin(), matched.matching.mate_edge.end());
+  result.stats = matched.stats;
+  result.stats.validate_seconds = validate_seconds;
+  result.size = node_count / 2;
+  result.perfect = result.cubic_bridgeless = true;
+  return true;
+}
+
+// A maximum matching of the loop-free part, with its witness, verified.
+void match_general(std::uint32_t node_count, const std::vector<std::array<NodeId, 2>>& edges,
+                   const Options& options, AnyGraphMatching& result) {
+  std::vector<std::array<NodeId, 2>> loop_free;
+  std::vector<EdgeId> id_of;  // the input's id of each loop-free edge
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    if (edges[e][0] == edges[e][1]) continue;
+    loop_free.push_back(edges[e]);
+    id_of.push_back(e);
+  }
+  const CsrGraph graph = CsrGraph::from_edges(node_count, loop_free);
+  Stopwatch clock;
+  MaximumMatchingResult matched = maximum_matching(graph, options.augment);
+  result.stats.augment_seconds = clock.seconds();
+  result.stats.augmenting_paths = matched.stats.augmenting_paths;
+  result.stats.blossoms = matched.stats.blossoms;
+  result.stats.nodes_labelled = matched.stats.nodes_labelled;
+  if (MatchingCheck check = verify_maximum_matching(graph, matched.matching, matched.tutte_set);
+      !check.ok()) {
+    throw std::logic_error("internal error: the maximum matching fails its check: " +
+                           check.message);
+  }
+  result.mate_edge.assign(node_count, kNoEdge);
+  for (NodeId v = 0; v < node_count; ++v) {
+    if (matched.matching.mate_edge[v] != kNoEdge)
+      result.mate_edge[v] = id_of[matched.matching.mate_edge[v]];
+  }
+  result.tutte_set.assign(matched.tutte_set.begin(), matched.tutte_set.end());
+  result.size = matched.size;
+  result.perfect = 2 * std::uint64_t{matched.size} == node_count;
+}
+
+}  // namespace
+
+AnyGraphMatching match_any_graph(std::uint32_t node_count,
+                                 const std::vector<std::array<std::uint32_t, 2>>& edges,
+                                 const Options& options) {
+  if (edges.size() >= kNoEdge) throw GraphError("more than 2^32 - 1 edges");
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    if (edges[e][0] >= node_count || edges[e][1] >= node_count) {
+      throw GraphError(edge_name(e, edges[e]) + " has an endpoint out of range (" +
+                       std::to_string(node_count) + " nodes)");
+    }
+  }
+  AnyGraphMatching result;
+  if (std::optional<std::string> why = not_cubic(node_count, edges)) {
+    result.note = std::move(*why);
+  } else if (match_cubic(node_count, edges, options, result)) {
+    return result;
+  }
+  match_general(node_count, edges, options, result);
+  return result;
+}
+
+}  // namespace petersen

@@ -1,0 +1,190 @@
+"""petersen: triangle meshes into quad meshes, and perfect matchings of cubic bridgeless graphs.
+
+A thin layer over the C++ library (``petersen._petersen``): arrays in, owned numpy arrays out, the
+GIL released while the library works, and the library's errors (which name the file and line, or
+the face, edge or node) raised as ``ValueError``.
+
+    >>> import numpy as np, petersen
+    >>> mesh = petersen.read_mesh("bunny.off.gz")
+    >>> result = petersen.quadrangulate(mesh.V, mesh.F, algorithm="ps")
+    >>> result.quads.shape, result.stats["triangles_left"]
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, List, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+from . import _petersen
+
+__all__ = [
+    "ALGORITHMS",
+    "Mesh",
+    "QuadResult",
+    "perfect_matching",
+    "quad_quality",
+    "quadrangulate",
+    "read_mesh",
+    "render",
+    "write_mesh",
+]
+
+#: The algorithms of ``quadrangulate`` (all) and ``perfect_matching`` (all but lrs, which needs a
+#: mesh): see the README's table.
+ALGORITHMS = ("sg", "ps", "ds", "gw", "frink", "lemon", "lrs")
+
+#: Faces: an (m, k) integer array (every face k corners) or a sequence of faces of any length >= 3.
+Faces = Union[npt.ArrayLike, Sequence[Sequence[int]]]
+
+
+@dataclass(frozen=True)
+class Mesh:
+    """A mesh as read from a file.
+
+    ``V``: (n, 3) float64 positions, every vertex of the file (referenced or not).
+    ``F``: an (m, 3) int64 array when every face is a triangle, else a list of int64 arrays, one
+    per face, corners in the file's order.
+    """
+
+    V: np.ndarray
+    F: Union[np.ndarray, List[np.ndarray]]
+
+
+@dataclass(frozen=True)
+class QuadResult:
+    """What ``quadrangulate`` made.
+
+    ``V``: (n', 3) float64, the input's positions followed by the vertices ``all_quad`` added.
+    ``quads``: (k, 4) int64, the quads: one per pair of triangles (following its first triangle's
+    orientation) and those ``all_quad`` made by splitting.
+    ``triangles``: (t, 3) int64, the triangles left unpaired (none with ``all_quad``).
+    ``polygons``: list of int64 arrays, the input faces that are not triangles, kept as they were.
+    ``sources``: (k + t + p, 2) int64, for each output face *in the order quads, triangles,
+    polygons* the input faces it came from: both triangles of a pair's quad, ``[f, -1]`` for a
+    face kept or left; -1 where ``lrs``'s flips made a triangle no input face has; a face split by
+    ``all_quad`` names the faces of the quad or triangle it was split from.
+    ``tutte_set``: int64 input face ids proving that no pairing leaves fewer triangles (empty when
+    every triangle is paired).
+    ``stats``: the figures of ``petersen quad --stats-json``, same keys and values, without the
+    file fields (``input``, ``output``, ``load_seconds``, ``write_seconds``); ``total_seconds`` is
+    the library call's.
+    """
+
+    V: np.ndarray
+    quads: np.ndarray
+    triangles: np.ndarray
+    polygons: List[np.ndarray]
+    sources: np.ndarray
+    tutte_set: np.ndarray
+    stats: dict
+
+    @property
+    def faces(self) -> List[np.ndarray]:
+        """Every output face in the order of ``sources``: quads, triangles, polygons."""
+        return [*self.quads, *self.triangles, *self.polygons]
+
+
+def quadrangulate(
+    V: npt.ArrayLike,
+    F: Faces,
+    algorithm: str = "ps",
+    all_quad: bool = False,
+    seed: int = 1,
+    augment: str = "local",
+    sharp_angle: Optional[float] = None,
+    keep_edges: Optional[npt.ArrayLike] = None,
+) -> QuadResult:
+    """Pairs the triangles of any polygon mesh into quads on the same vertices.
+
+    ``V`` is an (n, 3) array of any numeric dtype and memory order (copied only when it is not
+    C-ordered float64); ``F`` an (m, k) integer array or a list of faces (sequences of vertex
+    indices, any length >= 3, mixed lengths allowed). The pairing is a certified maximum: closed
+    components are paired perfectly by ``algorithm`` (sg, ps, ds, gw, frink, lemon or lrs), the
+    rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that are not
+    triangles are kept. ``all_quad`` turns the triangles left into quads by splitting edges
+    (adding vertices). ``augment`` is "local" or "faithful", ``seed`` seeds sg and ps.
+    ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
+    (e, 2) array of vertex pairs, names edges no quad may remove. Same options, same seed: same
+    answer as ``petersen quad``. The GIL is released while the library works.
+
+    Raises ``ValueError`` with the library's message for a bad mesh (a vertex index out of range,
+    a face of fewer than three corners, a leftover triangle ``all_quad`` cannot reach), an
+    unknown algorithm or augment; ``TypeError`` for faces that are not integers.
+    """
+    r = _petersen.quadrangulate(
+        V, F, algorithm, augment, int(seed), bool(all_quad),
+        None if sharp_angle is None else float(sharp_angle), keep_edges)
+    return QuadResult(**r)
+
+
+def read_mesh(path: str) -> Mesh:
+    """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity.
+
+    Raises ``ValueError`` naming the file and line (text) or element (binary) for a bad file.
+    """
+    V, F = _petersen.read_mesh(str(path))
+    return Mesh(V, F)
+
+
+def write_mesh(path: str, V: npt.ArrayLike, F: Faces) -> None:
+    """Writes a mesh as OFF, OBJ or PLY by the extension of ``path`` (``.gz`` compresses).
+
+    Atomic: written to a temporary file beside ``path`` and renamed into place. Reading it back
+    gives the same positions and faces. Raises ``ValueError`` for an unknown extension, an index
+    out of range or a path that cannot be written.
+    """
+    _petersen.write_mesh(str(path), V, F)
+
+
+def perfect_matching(
+    n: int,
+    edges: npt.ArrayLike,
+    algorithm: str = "ps",
+    seed: int = 1,
+    augment: str = "local",
+) -> np.ndarray:
+    """A perfect matching of a cubic bridgeless (multi)graph: the sorted indices of its edges.
+
+    ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges allowed, no loops).
+    The answer is checked by the library's verifier before it is returned. A graph that is not
+    cubic (a node of degree other than 3, a loop) or has a bridge raises ``ValueError`` with the
+    library's message naming the node or edge; no partial or maximum matching is returned then.
+    ``lrs`` needs a mesh and raises ``ValueError``. The GIL is released while the library works.
+    """
+    return _petersen.perfect_matching(int(n), edges, algorithm, augment, int(seed))
+
+
+def quad_quality(V: npt.ArrayLike, quads: npt.ArrayLike) -> np.ndarray:
+    """The worst-corner deviation of each quad from a right angle, in degrees (float64 array).
+
+    For quad a, b, c, d: n = unit((c - a) x (d - b)); the two quad edges at each corner are
+    projected onto the plane orthogonal to n and the interior angle theta taken in [0, 360);
+    cost = max over the corners of |90 - theta|. A rectangle costs 0, a non-convex quad more than
+    90, a degenerate one 270.
+    """
+    return _petersen.quad_quality(V, quads)
+
+
+def render(
+    path: str,
+    V: npt.ArrayLike,
+    F: Faces,
+    *,
+    first_added_vertex: Optional[int] = None,
+    caption: Sequence[str] = (),
+    view: Optional[Tuple[float, float, float]] = None,
+    width: int = 800,
+    height: int = 800,
+) -> None:
+    """Draws a mesh into a PNG or SVG picture (by the extension of ``path``), as ``petersen render``.
+
+    A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
+    coloured by ``quad_quality`` with a colour bar, triangles highlighted when the mesh has quads,
+    vertices from ``first_added_vertex`` on drawn as dots, the ``caption`` lines underneath.
+    """
+    _petersen.render(
+        str(path), V, F, first_added_vertex, list(caption),
+        None if view is None else tuple(float(x) for x in view), int(width), int(height))

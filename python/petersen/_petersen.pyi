@@ -1,0 +1,32 @@
+# Type stubs of the extension module; the documented API is petersen/__init__.py.
+from typing import Any, Dict, List, Optional, Sequence, Tuple
+
+import numpy as np
+import numpy.typing as npt
+
+def quadrangulate(
+    V: npt.ArrayLike,
+    F: Any,
+    algorithm: str,
+    augment: str,
+    seed: int,
+    all_quad: bool,
+    sharp_angle: Optional[float],
+    keep_edges: Optional[npt.ArrayLike],
+) -> Dict[str, Any]: ...
+def read_mesh(path: str) -> Tuple[np.ndarray, Any]: ...
+def write_mesh(path: str, V: npt.ArrayLike, F: Any) -> None: ...
+def perfect_matching(
+    n: int, edges: npt.ArrayLike, algorithm: str, augment: str, seed: int
+) -> np.ndarray: ...
+def quad_quality(V: npt.ArrayLike, quads: npt.ArrayLike) -> np.ndarray: ...
+def render(
+    path: str,
+    V: npt.ArrayLike,
+    F: Any,
+    first_added_vertex: Optional[int],
+    caption: List[str],
+    view: Optional[Tuple[float, float, float]],
+    width: int,
+    height: int,
+) -> None: ...

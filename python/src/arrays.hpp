@@ -1,0 +1,47 @@
+#pragma once
+// numpy arrays and Python sequences to the library's flat arrays and back: inputs of any integer
+// or float dtype and memory order (copied only when the dtype or order differs), outputs owned
+// numpy arrays.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+
+namespace petersen::python {
+
+namespace py = pybind11;
+
+/// V, an (n, 3) array-like of numbers, as positions. Throws ValueError for another shape.
+Positions positions_from(const py::handle& V);
+
+/// F, an (m, k) integer array (every face k corners, k >= 3) or a sequence of faces (each a
+/// sequence of integers), as faces over `vertex_count` vertices. Throws ValueError for a negative
+/// or too large index, TypeError for a non-integer dtype. Ranges against vertex_count are the
+/// library's check.
+void add_faces_from(const py::handle& F, PolygonMesh& mesh);
+
+/// An (e, 2) integer array-like as pairs; `what` names it in the ValueError or TypeError.
+std::vector<std::array<std::int64_t, 2>> pairs_from(const py::handle& obj, const char* what);
+
+/// The mesh's positions as an owned (n, 3) float64 array.
+py::array_t<double> positions_array(const Positions& positions);
+
+/// The mesh's faces: an owned (m, 3) int64 array when every face is a triangle, else a list of
+/// int64 arrays, one per face.
+py::object faces_object(const PolygonMesh& mesh);
+
+/// An owned (count, k) int64 array filled by fill(row, out) for each row.
+template <class Fill>
+py::array_t<std::int64_t> rows_array(std::size_t count, std::size_t k, Fill fill) {
+  py::array_t<std::int64_t> out({count, k});
+  std::int64_t* data = out.mutable_data();
+  for (std::size_t i = 0; i < count; ++i) fill(i, data + i * k);
+  return out;
+}
+
+}  // namespace petersen::python

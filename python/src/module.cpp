@@ -1,0 +1,219 @@
+// The extension module petersen._petersen: a thin skin over the C++ front doors. The public
+// Python API (names, defaults, result classes, docstrings) is in petersen/__init__.py.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "arrays.hpp"
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/dualize/write_mesh.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/quadrangulate/stats_fields.hpp"
+#include "render.hpp"
+
+namespace petersen::python {
+namespace {
+
+Algorithm algorithm_of(const std::string& name) {
+  if (auto a = parse_algorithm(name)) return *a;
+  throw py::value_error("unknown algorithm '" + name + "': sg, ps, ds, gw, frink, lemon or lrs");
+}
+
+Augment augment_of(const std::string& name) {
+  if (auto a = parse_augment(name)) return *a;
+  throw py::value_error("unknown augment '" + name + "': local or faithful");
+}
+
+PolygonMesh mesh_from(const py::handle& V, const py::handle& F) {
+  PolygonMesh mesh;
+  mesh.positions = positions_from(V);
+  add_faces_from(F, mesh);
+  return mesh;
+}
+
+py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
+  py::dict out;
+  for (const StatField& field : stats_fields(stats, options)) {
+    std::visit(
+        [&](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, std::vector<std::pair<std::string, std::uint64_t>>>) {
+            py::dict by_key;
+            for (const auto& [key, count] : v) by_key[py::str(key)] = count;
+            out[py::str(field.key)] = by_key;
+          } else {
+            out[py::str(field.key)] = v;
+          }
+        },
+        field.value);
+  }
+  return out;
+}
+
+py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::string& algorithm,
+                          const std::string& augment, std::uint64_t seed, bool all_quad,
+                          std::optional<double> sharp_angle, const py::handle& keep_edges) {
+  std::vector<std::array<VertexId, 2>> kept_edges;
+  if (!keep_edges.is_none()) {
+    for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
+      for (std::int64_t v : {a, b}) {
+        if (v < 0 || v > std::int64_t{0xFFFFFFFEu}) {
+          throw py::value_error("keep_edges: vertex index " + std::to_string(v) +
+                                " is out of range");
+        }
+      }
+      kept_edges.push_back({VertexId(a), VertexId(b)});
+    }
+  }
+  QuadOptions options;
+  options.algorithm = algorithm_of(algorithm);
+  options.augment = augment_of(augment);
+  options.seed = seed;
+  options.all_quad = all_quad;
+  options.cuts.sharp_angle_degrees = sharp_angle;
+  options.cuts.user_edges = kept_edges;
+  const PolygonMesh mesh = mesh_from(V, F);
+  QuadResult result;
+  {
+    py::gil_scoped_release release;
+    result = quadrangulate(mesh, options);
+  }
+  // Output faces in three groups, each in output order: quads, left triangles, kept polygons (a
+  // face whose only source is an input face that is not a triangle).
+  const PolygonMesh& out = result.mesh;
+  std::vector<FaceId> quads, triangles, kept;
+  for (FaceId f = 0; f < out.face_count(); ++f) {
+    const auto [s0, s1] = result.sources[f];
+    if (s0 != kNoFace && s1 == kNoFace && mesh.arity(s0) != 3) {
+      kept.push_back(f);
+    } else {
+      (out.arity(f) == 4 ? quads : triangles).push_back(f);
+    }
+  }
+  auto corners = [&](const std::vector<FaceId>& faces, std::size_t k) {
+    return rows_array(faces.size(), k, [&](std::size_t i, std::int64_t* row) {
+      const auto face = out.face(faces[i]);
+      for (std::size_t c = 0; c < k; ++c) row[c] = face[c];
+    });
+  };
+  for (FaceId f : triangles) {
+    if (out.arity(f) != 3) throw std::logic_error("an output face that is neither quad nor kept");
+  }
+  py::list polygons;
+  for (FaceId f : kept) {
+    const auto face = out.face(f);
+    py::array_t<std::int64_t> row(face.size());
+    std::copy(face.begin(), face.end(), row.mutable_data());
+    polygons.append(std::move(row));
+  }
+  std::vector<FaceId> order = quads;
+  order.insert(order.end(), triangles.begin(), triangles.end());
+  order.insert(order.end(), kept.begin(), kept.end());
+  auto source = [](FaceId s) { return s == kNoFace ? std::int64_t{-1} : std::int64_t{s}; };
+  py::dict d;
+  d["V"] = positions_array(out.positions);
+  d["quads"] = corners(quads, 4);
+  d["triangles"] = corners(triangles, 3);
+  d["polygons"] = polygons;
+  d["sources"] = rows_array(order.size(), 2, [&](std::size_t i, std::int64_t* row) {
+    row[0] = source(result.sources[order[i]][0]);
+    row[1] = source(result.sources[order[i]][1]);
+  });
+  py::array_t<std::int64_t> tutte(result.tutte_set.size());
+  std::copy(result.tutte_set.begin(), result.tutte_set.end(), tutte.mutable_data());
+  d["tutte_set"] = tutte;
+  d["stats"] = stats_dict(result.stats, options);
+  return d;
+}
+
+py::tuple read_mesh_py(const std::string& path) {
+  PolygonMesh mesh;
+  {
+    py::gil_scoped_release release;
+    mesh = read_mesh(path);
+  }
+  return py::make_tuple(positions_array(mesh.positions), faces_object(mesh));
+}
+
+void write_mesh_py(const std::string& path, const py::handle& V, const py::handle& F) {
+  const PolygonMesh mesh = mesh_from(V, F);
+  for (VertexId v : mesh.corners) {
+    if (v >= mesh.positions.size()) {
+      throw py::value_error("vertex index " + std::to_string(v) + " is out of range (" +
+                            std::to_string(mesh.positions.size()) + " vertices)");
+    }
+  }
+  py::gil_scoped_release release;
+  write_mesh(path, mesh);
+}
+
+py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
+                                              const std::string& algorithm,
+                                              const std::string& augment, std::uint64_t seed) {
+  const Options options{
+      .algorithm = algorithm_of(algorithm), .augment = augment_of(augment), .seed = seed};
+  const std::vector<std::array<std::int64_t, 2>> pairs = pairs_from(edges, "edges");
+  std::vector<std::array<NodeId, 2>> list(pairs.size());
+  for (std::size_t e = 0; e < list.size(); ++e) {
+    for (int k = 0; k < 2; ++k) {
+      const std::int64_t v = pairs[e][k];
+      if (v < 0 || v >= std::int64_t{n}) {
+        throw py::value_error("edge " + std::to_string(e) + ": node " + std::to_string(v) +
+                              " is out of range (" + std::to_string(n) + " nodes)");
+      }
+      list[e][k] = static_cast<NodeId>(v);
+    }
+  }
+  std::vector<std::int64_t> matched;
+  {
+    py::gil_scoped_release release;
+    const CubicGraph graph = CubicGraph::from_edges(n, list);
+    const Result result = perfect_matching(graph, options);
+    const MatchingCheck check = verify_perfect_matching(graph, result.matching);
+    if (!check.ok()) throw std::logic_error("the matching failed the verifier: " + check.message);
+    for (NodeId v = 0; v < n; ++v) {
+      const EdgeId e = result.matching.mate_edge[v];
+      if (graph.endpoints(e)[0] == v) matched.push_back(e);  // each edge once, from one end
+    }
+    std::sort(matched.begin(), matched.end());
+  }
+  py::array_t<std::int64_t> out(matched.size());
+  std::copy(matched.begin(), matched.end(), out.mutable_data());
+  return out;
+}
+
+}  // namespace
+}  // namespace petersen::python
+
+PYBIND11_MODULE(_petersen, m) {
+  using namespace petersen;
+  using namespace petersen::python;
+  m.doc() = "The C++ core of petersen; use the functions of the petersen package.";
+  // The library's located messages, as ValueError (std::invalid_argument already is one).
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const MeshError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const GraphError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    }
+  });
+  m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
+        py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("sharp_angle"),
+        py::arg("keep_edges"));
+  m.def("read_mesh", &read_mesh_py, py::arg("path"));
+  m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"));
+  m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),
+        py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
+  add_render(m);
+}

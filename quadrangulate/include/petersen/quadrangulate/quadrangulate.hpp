@@ -1,0 +1,128 @@
+#pragma once
+// The front door for meshes: any polygon mesh in, its triangles paired into quads, the rest kept.
+//
+// Two triangles may be paired when they share an edge that belongs to exactly these two faces and
+// their union has four distinct vertices (petersen/dualize/pairable_graph.hpp); every other edge
+// is a cut no pair crosses. The pairing is a maximum matching of that graph, certified:
+// - components of the graph in which every triangle has three pairable sides (closed surfaces)
+//   are matched perfectly by the chosen algorithm (Petersen's theorem: their graph is cubic and
+//   bridgeless, since a bridge would be a one-edge boundary), and checked by the O(n) verifier;
+// - every other component by a greedy pass and Tarjan's augmenting paths, whose final Edmonds
+//   forest gives a Tutte–Berge witness that verify_maximum_matching checks.
+// Faces that are not triangles are kept exactly as they are; triangles left unpaired stay
+// triangles, or with all_quad are turned into quads by splitting edges (see QuadOptions).
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+
+namespace petersen {
+
+inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
+
+/// What the pairing optimises besides its size (always the maximum).
+enum class Objective {
+  pairs,    ///< nothing else: the algorithm's pairing, fastest
+  quality,  ///< the least total quad cost (quad_corner_deviation), exact and certified
+};
+std::string_view to_string(Objective objective);
+std::optional<Objective> parse_objective(std::string_view name);
+
+struct QuadOptions {
+  /// The algorithm for the closed components: sg, ps, ds, gw, frink, lemon or lrs. lrs works on
+  /// each closed, connected, orientable manifold component (it flips edges, see LrsResult); a
+  /// closed component it cannot take (pinched vertex, non-orientable) is matched by ps instead
+  /// and counted in QuadStats::lrs_fallback_components.
+  Algorithm algorithm = Algorithm::ps;
+  Augment augment = Augment::local;
+  std::uint64_t seed = 1;
+  /// Turn every triangle left unpaired into a quad too, by splitting edges: two leftover
+  /// triangles are joined by a shortest path of quads across edges of exactly two faces, and
+  /// every edge on it gets a new midpoint vertex (a crossed quad becomes two quads, or three
+  /// around a new centre vertex when the path turns); a component whose triangle count is odd
+  /// ends its path at a boundary edge instead. Input vertices never move and the surface's
+  /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
+  bool all_quad = false;
+  /// Objective::quality pairs by the exact minimum-cost matching (min_cost_matching.hpp) of the
+  /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
+  /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
+  Objective objective = Objective::pairs;
+  /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
+  /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
+  CutOptions cuts = {};
+  /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
+  /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
+  PeerMatcher peer = nullptr;
+};
+
+struct QuadStats {
+  std::uint64_t faces_in = 0;        ///< faces of the input
+  std::uint64_t vertices = 0;        ///< vertices of the input (referenced or not)
+  std::uint64_t triangles = 0;       ///< triangles of the input
+  std::uint64_t polygons_kept = 0;   ///< faces that are not triangles, kept as they are
+  std::uint64_t pairs = 0;           ///< quads made of two input triangles
+  std::uint64_t triangles_left = 0;  ///< triangles no maximum pairing can pair (before all_quad)
+  std::uint64_t added_vertices = 0;  ///< by all_quad
+  std::uint64_t split_quads = 0;     ///< faces of the output made by all_quad's splits
+  std::uint64_t mesh_edges = 0;
+  std::int64_t euler_characteristic = 0;  ///< referenced vertices − edges + faces, of the input
+  /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera.
+  std::optional<std::int64_t> genus;
+  CutCounts cuts;                        ///< mesh edges no pair may cross, by cause
+  std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
+  std::uint64_t components = 0;          ///< components of the pairable graph
+  std::uint64_t closed_components = 0;   ///< of them, those matched by `algorithm`
+  bool maximum_certified = false;        ///< the pairing passed the verifier and the witness check
+  /// Objective::quality: the certificates proved the total cost minimal.
+  bool optimality_certified = false;
+  /// The quads made of two input triangles, by quad_corner_deviation in degrees: median, 95th
+  /// percentile, how many are non-convex (cost above 90), and the sum (for Objective::quality
+  /// the certified optimum, in the solver's integer units over kDefaultCostScale).
+  double quality_median = 0, quality_p95 = 0, objective_total = 0;
+  std::uint64_t nonconvex_quads = 0;
+  /// Of `algorithm` on the closed components (the paper's columns), plus the augmentation of the
+  /// other components in augmenting_paths, blossoms and nodes_labelled.
+  Stats matching;
+  std::uint64_t flipped_edges = 0;         ///< lrs: edges of K that are not input edges
+  std::uint64_t irreducible_vertices = 0;  ///< lrs: |T′|, summed over components
+  std::uint64_t lrs_fallback_components = 0;
+  std::string lrs_fallback_reason;  ///< the first component's refusal, when there was one
+
+  double check_seconds = 0;     ///< the input check and the pairable graph
+  double dual_seconds = 0;      ///< the graphs the algorithms run on
+  double verify_seconds = 0;    ///< the verifier and the maximality witness
+  double quads_seconds = 0;     ///< the output faces
+  double all_quad_seconds = 0;  ///< the splits
+  double total_seconds = 0;     ///< everything above plus the matching
+};
+
+struct QuadResult {
+  /// The output: the input's positions (then all_quad's new vertices) and faces in input order:
+  /// each pair's quad where its first triangle was, kept polygons and left triangles as they
+  /// were (or, with all_quad, the quads they were split into).
+  PolygonMesh mesh;
+  /// For each output face, the input faces it came from: {t1, t2} for a pair's quad (the quad
+  /// follows t1's orientation), {f, kNoFace} for a face kept or left. With lrs, a triangle its
+  /// flips made new has no input face (kNoFace). A face split by all_quad names the faces of the
+  /// quad or triangle it was split from.
+  HugeVector<std::array<FaceId, 2>> sources;
+  /// The proof that no pairing leaves fewer triangles: a set A of triangles (input face ids)
+  /// such that removing A from the pairable graph leaves triangles_left + |A| components with an
+  /// odd number of triangles (verify_maximum_matching). Empty when every triangle is paired.
+  std::vector<FaceId> tutte_set;
+  QuadStats stats;
+};
+
+/// Pairs the triangles of any polygon mesh (see the top of this file). Throws MeshError naming the
+/// face for a corner out of range or a face of fewer than three corners, MeshError when all_quad
+/// cannot reach a leftover triangle's partner. O(n log d) plus the algorithm's cost.
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
+
+}  // namespace petersen

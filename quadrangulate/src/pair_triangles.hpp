@@ -1,0 +1,35 @@
+#pragma once
+// The maximum pairing of a mesh's triangles, certified: closed components by the chosen
+// algorithm, the others by augmenting paths with a Tutte–Berge witness (quadrangulate.hpp).
+
+#include <array>
+#include <vector>
+
+#include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+
+namespace petersen::quad_detail {
+
+/// A quad lrs made, with the input triangles behind it (kNoFace where its flips made a new one).
+struct LrsQuad {
+  std::array<VertexId, 4> corners;
+  std::array<FaceId, 2> sources;
+};
+
+struct TrianglePairing {
+  /// Per node: its partner node, kNoNode when unpaired, kLrsNode when lrs paired it (lrs_quads).
+  HugeVector<NodeId> partner;
+  std::vector<LrsQuad> lrs_quads;
+  std::vector<NodeId> tutte_set;     ///< nodes; see QuadResult::tutte_set
+  std::int64_t objective_units = 0;  ///< Objective::quality: the certified total, scaled costs
+};
+inline constexpr NodeId kLrsNode = kNoNode - 1;
+
+/// Pairs the nodes of `graph` (the pairable graph of `mesh`; its edge arrays may be taken over, its
+/// node_face stays) and checks the answer:
+/// throws std::logic_error if a matching fails the verifier or its witness. Fills the matching,
+/// lrs, component and time fields of `stats`, and maximum_certified.
+TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
+                               const QuadOptions& options, QuadStats& stats);
+
+}  // namespace petersen::quad_detail

@@ -1,0 +1,171 @@
+#include "petersen/quadrangulate/quadrangulate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "all_quad.hpp"
+#include "pair_triangles.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
+
+namespace petersen {
+
+namespace {
+
+class Stopwatch {
+ public:
+  double lap() {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - last_).count();
+    last_ = now;
+    return seconds;
+  }
+
+ private:
+  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
+
+// The quad of triangles t1 and t2 across their shared edge, in t1's orientation: t1 = (a, b, c)
+// and t2 holding a, b and d give (a, d, b, c), whichever way t2 runs.
+std::array<VertexId, 4> quad_of(std::span<const VertexId> t1, std::span<const VertexId> t2) {
+  auto in_t2 = [&](VertexId v) { return v == t2[0] || v == t2[1] || v == t2[2]; };
+  for (int k = 0; k < 3; ++k) {
+    const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
+    if (!in_t2(a) || !in_t2(b)) continue;
+    const VertexId d = t2[0] != a && t2[0] != b ? t2[0] : t2[1] != a && t2[1] != b ? t2[1] : t2[2];
+    return {a, d, b, c};
+  }
+  throw std::logic_error("internal error: paired triangles share no edge");
+}
+
+// The quality figures of the pairs' quads (QuadStats): median, 95th percentile, non-convex count.
+void measure_quality(std::vector<double> costs, QuadStats& stats) {
+  if (costs.empty()) return;
+  auto at = [&](double q) {
+    const auto k = static_cast<std::ptrdiff_t>(q * double(costs.size() - 1));
+    std::nth_element(costs.begin(), costs.begin() + k, costs.end());
+    return costs[static_cast<std::size_t>(k)];
+  };
+  stats.quality_median = at(0.5);
+  stats.quality_p95 = at(0.95);
+  for (double c : costs) {
+    stats.nonconvex_quads += c > 90.0;
+  }
+}
+
+constexpr std::pair<Objective, std::string_view> kObjectiveNames[] = {
+    {Objective::pairs, "pairs"}, {Objective::quality, "quality"}};
+
+}  // namespace
+
+std::string_view to_string(Objective objective) {
+  for (auto [o, name] : kObjectiveNames)
+    if (o == objective) return name;
+  return "?";
+}
+
+std::optional<Objective> parse_objective(std::string_view name) {
+  for (auto [o, n] : kObjectiveNames)
+    if (n == name) return o;
+  return std::nullopt;
+}
+
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
+  Stopwatch total, clock;
+  QuadResult result;
+  QuadStats& stats = result.stats;
+  const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
+  stats.faces_in = face_count;
+  stats.vertices = mesh.positions.size();
+  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
+  stats.triangles = graph.node_count;
+  stats.polygons_kept = face_count - graph.node_count;
+  stats.mesh_edges = graph.mesh_edges;
+  stats.cuts = graph.cuts;
+  stats.inconsistent_edges = graph.inconsistent_edges;
+  {
+    std::vector<std::uint8_t> referenced(mesh.positions.size(), 0);
+    for (VertexId v : mesh.corners) referenced[v] = 1;
+    std::int64_t vertices = 0;
+    for (std::uint8_t r : referenced) vertices += r;
+    stats.euler_characteristic =
+        vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);
+  }
+  stats.check_seconds = clock.lap();
+
+  const quad_detail::TrianglePairing pairing =
+      quad_detail::pair_triangles(graph, mesh, options, stats);
+  if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
+    stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
+  }
+  clock.lap();  // its phases are in stats already
+
+  // Output faces in input order: a pair's quad where its first triangle was.
+  HugeVector<NodeId> face_node;
+  if (!graph.node_face.empty()) {
+    face_node.assign(face_count, kNoNode);
+    for (NodeId v = 0; v < graph.node_count; ++v) face_node[graph.node_face[v]] = v;
+  }
+  PolygonMesh& out = result.mesh;
+  out.positions = mesh.positions;
+  out.corners.reserve(mesh.corners.size() - graph.node_count / 2);
+  result.sources.reserve(face_count - graph.node_count / 2);
+  std::vector<quad_detail::FaceKind> kinds;  // for all_quad only
+  auto emitted = [&](quad_detail::FaceKind kind) {
+    if (options.all_quad) kinds.push_back(kind);
+  };
+  for (FaceId f = 0; f < face_count; ++f) {
+    const NodeId v = face_node.empty() ? f : face_node[f];
+    const NodeId partner = v == kNoNode ? kNoNode : pairing.partner[v];
+    if (v == kNoNode || partner == kNoNode) {
+      out.add_face(mesh.face(f));
+      result.sources.push_back({f, kNoFace});
+      stats.triangles_left += v != kNoNode;
+      emitted(v != kNoNode ? quad_detail::FaceKind::left : quad_detail::FaceKind::kept);
+    } else if (partner != quad_detail::kLrsNode && v < partner) {
+      const FaceId g = graph.face_of(partner);
+      const std::array<VertexId, 4> quad = quad_of(mesh.face(f), mesh.face(g));
+      out.add_face(quad);
+      result.sources.push_back({f, g});
+      ++stats.pairs;
+      emitted(quad_detail::FaceKind::pair);
+    }
+  }
+  for (const quad_detail::LrsQuad& quad : pairing.lrs_quads) {
+    out.add_face(quad.corners);
+    result.sources.push_back(quad.sources);
+    ++stats.pairs;
+    emitted(quad_detail::FaceKind::pair);
+  }
+  for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
+  // Quality of the pairs' quads (every output face of four corners made from triangles).
+  std::vector<double> costs;
+  costs.reserve(stats.pairs);
+  double total_cost = 0;
+  for (FaceId o = 0; o < out.face_count(); ++o) {
+    const auto c = out.face(o);
+    if (c.size() != 4 || (result.sources[o][1] == kNoFace && result.sources[o][0] != kNoFace &&
+                          mesh.arity(result.sources[o][0]) != 3)) {
+      continue;
+    }
+    const auto& p = out.positions;
+    costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
+    total_cost += costs.back();
+  }
+  measure_quality(std::move(costs), stats);
+  stats.objective_total = options.objective == Objective::quality
+                              ? double(pairing.objective_units) / kDefaultCostScale
+                              : total_cost;
+  stats.quads_seconds = clock.lap();
+
+  if (options.all_quad && stats.triangles_left > 0) {
+    quad_detail::split_leftovers(result, kinds);
+    stats.all_quad_seconds = clock.lap();
+  }
+  stats.total_seconds = total.lap();
+  return result;
+}
+
+}  // namespace petersen

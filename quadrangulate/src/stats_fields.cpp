@@ -1,0 +1,73 @@
+#include "petersen/quadrangulate/stats_fields.hpp"
+
+namespace petersen {
+
+std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& options,
+                                    const RunFigures& run) {
+  std::vector<StatField> f;
+  auto add = [&](const char* key, StatValue value) { f.push_back({key, std::move(value)}); };
+  auto u = [&](const char* key, std::uint64_t value) { add(key, value); };
+  auto d = [&](const char* key, double value) { add(key, value); };
+  if (!run.input.empty()) add("input", run.input);
+  if (!run.output.empty()) add("output", run.output);
+  const Algorithm a = options.algorithm;
+  const bool quality = options.objective == Objective::quality;
+  add("objective", std::string(to_string(options.objective)));
+  add("algorithm", quality ? std::string("min-cost") : std::string(to_string(a)));
+  if (!quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs)) {
+    add("augment", std::string(to_string(options.augment)));
+  }
+  u("vertices", s.vertices);
+  u("faces_in", s.faces_in);
+  u("triangles", s.triangles);
+  u("polygons_kept", s.polygons_kept);
+  if (s.genus) add("genus", *s.genus);
+  add("euler_characteristic", s.euler_characteristic);
+  u("components", s.components);
+  u("closed_components", s.closed_components);
+  u("mesh_edges", s.mesh_edges);
+  u("cut_edges", s.cuts.total());
+  std::vector<std::pair<std::string, std::uint64_t>> by_cause;
+  for (int c = 0; c < kCutCauses; ++c) {
+    by_cause.emplace_back(std::string(to_string(CutCause(c))), s.cuts.by_cause[c]);
+  }
+  add("cut_edges_by_cause", std::move(by_cause));
+  u("inconsistent_edges", s.inconsistent_edges);
+  if (run.load_seconds) d("load_seconds", *run.load_seconds);
+  d("check_seconds", s.check_seconds);
+  d("dual_seconds", s.dual_seconds);
+  d("initial_seconds", s.matching.initial_seconds);
+  d("initial_paired_percent",
+    s.triangles == 0
+        ? 100.0
+        : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) / double(s.triangles));
+  u("unpaired_after_initial", s.matching.unpaired_after_initial);
+  d("augment_seconds", s.matching.augment_seconds);
+  d("matching_seconds", s.matching.matching_seconds());
+  u("augmenting_paths", s.matching.augmenting_paths);
+  u("blossoms", s.matching.blossoms);
+  u("nodes_labelled", s.matching.nodes_labelled);
+  u("reductions", s.matching.reductions);
+  if (a == Algorithm::lrs && !quality) {
+    u("flipped_edges", s.flipped_edges);
+    u("irreducible_vertices", s.irreducible_vertices);
+    u("lrs_fallback_components", s.lrs_fallback_components);
+  }
+  d("verify_seconds", s.verify_seconds);
+  add("maximum_certified", s.maximum_certified);
+  u("pairs", s.pairs);
+  u("triangles_left", s.triangles_left);
+  d("quality_median", s.quality_median);
+  d("quality_p95", s.quality_p95);
+  u("nonconvex_quads", s.nonconvex_quads);
+  d("objective_total", s.objective_total);
+  add("optimality_certified", s.optimality_certified);
+  d("quads_seconds", s.quads_seconds);
+  u("added_vertices", s.added_vertices);
+  d("all_quad_seconds", s.all_quad_seconds);
+  if (run.write_seconds) d("write_seconds", *run.write_seconds);
+  d("total_seconds", run.total_seconds.value_or(s.total_seconds));
+  return f;
+}
+
+}  // namespace petersen

@@ -1,0 +1,122 @@
+// match_any_graph and the BGL adaptor on top of it: perfect matchings of cubic bridgeless graphs
+// by every algorithm, maximum ones (Boost's size) of every other graph, with the reason noted.
+
+#include "petersen/matching/any_graph.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/max_cardinality_matching.hpp>
+#include <boost/property_map/property_map.hpp>
+#include <map>
+
+#include "peers.hpp"
+#include "petersen/adaptors/boost_graph.hpp"
+#include "petersen/graph/generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/testing/arbitrary.hpp"
+
+namespace petersen {
+namespace {
+
+// The matching is one of `edges`: each matched node names an edge at it whose other end names it
+// too. Returns the matched edge count, or -1.
+std::int64_t checked_size(std::uint32_t n, const testing::EdgeList& edges,
+                          const AnyGraphMatching& m) {
+  if (m.mate_edge.size() != n) return -1;
+  std::int64_t matched = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = m.mate_edge[v];
+    if (e == kNoEdge) continue;
+    if (e >= edges.size() || (edges[e][0] != v && edges[e][1] != v)) return -1;
+    if (m.mate_edge[edges[e][0] ^ edges[e][1] ^ v] != e || edges[e][0] == edges[e][1]) return -1;
+    ++matched;
+  }
+  return matched / 2;
+}
+
+RC_GTEST_PROP(AnyGraph, CubicBridgelessGraphsGetPerfectMatchingsByEveryAlgorithm,
+              (const CubicGraph& g)) {
+  const testing::EdgeList edges = testing::edge_list(g);
+  const Algorithm algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps, Algorithm::ds,
+                                                Algorithm::gw, Algorithm::lemon);
+  const AnyGraphMatching m = match_any_graph(
+      g.node_count(), edges, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
+  RC_ASSERT(m.cubic_bridgeless && m.perfect && m.note.empty());
+  RC_ASSERT(checked_size(g.node_count(), edges, m) == g.node_count() / 2);
+}
+
+RC_GTEST_PROP(AnyGraph, OtherGraphsGetMaximumMatchingsAndANote, ()) {
+  testing::EdgeListGraph g = *testing::general_graphs();
+  if (*rc::gen::arbitrary<bool>()) g.edges.push_back({0, 0});  // a loop is never matched
+  const AnyGraphMatching m = match_any_graph(g.node_count, g.edges);
+  std::vector<std::array<std::uint32_t, 2>> loop_free;
+  for (auto [a, b] : g.edges)
+    if (a != b) loop_free.push_back({a, b});
+  const std::uint32_t maximum = testing::boost_matching_size(g.node_count, loop_free);
+  RC_ASSERT(checked_size(g.node_count, g.edges, m) == maximum);
+  RC_ASSERT(m.size == maximum);
+  RC_ASSERT(m.perfect == (2 * maximum == g.node_count));
+  if (!m.cubic_bridgeless) RC_ASSERT(!m.note.empty());
+}
+
+RC_GTEST_PROP(AnyGraph, APlantedBridgeIsNamed, ()) {
+  const testing::GraphWithBridge input = *testing::cubic_graphs_with_a_bridge();
+  const testing::EdgeList edges = testing::edge_list(input.graph);
+  const AnyGraphMatching m = match_any_graph(input.graph.node_count(), edges);
+  RC_ASSERT(!m.cubic_bridgeless);
+  RC_ASSERT(m.note.find("edge " + std::to_string(input.bridge) + " ") == 0);
+  RC_ASSERT(m.size == testing::boost_matching_size(input.graph.node_count(), edges));
+}
+
+TEST(AnyGraph, NamesAnEndpointOutOfRange) {
+  EXPECT_THROW(match_any_graph(2, {{0, 1}, {1, 2}}), GraphError);
+}
+
+// The BGL adaptor fills Boost's mate map as edmonds_maximum_cardinality_matching does.
+using BoostGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+using Vertex = boost::graph_traits<BoostGraph>::vertex_descriptor;
+
+RC_GTEST_PROP(BoostAdaptor, MatchesLikeEdmondsOnAnyGraph, ()) {
+  const bool cubic = *rc::gen::arbitrary<bool>();
+  testing::EdgeListGraph g;
+  if (cubic) {
+    const CubicGraph c = *rc::gen::arbitrary<CubicGraph>();
+    g = {c.node_count(), testing::edge_list(c)};
+  } else {
+    g = *testing::general_graphs();
+  }
+  BoostGraph bg(g.node_count);
+  for (auto [a, b] : g.edges) boost::add_edge(a, b, bg);
+  std::vector<Vertex> mate(g.node_count), edmonds(g.node_count);
+  const bool perfect = perfect_matching(bg, &mate[0], {.algorithm = Algorithm::gw});
+  boost::edmonds_maximum_cardinality_matching(bg, &edmonds[0]);
+  RC_ASSERT(boost::is_a_matching(bg, &mate[0]));
+  const auto size = boost::matching_size(bg, &mate[0]);
+  RC_ASSERT(size == boost::matching_size(bg, &edmonds[0]));
+  RC_ASSERT(perfect == (2 * size == g.node_count));
+  if (cubic) RC_ASSERT(perfect);
+}
+
+// A graph whose vertex descriptors are not indices (listS), with an index map of the caller's.
+TEST(BoostAdaptor, TakesTheCallersVertexIndexMap) {
+  using ListGraph = boost::adjacency_list<boost::listS, boost::listS, boost::undirectedS,
+                                          boost::property<boost::vertex_index_t, int>>;
+  using ListVertex = boost::graph_traits<ListGraph>::vertex_descriptor;
+  const CubicGraph c = petersen_graph();
+  ListGraph g;
+  std::vector<ListVertex> vertex;
+  for (NodeId v = 0; v < c.node_count(); ++v) vertex.push_back(boost::add_vertex(int(v), g));
+  for (EdgeId e = 0; e < c.edge_count(); ++e)
+    boost::add_edge(vertex[c.endpoints(e)[0]], vertex[c.endpoints(e)[1]], g);
+  std::map<ListVertex, ListVertex> mate_of;
+  auto mate = boost::make_assoc_property_map(mate_of);
+  EXPECT_TRUE(perfect_matching(g, mate, get(boost::vertex_index, g)));
+  const auto index = get(boost::vertex_index, g);
+  EXPECT_TRUE(boost::is_a_matching(g, mate, index));
+  EXPECT_EQ(boost::matching_size(g, mate, index), 5u);
+}
+
+}  // namespace
+}  // namespace petersen

@@ -1,0 +1,227 @@
+// The mesh front door on every kind of mesh: closed, open, polygons, non-manifold edges, flipped
+// faces, several components; every answer checked by result_check (independent of the code).
+
+#include "petersen/quadrangulate/quadrangulate.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "result_check.hpp"
+
+namespace petersen {
+namespace {
+
+using testing::check_quad_result;
+
+constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
+
+constexpr Algorithm kAlgorithms[] = {Algorithm::sg, Algorithm::ps,    Algorithm::ds,
+                                     Algorithm::gw, Algorithm::frink, Algorithm::lemon,
+                                     Algorithm::lrs};
+
+PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
+                    std::vector<std::vector<VertexId>> faces) {
+  PolygonMesh mesh;
+  for (const auto& p : positions) mesh.positions.push_back(p);
+  for (const auto& f : faces) mesh.add_face(f);
+  return mesh;
+}
+
+void expect_correct(const PolygonMesh& mesh, bool all_quad = false) {
+  for (Algorithm algorithm : kAlgorithms) {
+    SCOPED_TRACE(std::string(to_string(algorithm)));
+    const QuadResult result =
+        quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad, .peer = kLemon});
+    EXPECT_TRUE(result.stats.maximum_certified);
+    EXPECT_EQ(check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs), "");
+  }
+}
+
+// A square of two triangles, a lone triangle beside it, and a quad: one pair, one left, one kept.
+TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
+  const PolygonMesh mesh = mesh_of({{0, 0, 0},
+                                    {1, 0, 0},
+                                    {1, 1, 0},
+                                    {0, 1, 0},
+                                    {2, 0, 0},
+                                    {3, 0, 0},
+                                    {3, 1, 0},
+                                    {2, 1, 0},
+                                    {5, 0, 0}},
+                                   {{0, 1, 2}, {0, 2, 3}, {4, 5, 6, 7}, {5, 8, 6}});
+  const QuadResult result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_EQ(result.stats.triangles_left, 1u);
+  EXPECT_EQ(result.stats.polygons_kept, 1u);
+  EXPECT_EQ(result.stats.cuts.by_cause[int(CutCause::polygon)], 1u);
+  ASSERT_EQ(result.mesh.face_count(), 3u);
+  const std::vector<VertexId> quad(result.mesh.face(0).begin(), result.mesh.face(0).end());
+  // Triangle 0 = (0, 1, 2) meets triangle 1 across 2 -> 0; the quad starts there, in 0's order.
+  EXPECT_EQ(quad, (std::vector<VertexId>{2, 3, 0, 1}));
+  expect_correct(mesh);
+}
+
+// Three triangles on one edge: no pair crosses it.
+TEST(Quadrangulate, NeverPairsAcrossANonManifoldEdge) {
+  const PolygonMesh mesh = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}},
+                                   {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  const QuadResult result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.pairs, 0u);
+  EXPECT_EQ(result.stats.cuts.by_cause[int(CutCause::non_manifold)], 1u);
+  expect_correct(mesh);
+}
+
+// A star of triangles whose maximum matching leaves some unpaired: the witness proves it.
+TEST(Quadrangulate, CertifiesAMaximumThatIsNotPerfect) {
+  // Triangle 0 in the middle, three triangles on its sides: only one of them can pair with it.
+  const PolygonMesh mesh =
+      mesh_of({{0, 0, 0}, {2, 0, 0}, {1, 2, 0}, {1, -1, 0}, {2.5, 1.5, 0}, {-0.5, 1.5, 0}},
+              {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}});
+  const QuadResult result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_EQ(result.stats.triangles_left, 2u);
+  EXPECT_EQ(result.tutte_set.size(), 1u);  // the middle triangle
+  expect_correct(mesh);
+  expect_correct(mesh, /*all_quad=*/true);
+}
+
+TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
+  PolygonMesh bad = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 7}});
+  EXPECT_THROW(quadrangulate(bad), MeshError);
+  bad = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1}});
+  EXPECT_THROW(quadrangulate(bad), MeshError);
+}
+
+// A closed mesh takes the fast path: every triangle paired by every algorithm.
+TEST(Quadrangulate, ClosedMeshesArePerfect) {
+  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 40, 200, 5));
+  for (Algorithm algorithm : kAlgorithms) {
+    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
+    EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
+    EXPECT_EQ(result.stats.pairs, mesh.face_count() / 2);
+  }
+  expect_correct(mesh);
+}
+
+// Non-orientable closed surfaces: every graph algorithm pairs them perfectly (their dual is cubic
+// and bridgeless); lrs, which needs an orientable manifold, hands them to ps and says so.
+TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
+  for (const PolygonMesh& mesh : {klein_bottle(7, 9), projective_plane(2)}) {
+    expect_correct(mesh);
+    expect_correct(mesh, /*all_quad=*/true);
+    for (Algorithm algorithm : kAlgorithms) {
+      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
+      EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
+      EXPECT_EQ(result.stats.inconsistent_edges > 0, true);
+      if (algorithm == Algorithm::lrs) {
+        EXPECT_EQ(result.stats.lrs_fallback_components, 1u);
+        EXPECT_NE(result.stats.lrs_fallback_reason, "");
+      }
+    }
+  }
+  // The minimal projective plane has 10 triangles; every one is paired.
+  EXPECT_EQ(quadrangulate(projective_plane(0)).stats.pairs, 5u);
+}
+
+// Each extra cut on two triangles that would otherwise pair: the square (0, 1, 2, 3) cut along
+// its diagonal 0-2, folded by 90 degrees when vertex 3 is lifted.
+TEST(Quadrangulate, ExtraCutsKeepTriangles) {
+  const PolygonMesh flat =
+      mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  const PolygonMesh folded =
+      mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.5, 0.5, 1}}, {{0, 1, 2}, {0, 2, 3}});
+  auto left = [](const PolygonMesh& mesh, const CutOptions& cuts, CutCause cause) {
+    const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
+    EXPECT_EQ(result.stats.cuts.by_cause[int(cause)], result.stats.triangles_left / 2);
+    EXPECT_EQ(check_quad_result(mesh, result, false, false, cuts), "");
+    return result.stats.triangles_left;
+  };
+  EXPECT_EQ(left(flat, {}, CutCause::user), 0u);
+  const std::array<VertexId, 2> diagonal[] = {{2, 0}};
+  EXPECT_EQ(left(flat, {.user_edges = diagonal}, CutCause::user), 2u);
+  EXPECT_EQ(left(flat, {.sharp_angle_degrees = 30}, CutCause::sharp), 0u);
+  EXPECT_EQ(left(folded, {.sharp_angle_degrees = 30}, CutCause::sharp), 2u);
+  EXPECT_EQ(left(folded, {.sharp_angle_degrees = 100}, CutCause::sharp), 0u);
+  const std::uint32_t same_uv[] = {0, 1, 2, 0, 2, 3}, seam_uv[] = {0, 1, 2, 4, 2, 3};
+  EXPECT_EQ(left(flat, {.corner_uv = same_uv}, CutCause::uv_seam), 0u);
+  EXPECT_EQ(left(flat, {.corner_uv = seam_uv}, CutCause::uv_seam), 2u);
+  EXPECT_EQ(left(flat, {.corner_normal = seam_uv}, CutCause::normal_seam), 2u);
+  const std::uint32_t materials[] = {0, 1};
+  EXPECT_EQ(left(flat, {.face_material = materials}, CutCause::material), 2u);
+  EXPECT_EQ(left(flat, {.face_group = materials}, CutCause::group), 2u);
+  EXPECT_EQ(left(flat, {.face_smoothing = materials}, CutCause::smoothing), 2u);
+  const std::uint32_t wrong_size[] = {0};
+  CutOptions wrong;
+  wrong.face_material = wrong_size;
+  EXPECT_THROW(quadrangulate(flat, {.cuts = wrong}), MeshError);
+}
+
+// Random seams, materials, user edges and a fold threshold on mixed meshes: no pair crosses a
+// cut and the pairing is still the maximum of what is left.
+RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  const PolygonMesh mesh = random_mixed_mesh(seed, *rc::gen::inRange<std::uint32_t>(4, 300));
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
+  const auto corners = static_cast<std::uint32_t>(mesh.corners.size());
+  // UV ids: the vertex id, except at a few corners (seams); materials among three.
+  std::vector<std::uint32_t> uv(mesh.corners.begin(), mesh.corners.end());
+  for (std::uint32_t c : *rc::gen::container<std::vector<std::uint32_t>>(
+           *rc::gen::inRange<std::size_t>(0, 6), rc::gen::inRange<std::uint32_t>(0, corners))) {
+    uv[c] += corners;
+  }
+  const auto material = *rc::gen::container<std::vector<std::uint32_t>>(
+      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
+  std::vector<std::array<VertexId, 2>> user;
+  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
+    user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
+  }
+  CutOptions cuts{.user_edges = user, .corner_uv = uv, .face_material = material};
+  if (*rc::gen::arbitrary<bool>()) cuts.sharp_angle_degrees = *rc::gen::inRange(10, 170);
+  const Algorithm algorithm =
+      *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::ps, Algorithm::gw, Algorithm::sg});
+  const QuadResult result =
+      quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts, .peer = kLemon});
+  RC_ASSERT(result.stats.maximum_certified);
+  const std::string problem = check_quad_result(mesh, result, false, false, cuts);
+  RC_LOG() << problem;
+  RC_ASSERT(problem.empty());
+}
+
+// The generators' mixed meshes: closed or open, polygons, fins, pinches, flips, components.
+RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
+  const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
+  const auto size = *rc::gen::inRange<std::uint32_t>(4, 400);
+  const PolygonMesh mesh = random_mixed_mesh(seed, size);
+  const Algorithm algorithm =
+      *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
+  const bool all_quad = *rc::gen::arbitrary<bool>();
+  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
+  QuadResult result;
+  try {
+    result = quadrangulate(mesh, {.algorithm = algorithm,
+                                  .seed = seed,
+                                  .all_quad = all_quad,
+                                  .objective = objective,
+                                  .peer = kLemon});
+  } catch (const MeshError& e) {
+    RC_ASSERT(all_quad);
+    RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
+    RC_TAG("all-quad refused");
+    return;
+  }
+  RC_CLASSIFY(result.stats.polygons_kept > 0, "polygons");
+  RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::non_manifold)] > 0, "non-manifold");
+  RC_CLASSIFY(result.stats.added_vertices > 0, "split");
+  RC_ASSERT(result.stats.optimality_certified == (objective == Objective::quality));
+  const std::string problem = check_quad_result(
+      mesh, result, all_quad, algorithm == Algorithm::lrs && objective == Objective::pairs);
+  RC_LOG() << problem;
+  RC_ASSERT(problem.empty());
+}
+
+}  // namespace
+}  // namespace petersen

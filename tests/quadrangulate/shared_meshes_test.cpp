@@ -1,0 +1,105 @@
+// Every shared mesh, the invalid ones included, through the front door with every algorithm:
+// each answer checked by result_check, and --all-quad's output too.
+
+#include "shared_meshes.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "peers.hpp"
+#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+#include "result_check.hpp"
+
+namespace petersen {
+namespace {
+
+// The independent check is map-based (O(F log F) with large constants) and LEMON is in it, so the
+// full set of algorithms runs on the meshes below this size; the larger ones run ps and lrs.
+#ifdef PETERSEN_SANITIZE
+constexpr std::uint32_t kAllAlgorithmsUpTo = 15000;
+constexpr std::uint32_t kMaxTriangles = 100000;
+#else
+constexpr std::uint32_t kAllAlgorithmsUpTo = 100000;
+constexpr std::uint32_t kMaxTriangles = 600000;
+#endif
+
+std::vector<std::string> all_shared_files() {
+  std::vector<std::string> files;
+  for (const auto& mesh : testing::shared_meshes_up_to(kMaxTriangles)) files.push_back(mesh.file);
+  for (const char* invalid : {"invalid/beetle.obj.gz", "invalid/cow.obj.gz",
+                              "invalid/stanford-bunny.obj.gz", "invalid/teapot.obj.gz"}) {
+    files.push_back(invalid);
+  }
+  return files;
+}
+
+TEST(SharedMeshes, EveryMeshConvertsWithEveryAlgorithm) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  for (const std::string& file : all_shared_files()) {
+    SCOPED_TRACE(file);
+    const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/" + file));
+    const bool small = mesh.face_count() <= kAllAlgorithmsUpTo;
+    for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw,
+                                Algorithm::lemon, Algorithm::lrs}) {
+      if (!small && algorithm != Algorithm::ps && algorithm != Algorithm::lrs) continue;
+      SCOPED_TRACE(std::string(to_string(algorithm)));
+      const QuadResult result =
+          quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
+      EXPECT_TRUE(result.stats.maximum_certified);
+      EXPECT_EQ(testing::check_quad_result(mesh, result, false, algorithm == Algorithm::lrs), "");
+    }
+    try {
+      const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true});
+      EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false), "");
+    } catch (const MeshError& e) {
+      ADD_FAILURE() << file << ": " << e.what();
+    }
+  }
+}
+
+// Issue 13's case: fandisk's creases kept with a 30-degree fold threshold, a maximum pairing of
+// what is left, and all quads on request.
+TEST(SharedMeshes, FandiskKeepsItsCreases) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/fandisk.obj.gz"));
+  const CutOptions cuts{.sharp_angle_degrees = 30.0};
+  const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
+  EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::sharp)], 0u);
+  EXPECT_EQ(testing::check_quad_result(mesh, result, false, false, cuts), "");
+  const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true, .cuts = cuts});
+  EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false, cuts), "");
+}
+
+// --objective quality on the closed meshes: all quads, both certificates, and the optimum LEMON's
+// weighted perfect matching finds on the dual build_dual makes, with dual_edge_quality's costs.
+TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  for (const auto& shared : testing::shared_meshes_up_to(kAllAlgorithmsUpTo / 5)) {
+    SCOPED_TRACE(shared.file);
+    const TriangleMesh triangles = read_triangle_mesh(*dir + "/" + shared.file);
+    const PolygonMesh mesh = to_polygon_mesh(triangles);
+    const QuadResult result = quadrangulate(mesh, {.objective = Objective::quality});
+    EXPECT_TRUE(result.stats.optimality_certified);
+    EXPECT_EQ(result.stats.triangles_left, 0u);
+    EXPECT_EQ(testing::check_quad_result(mesh, result, false, false), "");
+    const Dual dual = build_dual(triangles);
+    const HugeVector<Cost> costs = scale_costs(dual_edge_quality(triangles, dual));
+    std::vector<std::array<std::uint32_t, 2>> edges(dual.graph.edge_count());
+    for (EdgeId e = 0; e < edges.size(); ++e) edges[e] = dual.graph.endpoints(e);
+    const auto lemon = testing::lemon_min_cost_perfect(dual.graph.node_count(), edges, costs);
+    ASSERT_TRUE(lemon.has_value());
+    EXPECT_EQ(std::llround(result.stats.objective_total * kDefaultCostScale), *lemon);
+  }
+}
+
+}  // namespace
+}  // namespace petersen

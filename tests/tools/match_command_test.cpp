@@ -1,0 +1,159 @@
+// `petersen match` end to end: files written, the tool run, its output read back and checked
+// against the input edges (each written line an input edge, no node twice, the right size).
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "peers.hpp"
+#include "petersen/graph/generators.hpp"
+
+namespace petersen {
+namespace {
+
+namespace fs = std::filesystem;
+
+class MatchCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("petersen-match-" + std::to_string(::getpid()) + "-" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+  // Runs the tool; its exit code, with stderr in err_.
+  int run(const std::string& arguments) {
+    const std::string command = std::string(PETERSEN_BINARY) + " match " + arguments + " >" +
+                                path("stdout") + " 2>" + path("stderr");
+    const int status = std::system(command.c_str());
+    err_ = read(path("stderr"));
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+  static std::string read(const std::string& file) {
+    std::ifstream in(file);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+  static void write(const std::string& file, const std::string& text) {
+    std::ofstream(file) << text;
+  }
+
+  fs::path dir_;
+  std::string err_;
+};
+
+// The size of the matching in `output` (lines "u v" in ids from first_id), or -1 when a line is
+// not an edge of `edges` (counted with multiplicity) or a node is matched twice.
+long long read_back(const std::string& output, std::uint32_t node_count,
+                    const testing::EdgeList& edges, std::uint32_t first_id) {
+  using Pair = std::pair<long long, long long>;
+  std::vector<Pair> input, written;
+  for (auto [a, b] : edges) input.push_back({std::min(a, b), std::max(a, b)});
+  std::vector<char> matched(node_count, 0);
+  std::istringstream in(output);
+  long long u = 0, v = 0;
+  while (in >> u >> v) {
+    u -= first_id;
+    v -= first_id;
+    if (u < 0 || v < 0 || u >= node_count || v >= node_count || matched[u] || matched[v]) {
+      return -1;
+    }
+    matched[u] = matched[v] = 1;
+    written.push_back({std::min(u, v), std::max(u, v)});
+  }
+  if (!in.eof()) return -1;
+  // Every written edge is an input edge, as many times as the input has it at most.
+  std::sort(input.begin(), input.end());
+  std::sort(written.begin(), written.end());
+  if (!std::includes(input.begin(), input.end(), written.begin(), written.end())) return -1;
+  return static_cast<long long>(written.size());
+}
+
+std::string dimacs(std::uint32_t n, const testing::EdgeList& edges) {
+  std::string text = "c written by the test\np edge " + std::to_string(n) + " " +
+                     std::to_string(edges.size()) + "\n";
+  for (auto [a, b] : edges)
+    text += "e " + std::to_string(a + 1) + " " + std::to_string(b + 1) + "\n";
+  return text;
+}
+
+std::string edge_list(std::uint32_t n, const testing::EdgeList& edges) {
+  std::string text = std::to_string(n) + " " + std::to_string(edges.size()) + "\n";
+  for (auto [a, b] : edges) text += std::to_string(a) + " " + std::to_string(b) + "\n";
+  return text;
+}
+
+TEST_F(MatchCommand, PetersenGraphInDimacsByEveryAlgorithm) {
+  const CubicGraph g = petersen_graph();
+  const testing::EdgeList edges = testing::edge_list(g);
+  write(path("petersen.dimacs"), dimacs(10, edges));
+  for (const char* algorithm : {"sg", "ps", "ds", "gw", "frink", "lemon"}) {
+    SCOPED_TRACE(algorithm);
+    ASSERT_EQ(run(path("petersen.dimacs") + " " + path("m.txt") + " --algorithm " + algorithm +
+                  " --stats-json " + path("stats.json")),
+              0)
+        << err_;
+    EXPECT_EQ(read_back(read(path("m.txt")), 10, edges, 1), 5);
+    const std::string stats = read(path("stats.json"));
+    EXPECT_NE(stats.find("\"cubic_bridgeless\": true"), std::string::npos) << stats;
+    EXPECT_NE(stats.find("\"matched_edges\": 5"), std::string::npos) << stats;
+  }
+  EXPECT_EQ(run(path("petersen.dimacs") + " " + path("m.txt") + " --algorithm lrs"), 105) << err_;
+}
+
+TEST_F(MatchCommand, AMillionNodeRandomCubicBridgelessGraph) {
+  const std::uint32_t n = 1'000'000;
+  const testing::EdgeList edges = testing::edge_list(random_cubic_bridgeless(n, 11));
+  write(path("big.edges"), edge_list(n, edges));
+  ASSERT_EQ(run(path("big.edges") + " " + path("big-matching.txt") + " --require-perfect"), 0)
+      << err_;
+  EXPECT_EQ(read_back(read(path("big-matching.txt")), n, edges, 0), n / 2);
+}
+
+TEST_F(MatchCommand, ANonCubicGraphGetsAMaximumMatchingAndANote) {
+  // A path of five nodes and a triangle: 2 + 1 edges at most, two nodes left.
+  const testing::EdgeList edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 5}};
+  write(path("g.txt"), edge_list(8, edges));
+  ASSERT_EQ(run(path("g.txt") + " " + path("m.txt")), 0) << err_;
+  EXPECT_NE(err_.find("is not cubic and bridgeless (node 0 has degree 1)"), std::string::npos)
+      << err_;
+  EXPECT_EQ(read_back(read(path("m.txt")), 8, edges, 0), testing::boost_matching_size(8, edges));
+
+  // With --require-perfect: exit 3, and an existing OUT is left as it was.
+  write(path("kept.txt"), "untouched\n");
+  EXPECT_EQ(run(path("g.txt") + " " + path("kept.txt") + " --require-perfect"), 3);
+  EXPECT_EQ(read(path("kept.txt")), "untouched\n");
+  // A non-cubic graph that has a perfect matching passes --require-perfect.
+  write(path("path.txt"), "0 1\n1 2\n2 3\n");
+  ASSERT_EQ(run(path("path.txt") + " " + path("p.txt") + " --require-perfect"), 0) << err_;
+  EXPECT_EQ(read_back(read(path("p.txt")), 4, {{0, 1}, {1, 2}, {2, 3}}, 0), 2);
+}
+
+TEST_F(MatchCommand, BadFilesAreRefusedWithTheirLine) {
+  write(path("bad.txt"), "0 1\n1 x\n");
+  write(path("out.txt"), "untouched\n");
+  EXPECT_EQ(run(path("bad.txt") + " " + path("out.txt")), 1);
+  EXPECT_NE(err_.find("bad.txt:2: bad node id 'x'"), std::string::npos) << err_;
+  EXPECT_EQ(read(path("out.txt")), "untouched\n");
+  write(path("g.graph"), "0 1\n");
+  EXPECT_EQ(run(path("g.graph") + " " + path("out.txt")), 1);
+  EXPECT_NE(err_.find("unknown graph format"), std::string::npos) << err_;
+  EXPECT_EQ(run(path("g.graph") + " " + path("out.txt") + " --format edges"), 0) << err_;
+}
+
+}  // namespace
+}  // namespace petersen

@@ -1,0 +1,16 @@
+#pragma once
+// --keep-edges FILE: the edges a user wants kept (never removed by a pair), as vertex pairs.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "petersen/dualize/mesh.hpp"
+
+namespace petersen::cli {
+
+/// Reads "a b" per line (0-based vertex ids; blank lines and '#' comments skipped). Throws
+/// MeshError naming the file and line for anything else.
+std::vector<std::array<VertexId, 2>> read_keep_edges(const std::string& path);
+
+}  // namespace petersen::cli

@@ -1,0 +1,173 @@
+#include "match_command.hpp"
+
+#include <chrono>
+#include <cinttypes>
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+
+#include "file_bytes.hpp"
+#include "json_text.hpp"
+#include "petersen/graph_io/read_graph.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/any_graph.hpp"
+
+namespace petersen::cli {
+
+namespace {
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The matched edges as "u v" lines in the input's ids, in the order of the input's edges.
+std::string matched_edge_lines(const GraphFile& graph, const AnyGraphMatching& matched) {
+  std::string text;
+  text.reserve(std::size_t{matched.size} * 16);
+  char line[32];
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    const EdgeId e = matched.mate_edge[v];
+    if (e == kNoEdge || graph.edges[e][0] != v) continue;  // once per edge, at its first end
+    const int n = std::snprintf(line, sizeof line, "%" PRIu64 " %" PRIu64 "\n",
+                                std::uint64_t{graph.edges[e][0]} + graph.first_id,
+                                std::uint64_t{graph.edges[e][1]} + graph.first_id);
+    text.append(line, static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
+struct MatchReport {
+  const MatchArgs& args;
+  GraphFormat format;
+  const GraphFile& graph;
+  const AnyGraphMatching& matched;
+  double read_seconds, match_seconds, write_seconds, total_seconds;
+  bool written;
+};
+
+void write_stats_json(const MatchReport& r) {
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(r.args.stats_json.c_str(), "w"),
+                                                       &std::fclose);
+  if (!file) throw std::runtime_error("cannot write " + r.args.stats_json);
+  const Stats& s = r.matched.stats;
+  std::FILE* out = file.get();
+  std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"format\": %s,\n",
+               json_string(r.args.input).c_str(), json_string(r.args.output).c_str(),
+               json_string(std::string(to_string(r.format))).c_str());
+  std::fprintf(out, "  \"algorithm\": %s,\n  \"augment\": %s,\n",
+               json_string(r.matched.cubic_bridgeless ? r.args.algorithm : "augment").c_str(),
+               json_string(r.args.augment).c_str());
+  std::fprintf(out,
+               "  \"nodes\": %" PRIu32
+               ",\n  \"edges\": %zu,\n  \"cubic_bridgeless\": %s,\n"
+               "  \"note\": %s,\n  \"perfect\": %s,\n  \"matched_edges\": %" PRIu32
+               ",\n  \"unmatched_nodes\": %" PRIu64 ",\n  \"written\": %s,\n",
+               r.graph.node_count, r.graph.edges.size(),
+               r.matched.cubic_bridgeless ? "true" : "false", json_string(r.matched.note).c_str(),
+               r.matched.perfect ? "true" : "false", r.matched.size,
+               std::uint64_t{r.graph.node_count} - 2 * std::uint64_t{r.matched.size},
+               r.written ? "true" : "false");
+  std::fprintf(out,
+               "  \"augmenting_paths\": %" PRIu64 ",\n  \"blossoms\": %" PRIu64
+               ",\n  \"reductions\": %" PRIu64 ",\n",
+               s.augmenting_paths, s.blossoms, s.reductions);
+  std::fprintf(out,
+               "  \"read_seconds\": %.6f,\n  \"validate_seconds\": %.6f,\n  \"initial_seconds\": "
+               "%.6f,\n  \"augment_seconds\": %.6f,\n  \"match_seconds\": %.6f,\n  "
+               "\"write_seconds\": %.6f,\n  \"total_seconds\": %.6f\n}\n",
+               r.read_seconds, s.validate_seconds, s.initial_seconds, s.augment_seconds,
+               r.match_seconds, r.write_seconds, r.total_seconds);
+}
+
+}  // namespace
+
+CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
+  CLI::App* cmd = app.add_subcommand(
+      "match",
+      "A perfect matching of a cubic bridgeless graph file (a maximum matching of any other)");
+  cmd->add_option("IN", args.input,
+                  "graph: DIMACS (.dimacs, .col: 'p edge N M', 'e U V', 1-based) or an edge "
+                  "list (.txt, .edges: 'U V' per line, 0-based, optional 'N M' first line), "
+                  "optionally .gz")
+      ->required();
+  cmd->add_option("OUT", args.output,
+                  "matched edges to write, one 'U V' line each, in the input's ids")
+      ->required();
+  cmd->add_option("--format", args.format, "dimacs or edges (default: from IN's extension)");
+  cmd->add_option("--algorithm", args.algorithm,
+                  "for a cubic bridgeless graph: sg, ps, ds, gw, frink or lemon")
+      ->capture_default_str();
+  cmd->add_option("--augment", args.augment, "augmenting-path variant: local or faithful")
+      ->capture_default_str();
+  cmd->add_option("--seed", args.seed, "seed of the random orders (sg, ps)")->capture_default_str();
+  cmd->add_option("--stats-json", args.stats_json,
+                  "also write the summary as one JSON object to this file");
+  cmd->add_flag("--require-perfect", args.require_perfect,
+                "exit with code 3, writing nothing, when the graph has no perfect matching");
+  return cmd;
+}
+
+int run_match(const MatchArgs& args) {
+  const auto start = std::chrono::steady_clock::now();
+  std::optional<GraphFormat> format;
+  if (!args.format.empty()) {
+    format = parse_graph_format(args.format);
+    if (!format) throw CLI::ValidationError("--format", "unknown graph format " + args.format);
+  }
+  const std::optional<Algorithm> algorithm = parse_algorithm(args.algorithm);
+  if (!algorithm || *algorithm == Algorithm::lrs) {
+    throw CLI::ValidationError("--algorithm",
+                               "unknown graph algorithm " + args.algorithm +
+                                   (algorithm ? " (lrs works on meshes: petersen quad)" : ""));
+  }
+  const std::optional<Augment> augment = parse_augment(args.augment);
+  if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
+
+  const GraphFile graph = read_graph(args.input, format);
+  const double read_seconds = seconds_since(start);
+  auto clock = std::chrono::steady_clock::now();
+  // match_any_graph verifies every answer (the perfect one, or the maximum one by its
+  // Tutte-Berge witness) before returning it.
+  const AnyGraphMatching matched = match_any_graph(graph.node_count, graph.edges,
+                                                   {.algorithm = *algorithm,
+                                                    .augment = *augment,
+                                                    .seed = args.seed,
+                                                    .peer = &lemon_peer::maximum_matching});
+  const double match_seconds = seconds_since(clock);
+  const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{matched.size};
+
+  if (!matched.cubic_bridgeless) {
+    std::fprintf(stderr,
+                 "petersen: note: %s is not cubic and bridgeless (%s): a maximum matching "
+                 "instead, %" PRIu32 " edges, %" PRIu64 " nodes unmatched\n",
+                 args.input.c_str(), matched.note.c_str(), matched.size, unmatched);
+  }
+  const bool write = matched.perfect || !args.require_perfect;
+  clock = std::chrono::steady_clock::now();
+  if (write) write_file_bytes(args.output, matched_edge_lines(graph, matched));
+  const double write_seconds = seconds_since(clock);
+  const double total_seconds = seconds_since(start);
+
+  std::printf("input       %s (%s, %" PRIu32 " nodes, %zu edges)\n", args.input.c_str(),
+              std::string(to_string(format ? *format : graph_format_of(args.input))).c_str(),
+              graph.node_count, graph.edges.size());
+  std::printf("matching    %s: %s, %" PRIu32 " edges, %" PRIu64 " nodes unmatched (%.4f s)\n",
+              matched.cubic_bridgeless ? args.algorithm.c_str() : "augmenting paths",
+              matched.perfect ? "perfect" : "maximum", matched.size, unmatched, match_seconds);
+  if (write) {
+    std::printf("written     %s (%.4f s)\n", args.output.c_str(), write_seconds);
+  }
+  std::printf("total       %.4f s\n", total_seconds);
+  if (!args.stats_json.empty()) {
+    write_stats_json({args, format ? *format : graph_format_of(args.input), graph, matched,
+                      read_seconds, match_seconds, write_seconds, total_seconds, write});
+  }
+  if (!write) {
+    std::fprintf(stderr, "petersen: %s has no perfect matching; nothing written to %s\n",
+                 args.input.c_str(), args.output.c_str());
+    return kNoPerfectMatching;
+  }
+  return 0;
+}
+
+}  // namespace petersen::cli
