@@ -9,6 +9,7 @@
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "result_check.hpp"
 
 namespace petersen {
@@ -193,9 +194,8 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
 
 // The generators' mixed meshes: closed or open, polygons, fins, pinches, flips, components.
 RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
+  const PolygonMesh mesh = *testing::mixed_meshes();
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
-  const auto size = *rc::gen::inRange<std::uint32_t>(4, 400);
-  const PolygonMesh mesh = random_mixed_mesh(seed, size);
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
   const bool all_quad = *rc::gen::arbitrary<bool>();

@@ -20,6 +20,7 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/mesh.hpp"
+#include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/generators.hpp"
@@ -90,6 +91,24 @@ inline rc::Gen<TriangleMesh> closed_triangulations(std::uint32_t genus) {
 inline rc::Gen<TriangleMesh> closed_triangulations_up_to(std::uint32_t max_genus) {
   return rc::gen::mapcat(rc::gen::inRange<std::uint32_t>(0, max_genus + 1),
                          [](std::uint32_t genus) { return closed_triangulations(genus); });
+}
+
+inline void showValue(const PolygonMesh& mesh, std::ostream& os) {
+  os << "polygon mesh with " << mesh.positions.size() << " vertices, " << mesh.face_count()
+     << " faces";
+}
+
+/// Every kind of mesh a user has (petersen::random_mixed_mesh): closed surfaces of genus 0 to 3,
+/// Klein bottles, projective planes and open grids, then holes, polygons (quads, pentagons),
+/// non-manifold fins, pinched vertices, flipped faces and several components, each at random;
+/// from a few faces to about 40·size. Shrinks towards small meshes.
+inline rc::Gen<PolygonMesh> mixed_meshes() {
+  return rc::gen::withSize([](int size) {
+    return rc::gen::apply(
+        [](std::uint64_t seed, std::uint32_t faces) { return random_mixed_mesh(seed, faces); },
+        rc::gen::arbitrary<std::uint64_t>(),
+        rc::gen::inRange<std::uint32_t>(4, 5 + 40 * static_cast<std::uint32_t>(size)));
+  });
 }
 
 /// Cubic bridgeless multigraphs from every family petersen is tested on: random multigraphs,
