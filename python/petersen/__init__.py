@@ -94,6 +94,7 @@ def quadrangulate(
     all_quad: bool = False,
     seed: int = 1,
     augment: str = "local",
+    objective: str = "pairs",
     sharp_angle: Optional[float] = None,
     keep_edges: Optional[npt.ArrayLike] = None,
 ) -> QuadResult:
@@ -106,16 +107,18 @@ def quadrangulate(
     rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that are not
     triangles are kept. ``all_quad`` turns the triangles left into quads by splitting edges
     (adding vertices). ``augment`` is "local" or "faithful", ``seed`` seeds sg and ps.
+    ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
+    (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
     (e, 2) array of vertex pairs, names edges no quad may remove. Same options, same seed: same
     answer as ``petersen quad``. The GIL is released while the library works.
 
     Raises ``ValueError`` with the library's message for a bad mesh (a vertex index out of range,
     a face of fewer than three corners, a leftover triangle ``all_quad`` cannot reach), an
-    unknown algorithm or augment; ``TypeError`` for faces that are not integers.
+    unknown algorithm, augment or objective; ``TypeError`` for faces that are not integers.
     """
     r = _petersen.quadrangulate(
-        V, F, algorithm, augment, int(seed), bool(all_quad),
+        V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         None if sharp_angle is None else float(sharp_angle), keep_edges)
     return QuadResult(**r)
 

@@ -11,6 +11,7 @@ def quadrangulate(
     augment: str,
     seed: int,
     all_quad: bool,
+    objective: str,
     sharp_angle: Optional[float],
     keep_edges: Optional[npt.ArrayLike],
 ) -> Dict[str, Any]: ...

@@ -15,6 +15,7 @@
 #include "arrays.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
@@ -31,6 +32,11 @@ Algorithm algorithm_of(const std::string& name) {
 Augment augment_of(const std::string& name) {
   if (auto a = parse_augment(name)) return *a;
   throw py::value_error("unknown augment '" + name + "': local or faithful");
+}
+
+Objective objective_of(const std::string& name) {
+  if (auto o = parse_objective(name)) return *o;
+  throw py::value_error("unknown objective '" + name + "': pairs or quality");
 }
 
 PolygonMesh mesh_from(const py::handle& V, const py::handle& F) {
@@ -61,7 +67,8 @@ py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
 
 py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::string& algorithm,
                           const std::string& augment, std::uint64_t seed, bool all_quad,
-                          std::optional<double> sharp_angle, const py::handle& keep_edges) {
+                          const std::string& objective, std::optional<double> sharp_angle,
+                          const py::handle& keep_edges) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -79,6 +86,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.augment = augment_of(augment);
   options.seed = seed;
   options.all_quad = all_quad;
+  options.objective = objective_of(objective);
+  options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
   options.cuts.user_edges = kept_edges;
   const PolygonMesh mesh = mesh_from(V, F);
@@ -159,8 +168,11 @@ void write_mesh_py(const std::string& path, const py::handle& V, const py::handl
 py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
                                               const std::string& algorithm,
                                               const std::string& augment, std::uint64_t seed) {
-  const Options options{
-      .algorithm = algorithm_of(algorithm), .augment = augment_of(augment), .seed = seed};
+  Options options;
+  options.algorithm = algorithm_of(algorithm);
+  options.augment = augment_of(augment);
+  options.seed = seed;
+  options.peer = &lemon_peer::maximum_matching;
   const std::vector<std::array<std::int64_t, 2>> pairs = pairs_from(edges, "edges");
   std::vector<std::array<NodeId, 2>> list(pairs.size());
   for (std::size_t e = 0; e < list.size(); ++e) {
@@ -209,8 +221,8 @@ PYBIND11_MODULE(_petersen, m) {
     }
   });
   m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
-        py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("sharp_angle"),
-        py::arg("keep_edges"));
+        py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
+        py::arg("sharp_angle"), py::arg("keep_edges"));
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),

@@ -11,20 +11,24 @@ import petersen
 TIMES = {"input", "output", "load_seconds", "write_seconds"}
 
 
-@pytest.mark.parametrize("algorithm,all_quad", [("ps", False), ("sg", False), ("ds", False),
-                                                ("gw", False), ("lrs", False), ("ps", True)])
-def test_same_stats_and_faces_as_the_cli(tmp_path, cli, shared_meshes, algorithm, all_quad):
+@pytest.mark.parametrize("algorithm,objective,all_quad", [
+    ("ps", "pairs", False), ("sg", "pairs", False), ("ds", "pairs", False), ("gw", "pairs", False),
+    ("lrs", "pairs", False), ("lemon", "pairs", False), ("ps", "pairs", True),
+    ("ps", "quality", False)])
+def test_same_stats_and_faces_as_the_cli(tmp_path, cli, shared_meshes, algorithm, objective,
+                                         all_quad):
     mesh_path = shared_meshes / "bunny.off.gz"
     if not mesh_path.exists():
         pytest.skip(f"{mesh_path} is absent")
     out, stats_path = tmp_path / "q.obj", tmp_path / "stats.json"
     args = [cli, "quad", str(mesh_path), str(out), "--algorithm", algorithm, "--seed", "4",
-            "--stats-json", str(stats_path)] + (["--all-quad"] if all_quad else [])
+            "--objective", objective, "--stats-json", str(stats_path)] + (["--all-quad"] if all_quad else [])
     subprocess.run(args, check=True, capture_output=True)
     cli_stats = json.loads(stats_path.read_text())
 
     mesh = petersen.read_mesh(mesh_path)
-    r = petersen.quadrangulate(mesh.V, mesh.F, algorithm=algorithm, seed=4, all_quad=all_quad)
+    r = petersen.quadrangulate(mesh.V, mesh.F, algorithm=algorithm, seed=4, objective=objective,
+                               all_quad=all_quad)
     assert set(r.stats) == set(cli_stats) - TIMES
     for key, value in cli_stats.items():
         if key in TIMES or key.endswith("_seconds"):

@@ -38,6 +38,22 @@ def test_an_open_grid_with_a_quad_and_a_pentagon(algorithm):
     assert r.stats["pairs"] == 20
 
 
+def test_the_quality_objective_is_certified_and_no_worse():
+    V, F = torus(16, 12)
+    V = V + np.random.default_rng(5).normal(scale=0.05, size=V.shape)  # irregular quads
+    pairs = petersen.quadrangulate(V, F, algorithm="ps")
+    best = petersen.quadrangulate(V, F, objective="quality")
+    check_result(V, as_faces(F), best)
+    assert best.stats["optimality_certified"] is True
+    assert best.stats["algorithm"] == "min-cost" and best.stats["triangles_left"] == 0
+    # The minimum total: no more than ps's total, summed here from the quads themselves.
+    total = petersen.quad_quality(best.V, best.quads).sum()
+    assert total <= petersen.quad_quality(pairs.V, pairs.quads).sum() + 1e-6
+    assert total == pytest.approx(best.stats["objective_total"], rel=1e-3)
+    with pytest.raises(ValueError, match="unknown objective"):
+        petersen.quadrangulate(V, F, objective="beauty")
+
+
 def test_all_quad_splits_an_odd_open_mesh():
     V, F = open_grid(3, 3)
     F = F[:-1]  # 17 triangles: one must be left, then split
