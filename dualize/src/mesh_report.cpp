@@ -112,7 +112,11 @@ std::string describe(const MeshReport& r) {
                      std::to_string(r.edges) + ", faces " + std::to_string(r.faces) + "\n";
   text += "faces by corners:";
   for (const auto& [arity, count] : r.faces_by_arity) {
-    text += " " + std::to_string(arity) + ": " + std::to_string(count);
+    // Appended piece by piece: g++ 12 warns (-Wrestrict, a false positive) on " " + string&&.
+    text += ' ';
+    text += std::to_string(arity);
+    text += ": ";
+    text += std::to_string(count);
   }
   text += "\ncomponents " + std::to_string(r.components) + ", Euler characteristic " +
           std::to_string(r.euler_characteristic);
