@@ -4,6 +4,7 @@
 #include <chrono>
 #include <stdexcept>
 
+#include "lap_clock.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/lrs/lrs.hpp"
@@ -15,19 +16,6 @@
 namespace petersen::quad_detail {
 
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return seconds;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 void add_run(Stats& total, const Stats& run) {
   total.initial_seconds += run.initial_seconds;
@@ -225,7 +213,7 @@ bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<
 // exact minimum-cost perfect matching; verified, and its certificate checked.
 void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
                  std::span<const Cost> costs, const QuadOptions& options, Algorithm algorithm,
-                 TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
+                 TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
   Matching matching;
   std::string name(to_string(algorithm));
   if (costs.empty()) {
@@ -296,7 +284,7 @@ HugeVector<Cost> pair_costs(const PairableGraph& graph, const PolygonMesh& mesh)
 
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
                                const QuadOptions& options, QuadStats& stats) {
-  Stopwatch clock;
+  LapClock clock;
   TrianglePairing pairing;
   const std::uint32_t n = graph.node_count;
   pairing.partner.assign(n, kNoNode);

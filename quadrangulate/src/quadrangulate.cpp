@@ -6,6 +6,7 @@
 #include <string>
 
 #include "all_quad.hpp"
+#include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
@@ -13,19 +14,6 @@
 namespace petersen {
 
 namespace {
-
-class Stopwatch {
- public:
-  double lap() {
-    const auto now = std::chrono::steady_clock::now();
-    const double seconds = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return seconds;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // The quad of triangles t1 and t2 across their shared edge, in t1's orientation: t1 = (a, b, c)
 // and t2 holding a, b and d give (a, d, b, c), whichever way t2 runs.
@@ -73,7 +61,7 @@ std::optional<Objective> parse_objective(std::string_view name) {
 }
 
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
-  Stopwatch total, clock;
+  quad_detail::LapClock total, clock;
   QuadResult result;
   QuadStats& stats = result.stats;
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
