@@ -133,7 +133,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
           }
           continue;
         }
-        if (reached_by[f] != kStart && half.twin[reached_by[f]] == h) continue;
+        if (reached_by[f] == h) continue;  // the side the search came in by
         if (half.twin[h] == kBoundary) {
           target = f;
           exit = h;
