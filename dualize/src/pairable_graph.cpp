@@ -93,10 +93,6 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     user_edges.push_back(std::uint64_t{std::min(a, b)} << 32 | std::max(a, b));
   }
   std::sort(user_edges.begin(), user_edges.end());
-  // The fold is the angle between the normals, cos compared against the threshold's.
-  const double cos_sharp = cuts.sharp_angle_degrees
-                               ? std::cos(*cuts.sharp_angle_degrees * std::numbers::pi / 180.0)
-                               : -2.0;
   const bool triangles_only = mesh.all_triangles();
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   const std::uint32_t halfedge_count = static_cast<std::uint32_t>(mesh.corners.size());
@@ -157,7 +153,11 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       const double norms = std::sqrt((n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) *
                                      (n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
       // A zero-area triangle has no normal: its fold is unknown, so the edge is cut.
-      if (!(norms > 0) || dot < cos_sharp * norms) return cut(CutCause::sharp);
+      if (!(norms > 0)) return cut(CutCause::sharp);
+      // The fold in degrees, compared as the option says ("more than DEG"): comparing cosines
+      // instead cut a cube's exact 90-degree edges at DEG = 90, since cos(90°) is 6e-17, not 0.
+      const double fold = std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+      if (fold > *cuts.sharp_angle_degrees) return cut(CutCause::sharp);
     }
     // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
     // f2 runs along the edge the same way, else the next one.

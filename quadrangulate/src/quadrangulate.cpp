@@ -92,7 +92,8 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
 
   // Output faces in input order: a pair's quad where its first triangle was.
   HugeVector<NodeId> face_node;
-  if (!graph.node_face.empty()) {
+  // Decided by the mesh: node_face is empty both when every face is a triangle and when none is.
+  if (!mesh.all_triangles()) {
     face_node.assign(face_count, kNoNode);
     for (NodeId v = 0; v < graph.node_count; ++v) face_node[graph.node_face[v]] = v;
   }
