@@ -13,8 +13,8 @@ std::uint32_t boost_matching_size(std::uint32_t node_count,
   Graph graph(node_count);
   for (auto [a, b] : edges) boost::add_edge(a, b, graph);
   std::vector<boost::graph_traits<Graph>::vertex_descriptor> mate(node_count);
-  boost::edmonds_maximum_cardinality_matching(graph, &mate[0]);
-  return static_cast<std::uint32_t>(boost::matching_size(graph, &mate[0]));
+  boost::edmonds_maximum_cardinality_matching(graph, mate.data());
+  return static_cast<std::uint32_t>(boost::matching_size(graph, mate.data()));
 }
 
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
