@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "petersen/dualize/mesh_attributes.hpp"
 #include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
@@ -42,6 +43,9 @@ struct PolygonMesh {
   Positions positions;
   HugeVector<VertexId> corners;
   HugeVector<std::uint32_t> face_start;  ///< empty (all triangles), or face_count() + 1 offsets
+  /// Texture coordinates, normals, materials, groups and other properties, where the mesh has
+  /// them (see MeshAttributes); add_face does not touch them.
+  MeshAttributes attributes;
 
   bool all_triangles() const { return face_start.empty(); }
   std::size_t face_count() const {
@@ -58,6 +62,10 @@ struct PolygonMesh {
   /// at the first face that is not a triangle. Throws MeshError past 2^32 - 1 corners.
   void add_face(std::span<const VertexId> face_corners);
 };
+
+/// Throws MeshError naming the first attribute array whose size does not match the mesh (one
+/// entry per corner, face or vertex) or whose index is out of range. O(corners + faces).
+void check_attributes(const PolygonMesh& mesh);
 
 /// The triangle mesh as a polygon mesh (a copy of its corners), and back: to_triangle_mesh throws
 /// MeshError naming the first face that is not a triangle. O(F).
