@@ -11,9 +11,9 @@ namespace petersen {
 
 std::string_view to_string(CutCause cause) {
   constexpr std::string_view kNames[kCutCauses] = {
-      "boundary", "non_manifold", "polygon",   "degenerate",   "duplicate",
-      "user",     "sharp",        "uv_seam",   "normal_seam",  "material",
-      "group",    "object",       "smoothing", "face_property"};
+      "boundary", "non_manifold", "polygon",   "degenerate",    "duplicate",
+      "user",     "sharp",        "uv_seam",   "normal_seam",   "material",
+      "group",    "object",       "smoothing", "face_property", "shape"};
   return kNames[static_cast<int>(cause)];
 }
 

@@ -29,8 +29,11 @@ enum class CutCause : std::uint8_t {
   object,         ///< ... different objects
   smoothing,      ///< ... different smoothing groups
   face_property,  ///< ... different values of another per-face property
+  /// The quad of its two triangles deviates from right angles by more than the caller allows
+  /// (QuadOptions::max_corner_deviation; cut by quadrangulate, not build_pairable_graph).
+  shape,
 };
-inline constexpr int kCutCauses = 14;
+inline constexpr int kCutCauses = 15;
 std::string_view to_string(CutCause cause);
 
 /// Mesh edges that are cuts, by cause (index: CutCause).
