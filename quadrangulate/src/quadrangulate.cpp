@@ -63,7 +63,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     degrees = pairable_edge_quality(graph, mesh);
   }
   if (options.max_corner_deviation) {
-    quad_detail::cut_by_shape(graph, degrees, *options.max_corner_deviation);
+    quad_detail::cut_by_shape(graph, mesh, degrees, *options.max_corner_deviation);
   }
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;

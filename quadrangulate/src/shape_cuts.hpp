@@ -6,9 +6,11 @@
 
 namespace petersen::quad_detail {
 
-/// Removes from `graph` every edge whose cost in `degrees` (pairable_edge_quality) is above
-/// `max_degrees`, counting each as a CutCause::shape cut; the edges left keep their relative
-/// order and `degrees` follows them. The graph is no longer cubic when any edge goes. O(F).
-void cut_by_shape(PairableGraph& graph, HugeVector<double>& degrees, double max_degrees);
+/// Removes from `graph` (the pairable graph of `mesh`) every edge whose cost in `degrees`
+/// (pairable_edge_quality) is above `max_degrees`, counting each as a CutCause::shape cut and no
+/// longer as an inconsistent edge; the edges left keep their relative order and `degrees` follows
+/// them. The graph is no longer cubic when any edge goes. O(F).
+void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<double>& degrees,
+                  double max_degrees);
 
 }  // namespace petersen::quad_detail

@@ -63,6 +63,19 @@ TEST(Threshold, CutsPairsOverItAndLeavesTheirTriangles) {
   EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = std::nan("")}), std::invalid_argument);
 }
 
+// The rhombus's second triangle reversed: its edges to the square and to the other half are
+// pairable but inconsistent; those the threshold cuts are counted as cuts only.
+TEST(Threshold, InconsistentEdgesCountOnlyThePairableOnes) {
+  PolygonMesh mesh = square_and_rhombus();
+  std::swap(mesh.corners[9], mesh.corners[11]);  // (1, 5, 2) -> (2, 5, 1)
+  for (auto [degrees, inconsistent] : {std::pair{45.0, 1u}, {20.0, 0u}, {200.0, 2u}}) {
+    SCOPED_TRACE(degrees);
+    const QuadResult result = quadrangulate(mesh, {.max_corner_deviation = degrees});
+    EXPECT_EQ(result.stats.inconsistent_edges, inconsistent);
+    EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, degrees), "");
+  }
+}
+
 TEST(Threshold, AllQuadStillSplitsTheTrianglesLeft) {
   const PolygonMesh mesh = square_and_rhombus();
   const QuadResult result = quadrangulate(
