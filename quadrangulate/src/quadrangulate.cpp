@@ -6,6 +6,8 @@
 #include <string>
 
 #include "all_quad.hpp"
+#include "attribute_cuts.hpp"
+#include "carry_attributes.hpp"
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
@@ -67,7 +69,9 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
+  quad_detail::AttributeCutIds cut_ids;
+  PairableGraph graph =
+      build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, cut_ids));
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
@@ -147,6 +151,9 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   stats.objective_total = options.objective == Objective::quality
                               ? double(pairing.objective_units) / kDefaultCostScale
                               : total_cost;
+  if (!mesh.attributes.empty()) {
+    out.attributes = quad_detail::attributes_of_pairs(mesh, out, result.sources);
+  }
   stats.quads_seconds = clock.lap();
 
   if (options.all_quad && stats.triangles_left > 0) {

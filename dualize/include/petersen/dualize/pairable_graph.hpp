@@ -32,6 +32,8 @@ enum class CutCause : std::uint8_t {
 };
 inline constexpr int kCutCauses = 14;
 std::string_view to_string(CutCause cause);
+/// The cause named as to_string names it ("uv_seam", "material", ...), or nothing.
+std::optional<CutCause> parse_cut_cause(std::string_view name);
 
 /// Mesh edges that are cuts, by cause (index: CutCause).
 struct CutCounts {
