@@ -66,6 +66,10 @@ grep -q "^4 0 1 2 3$" "$work/same.off" || { failed=$((failed + 1)); echo "FAILED
 
 refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "$work/x.obj"
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
+check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \
+  --cross uv_seam,material,face_property
+refuses "--cross a cut of the structure" "not a cut of the mesh's attributes: boundary" \
+  "$petersen" quad "$work/open.off" "$work/x.off" --cross uv_seam,boundary
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 
