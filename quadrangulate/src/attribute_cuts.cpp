@@ -96,8 +96,8 @@ CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
   }
   CutOptions cuts = options.cuts;
   const MeshAttributes& a = mesh.attributes;
-  if (!a.has_corner_attributes() && !a.has_face_attributes()) return cuts;
-  check_attributes(mesh);
+  if (a.empty()) return cuts;
+  check_attributes(mesh);  // here once for all that reads the attributes, the carrying too
   auto wanted = [&](std::span<const std::uint32_t> given, std::size_t have, CutCause cause) {
     return given.empty() && have > 0 && !crossed[static_cast<int>(cause)];
   };

@@ -20,7 +20,7 @@ struct AttributeCutIds {
 /// coordinates or normals, equal names and equal property rows get one id (-0 equals +0). Checks
 /// the attributes first (check_attributes, MeshError) and options.cross (std::invalid_argument).
 /// O(C + F log F + T log T) for C corners, F faces, T texture coordinates and normals; nothing
-/// when the mesh has no corner or face attributes.
+/// when the mesh has no attributes.
 CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
                           AttributeCutIds& ids);
 

@@ -281,6 +281,8 @@ TEST(Quadrangulate, AllQuadInterpolatesAttributes) {
   EXPECT_EQ(b.face_smoothing[0], 3u);
   EXPECT_EQ(check_quad_result(mesh, result, true, false), "");
   EXPECT_EQ(check_attributes_kept(mesh, result), "");
+  a.vertex_properties[0].values.pop_back();  // a column one short: refused, not read past
+  EXPECT_THROW(quadrangulate(mesh, {.all_quad = true}), MeshError);
 }
 
 // Random attributes for `mesh`, drawn inside a property; each kind present or not at random.
