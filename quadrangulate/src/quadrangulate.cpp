@@ -69,9 +69,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  quad_detail::AttributeCutIds cut_ids;
-  PairableGraph graph =
-      build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, cut_ids));
+  PairableGraph graph = [&] {
+    quad_detail::AttributeCutIds ids;  // freed once the graph has the cuts
+    return build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids));
+  }();
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
