@@ -92,6 +92,7 @@ struct QuadArgs {
   bool all_quad = false;
   std::optional<double> sharp_angle, max_corner_deviation;
   std::string keep_edges;
+  std::vector<std::string> cross;
 };
 
 int quad(const QuadArgs& args) {
@@ -102,6 +103,17 @@ int quad(const QuadArgs& args) {
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
   mesh_format_of(args.output);  // an unknown output format fails before any work
+  std::vector<CutCause> cross;
+  for (const std::string& name : args.cross) {
+    const auto cause = parse_cut_cause(name);
+    if (!cause || !is_attribute_cause(*cause)) {
+      throw CLI::ValidationError("--cross",
+                                 "not a cut of the mesh's attributes: " + name +
+                                     " (uv_seam, normal_seam, material, group, object, smoothing "
+                                     "or face_property)");
+    }
+    cross.push_back(*cause);
+  }
   const auto view = parse_view(args.view);
   if (!args.render.empty() && !is_picture_path(args.render)) {
     throw CLI::ValidationError("--render", "a picture must be .png or .svg: " + args.render);
@@ -115,6 +127,7 @@ int quad(const QuadArgs& args) {
   report.options.all_quad = args.all_quad;
   report.options.objective = *objective;
   report.options.peer = &lemon_peer::maximum_matching;
+  report.options.cross = cross;
   Clock total, clock;
   const PolygonMesh mesh = read_mesh(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
@@ -255,6 +268,12 @@ int main(int argc, char** argv) {
                        "allowed, the cheapest with --objective quality); others stay triangles");
   quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
                        "never pair across these edges: a file of vertex id pairs, one per line");
+  quad_cmd
+      ->add_option("--cross", quad_args.cross,
+                   "let pairs cross these cuts of the mesh's attributes, which are on by default: "
+                   "uv_seam, normal_seam, material, group, object, smoothing, face_property "
+                   "(comma-separated)")
+      ->delimiter(',');
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,

@@ -9,12 +9,23 @@
 
 namespace petersen {
 
+namespace {
+
+constexpr std::string_view kCauseNames[kCutCauses] = {
+    "boundary", "non_manifold", "polygon",   "degenerate",    "duplicate",
+    "user",     "sharp",        "uv_seam",   "normal_seam",   "material",
+    "group",    "object",       "smoothing", "face_property", "shape"};
+
+}  // namespace
+
 std::string_view to_string(CutCause cause) {
-  constexpr std::string_view kNames[kCutCauses] = {
-      "boundary", "non_manifold", "polygon",   "degenerate",    "duplicate",
-      "user",     "sharp",        "uv_seam",   "normal_seam",   "material",
-      "group",    "object",       "smoothing", "face_property", "shape"};
-  return kNames[static_cast<int>(cause)];
+  return kCauseNames[static_cast<int>(cause)];
+}
+
+std::optional<CutCause> parse_cut_cause(std::string_view name) {
+  for (int c = 0; c < kCutCauses; ++c)
+    if (kCauseNames[c] == name) return CutCause(c);
+  return std::nullopt;
 }
 
 namespace {

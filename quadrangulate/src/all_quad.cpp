@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "carry_attributes.hpp"
 #include "edge_groups.hpp"
 
 namespace petersen::quad_detail {
@@ -68,10 +69,15 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
   std::vector<std::uint32_t> reached_by(face_count,
                                         kUnreached);  // the halfedge a search entered by
   std::vector<FaceId> visited, queue;
+  // With attributes: what each new vertex, output corner and output face is made from.
+  const bool carry = !mesh.attributes.empty();
+  std::vector<Blend> new_vertices, corner_from;
+  std::vector<FaceId> face_of;
   auto midpoint_of = [&](std::uint32_t h) {
     const std::array<double, 3> ends[2] = {mesh.positions[half.from(h)],
                                            mesh.positions[half.to(h)]};
     mesh.positions.push_back(average(ends));
+    if (carry) new_vertices.push_back({half.from(h), half.to(h), kNoAttribute, kNoAttribute});
     return static_cast<VertexId>(mesh.positions.size() - 1);
   };
   auto cross = [&](FaceId f, std::uint32_t h, VertexId m) {
@@ -223,9 +229,33 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
   for (FaceId f = 0; f < face_count; ++f) {
     const auto q = mesh.face(f);
     const Crossing& c = crossing[f];
+    // The corners of each piece added below: a corner of f (its position k in f), or the
+    // midpoint of f's side k (k + kSide), or f's centre (kCentre); f's own corner values blended.
+    constexpr std::uint32_t kSide = 8, kCentre = 16;
+    auto made_of = [&](std::initializer_list<std::uint32_t> piece) {
+      if (!carry) return;
+      face_of.push_back(f);
+      const std::uint32_t first = half.first(f), n = mesh.arity(f);
+      for (std::uint32_t k : piece) {
+        if (k == kCentre) {
+          corner_from.push_back({first, first + 1, first + 2, first + 3});
+        } else if (k >= kSide) {
+          corner_from.push_back(
+              {first + k - kSide, first + (k - kSide + 1) % n, kNoAttribute, kNoAttribute});
+        } else {
+          corner_from.push_back({first + k, kNoAttribute, kNoAttribute, kNoAttribute});
+        }
+      }
+    };
     if (c.side[0] == kNoNode) {
       out.add_face(q);
       sources.push_back(result.sources[f]);
+      if (carry) {
+        face_of.push_back(f);
+        for (std::uint32_t k = 0; k < q.size(); ++k) {
+          corner_from.push_back({half.first(f) + k, kNoAttribute, kNoAttribute, kNoAttribute});
+        }
+      }
       continue;
     }
     if (q.size() == 3) {
@@ -233,6 +263,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
       const std::uint32_t i = c.side[0];
       const std::array<VertexId, 4> quad{q[i], c.midpoint[0], q[(i + 1) % 3], q[(i + 2) % 3]};
       out.add_face(quad);
+      made_of({i, kSide + i, (i + 1) % 3, (i + 2) % 3});
       sources.push_back(result.sources[f]);
       ++pieces;
       continue;
@@ -245,10 +276,13 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
       std::swap(mi, mj);
     }
     const VertexId a = q[i], b = q[(i + 1) % 4], cc = q[(i + 2) % 4], d = q[(i + 3) % 4];
+    const std::uint32_t ia = i, ib = (i + 1) % 4, ic = (i + 2) % 4, id = (i + 3) % 4;
     if (j == (i + 2) % 4) {
       const std::array<VertexId, 4> left{a, mi, mj, d}, right{mi, b, cc, mj};
       out.add_face(left);
+      made_of({ia, kSide + ia, kSide + ic, id});
       out.add_face(right);
+      made_of({kSide + ia, ib, ic, kSide + ic});
       sources.push_back(result.sources[f]);
       sources.push_back(result.sources[f]);
       pieces += 2;
@@ -256,14 +290,22 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
       const std::array<double, 3> corners[4] = {mesh.positions[a], mesh.positions[b],
                                                 mesh.positions[cc], mesh.positions[d]};
       mesh.positions.push_back(average(corners));
+      if (carry) new_vertices.push_back({a, b, cc, d});
       const VertexId x = static_cast<VertexId>(mesh.positions.size() - 1);
       const std::array<VertexId, 4> first{a, mi, x, d}, second{mi, b, mj, x}, third{x, mj, cc, d};
       out.add_face(first);
+      made_of({ia, kSide + ia, kCentre, id});
       out.add_face(second);
+      made_of({kSide + ia, ib, kSide + ib, kCentre});
       out.add_face(third);
+      made_of({kCentre, kSide + ib, ic, id});
       for (int k = 0; k < 3; ++k) sources.push_back(result.sources[f]);
       pieces += 3;
     }
+  }
+  if (carry) {
+    out.attributes =
+        derived_attributes(mesh.attributes, input_vertices, face_of, corner_from, new_vertices);
   }
   out.positions = std::move(mesh.positions);
   result.stats.added_vertices = out.positions.size() - input_vertices;

@@ -168,6 +168,15 @@ std::vector<FaceId> input_faces_of(const TriangleMesh& part, std::span<const Nod
 bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<const NodeId> nodes,
                  const QuadOptions& options, std::vector<VertexId>& local, TrianglePairing& pairing,
                  QuadStats& stats) {
+  if (mesh.attributes.has_corner_attributes() || mesh.attributes.has_face_attributes()) {
+    // A triangle lrs's flips make has no input corners or face to take these from.
+    if (stats.lrs_fallback_components++ == 0) {
+      stats.lrs_fallback_reason =
+          "a mesh without texture coordinates, normals or face attributes (its flipped triangles "
+          "would have none)";
+    }
+    return false;
+  }
   ComponentMesh part = component_mesh(mesh, graph, nodes, local);
   LrsResult result;
   try {

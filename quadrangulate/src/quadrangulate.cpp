@@ -7,6 +7,8 @@
 #include <string>
 
 #include "all_quad.hpp"
+#include "attribute_cuts.hpp"
+#include "carry_attributes.hpp"
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
@@ -57,7 +59,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
+  PairableGraph graph = [&] {
+    quad_detail::AttributeCutIds ids;  // freed once the graph has the cuts
+    return build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids));
+  }();
   HugeVector<double> degrees;
   if (options.objective == Objective::quality || options.max_corner_deviation) {
     degrees = pairable_edge_quality(graph, mesh);
@@ -145,6 +150,9 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   stats.objective_total = options.objective == Objective::quality
                               ? double(pairing.objective_units) / kDefaultCostScale
                               : quality.total;
+  if (!mesh.attributes.empty()) {
+    out.attributes = quad_detail::attributes_of_pairs(mesh, out, result.sources);
+  }
   stats.quads_seconds = clock.lap();
 
   if (options.all_quad && stats.triangles_left > 0) {

@@ -15,6 +15,7 @@
 namespace petersen {
 namespace {
 
+using testing::check_attributes_kept;
 using testing::check_quad_result;
 
 constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
@@ -202,6 +203,206 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
       quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts, .peer = kLemon});
   RC_ASSERT(result.stats.maximum_certified);
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
+  RC_LOG() << problem;
+  RC_ASSERT(problem.empty());
+}
+
+// Texture coordinates are compared by value: two entries with the same coordinates make no seam;
+// a seam cuts unless crossed; material names are compared as strings.
+TEST(Quadrangulate, AttributeCutsCompareValues) {
+  PolygonMesh mesh = mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 3}});
+  MeshAttributes& a = mesh.attributes;
+  // Entry 3 repeats entry 0's value: corner 0 of face 1 holds the same coordinates as vertex 0's.
+  a.texcoords = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {0, 1, 0}};
+  a.corner_texcoord = {0, 1, 2, 3, 2, 4};
+  a.material_names = {"steel", "steel"};
+  a.face_material = {0, 1};
+  QuadResult result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_EQ(result.stats.cuts.total(), 4u);  // the four boundary edges
+  EXPECT_EQ(check_quad_result(mesh, result, false, false), "");
+  EXPECT_EQ(check_attributes_kept(mesh, result), "");
+  // The quad (2, 3, 0, 1): its corners' coordinates are those of the triangles' corners.
+  ASSERT_EQ(result.mesh.attributes.corner_texcoord.size(), 4u);
+  const std::array<double, 3> expected[] = {{1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}};
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(result.mesh.attributes.texcoords[result.mesh.attributes.corner_texcoord[k]],
+              expected[k]);
+  }
+  EXPECT_EQ(result.mesh.attributes.material_names[result.mesh.attributes.face_material[0]],
+            "steel");
+
+  a.texcoords[3] = {0.5, 0, 0};  // now a seam at vertex 0
+  result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.pairs, 0u);
+  EXPECT_EQ(result.stats.cuts.by_cause[int(CutCause::uv_seam)], 1u);
+  EXPECT_EQ(check_quad_result(mesh, result, false, false), "");
+  const CutCause cross_uv[] = {CutCause::uv_seam};
+  result = quadrangulate(mesh, {.cross = {CutCause::uv_seam}});
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, cross_uv), "");
+  EXPECT_EQ(check_attributes_kept(mesh, result), "");
+
+  a.texcoords[3] = {0, 0, 0};
+  a.material_names = {"steel", "glass"};
+  result = quadrangulate(mesh);
+  EXPECT_EQ(result.stats.cuts.by_cause[int(CutCause::material)], 1u);
+  EXPECT_EQ(result.stats.triangles_left, 2u);
+  // The caller's own ids win over the attributes'.
+  const std::uint32_t one_material[] = {7, 7};
+  result = quadrangulate(mesh, {.cuts = {.face_material = one_material}});
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_THROW(quadrangulate(mesh, {.cross = {CutCause::boundary}}), std::invalid_argument);
+  a.face_material = {0, 5};  // no such name
+  EXPECT_THROW(quadrangulate(mesh), MeshError);
+}
+
+// all_quad on a lone triangle: a midpoint on its first boundary side, with the side's corner
+// values averaged, its vertex colour rounded, and the normal they share kept.
+TEST(Quadrangulate, AllQuadInterpolatesAttributes) {
+  PolygonMesh mesh = mesh_of({{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {{0, 1, 2}});
+  MeshAttributes& a = mesh.attributes;
+  a.texcoords = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  a.corner_texcoord = {0, 1, 2};
+  a.normals = {{0, 0, 1}};
+  a.corner_normal = {0, 0, 0};
+  a.vertex_properties.push_back({"red", ScalarType::uint8, {}});
+  a.vertex_properties[0].values = {0, 255, 10};
+  a.face_smoothing = {3};
+  const QuadResult result = quadrangulate(mesh, {.all_quad = true});
+  ASSERT_EQ(result.mesh.face_count(), 1u);
+  const std::vector<VertexId> quad(result.mesh.face(0).begin(), result.mesh.face(0).end());
+  EXPECT_EQ(quad, (std::vector<VertexId>{0, 3, 1, 2}));
+  const MeshAttributes& b = result.mesh.attributes;
+  EXPECT_EQ(b.texcoords[b.corner_texcoord[1]], (std::array<double, 3>{0.5, 0, 0}));
+  EXPECT_EQ(b.texcoords.size(), 4u);
+  EXPECT_EQ(b.corner_normal, (HugeVector<std::uint32_t>{0, 0, 0, 0}));
+  EXPECT_EQ(b.vertex_properties[0].values[3], 128);  // 127.5 rounded
+  EXPECT_EQ(b.face_smoothing[0], 3u);
+  EXPECT_EQ(check_quad_result(mesh, result, true, false), "");
+  EXPECT_EQ(check_attributes_kept(mesh, result), "");
+  a.vertex_properties[0].values.pop_back();  // a column one short: refused, not read past
+  EXPECT_THROW(quadrangulate(mesh, {.all_quad = true}), MeshError);
+}
+
+// Random attributes for `mesh`, drawn inside a property; each kind present or not at random.
+// Texture coordinates and normals follow the vertex, but a few corners get another value (a
+// seam) and a few another entry of the same value (no seam); materials among names one of which
+// is repeated, groups, objects (some faces without), smoothing groups, a face property, an 8-bit
+// colour and a float per vertex.
+MeshAttributes arbitrary_attributes(const PolygonMesh& mesh) {
+  MeshAttributes a;
+  const auto corners = static_cast<std::uint32_t>(mesh.corners.size());
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
+  auto some_corners = [&] {
+    return *rc::gen::container<std::vector<std::uint32_t>>(
+        *rc::gen::inRange<std::size_t>(0, 8), rc::gen::inRange<std::uint32_t>(0, corners));
+  };
+  auto per_corner = [&](HugeVector<std::array<double, 3>>& values, HugeVector<std::uint32_t>& index,
+                        bool unit) {
+    if (!*rc::gen::arbitrary<bool>()) return;
+    for (const auto& p : mesh.positions) {
+      std::array<double, 3> x{p[0] * 0.5, p[1] * 0.25 + 1, unit ? p[2] + 3 : 0};
+      if (unit) {
+        const double length = std::hypot(x[0], x[1], x[2]);
+        for (double& c : x) c /= length;
+      }
+      values.push_back(x);
+    }
+    index.assign(mesh.corners.begin(), mesh.corners.end());
+    for (std::uint32_t c : some_corners()) {  // seams
+      auto x = values[index[c]];
+      x[0] += 1;
+      values.push_back(x);
+      index[c] = static_cast<std::uint32_t>(values.size() - 1);
+    }
+    for (std::uint32_t c : some_corners()) {  // equal values under other indices
+      values.push_back(values[index[c]]);
+      index[c] = static_cast<std::uint32_t>(values.size() - 1);
+    }
+    if (*rc::gen::inRange(0, 4) == 0)
+      index[*rc::gen::inRange<std::uint32_t>(0, corners)] = kNoAttribute;
+  };
+  per_corner(a.texcoords, a.corner_texcoord, false);
+  per_corner(a.normals, a.corner_normal, true);
+  auto per_face = [&](HugeVector<std::uint32_t>& ids, std::uint32_t choices, bool may_lack) {
+    if (!*rc::gen::arbitrary<bool>()) return;
+    const auto most = *rc::gen::inRange<std::uint32_t>(1, choices + 1);
+    for (std::uint32_t f = 0; f < faces; ++f) {
+      const auto id = *rc::gen::inRange<std::uint32_t>(0, most + may_lack);
+      ids.push_back(id == most ? kNoAttribute : id);
+    }
+  };
+  a.material_names = {"red", "green", "red"};
+  per_face(a.face_material, 3, true);
+  a.group_names = {"body", "lid"};
+  per_face(a.face_group, 2, false);
+  a.object_names = {"teapot"};
+  per_face(a.face_object, 1, true);
+  per_face(a.face_smoothing, 3, false);
+  if (*rc::gen::arbitrary<bool>()) {
+    a.face_properties.push_back({"flags", ScalarType::uint8, {}});
+    a.face_properties.push_back({"weight", ScalarType::float32, {}});
+    for (std::uint32_t f = 0; f < faces; ++f) {
+      a.face_properties[0].values.push_back(*rc::gen::inRange(0, 2));
+      a.face_properties[1].values.push_back(*rc::gen::inRange(0, 2) * 0.5);
+    }
+  }
+  if (*rc::gen::arbitrary<bool>()) {
+    a.vertex_properties.push_back({"red", ScalarType::uint8, {}});
+    a.vertex_properties.push_back({"confidence", ScalarType::float64, {}});
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      a.vertex_properties[0].values.push_back(*rc::gen::inRange(0, 256));
+      a.vertex_properties[1].values.push_back(*rc::gen::inRange(0, 1000) / 7.0);
+    }
+  }
+  if (*rc::gen::arbitrary<bool>()) a.material_libraries = {"scene.mtl"};
+  return a;
+}
+
+// Random seams, materials, groups, objects, smoothing groups and properties on closed, open and
+// mixed meshes, some crossed: no pair crosses a cut left on (judged from the values), the pairing
+// is the maximum of what is left, and every corner, face and vertex keeps its values (all_quad's
+// new ones interpolated).
+RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
+  PolygonMesh mesh =
+      *rc::gen::oneOf(testing::mixed_meshes(),
+                      rc::gen::map(testing::closed_triangulations_up_to(2),
+                                   [](const TriangleMesh& t) { return to_polygon_mesh(t); }));
+  mesh.attributes = arbitrary_attributes(mesh);
+  const MeshAttributes& a = mesh.attributes;
+  std::vector<CutCause> cross;
+  for (CutCause cause :
+       {CutCause::uv_seam, CutCause::normal_seam, CutCause::material, CutCause::group,
+        CutCause::object, CutCause::smoothing, CutCause::face_property}) {
+    if (*rc::gen::inRange(0, 4) == 0) cross.push_back(cause);
+  }
+  const Algorithm algorithm =
+      *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
+  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
+  const bool all_quad = *rc::gen::arbitrary<bool>();
+  QuadResult result;
+  try {
+    result = quadrangulate(mesh, {.algorithm = algorithm,
+                                  .all_quad = all_quad,
+                                  .objective = objective,
+                                  .cross = cross,
+                                  .peer = kLemon});
+  } catch (const MeshError& e) {
+    RC_ASSERT(all_quad);
+    RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
+    RC_TAG("all-quad refused");
+    return;
+  }
+  const bool per_face = a.has_corner_attributes() || a.has_face_attributes();
+  RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::uv_seam)] > 0, "uv seams");
+  RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::material)] > 0, "material borders");
+  RC_CLASSIFY(result.stats.added_vertices > 0, "split");
+  RC_ASSERT(result.stats.maximum_certified);
+  if (algorithm == Algorithm::lrs && per_face) RC_ASSERT(result.stats.flipped_edges == 0u);
+  const bool flips = algorithm == Algorithm::lrs && objective == Objective::pairs && !per_face;
+  std::string problem = check_quad_result(mesh, result, all_quad, flips, {}, cross);
+  if (problem.empty()) problem = check_attributes_kept(mesh, result);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 #include <set>
 
 #include "peers.hpp"
@@ -36,6 +37,62 @@ bool is_triangle(const PolygonMesh& mesh, FaceId f) {
   return c.size() == 3 && c[0] != c[1] && c[1] != c[2] && c[0] != c[2];
 }
 
+std::size_t first_corner(const PolygonMesh& mesh, FaceId f) {
+  return mesh.all_triangles() ? 3 * std::size_t{f} : mesh.face_start[f];
+}
+
+// The corner of face f at vertex v (its first), or none.
+std::optional<std::size_t> corner_at(const PolygonMesh& mesh, FaceId f, VertexId v) {
+  const std::size_t first = first_corner(mesh, f);
+  for (std::size_t c = first; c < first + mesh.arity(f); ++c)
+    if (mesh.corners[c] == v) return c;
+  return std::nullopt;
+}
+
+using Value = std::optional<std::array<double, 3>>;
+
+// A corner's texture coordinate (cause uv_seam) or normal (normal_seam), as a value.
+Value corner_value(const MeshAttributes& a, CutCause cause, std::size_t c) {
+  const bool uv = cause == CutCause::uv_seam;
+  const auto& index = uv ? a.corner_texcoord : a.corner_normal;
+  if (index.empty() || index[c] == kNoAttribute) return std::nullopt;
+  return (uv ? a.texcoords : a.normals)[index[c]];
+}
+
+std::optional<std::string> name_of(const HugeVector<std::uint32_t>& index,
+                                   const std::vector<std::string>& names, FaceId f) {
+  if (index.empty() || index[f] == kNoAttribute) return std::nullopt;
+  return names[index[f]];
+}
+
+// Whether face f of `a` and face g of `b` differ in the face attribute of `cause` (material,
+// group, object, smoothing or face_property), by value.
+bool face_differs(CutCause cause, const MeshAttributes& a, FaceId f, const MeshAttributes& b,
+                  FaceId g) {
+  switch (cause) {
+    case CutCause::material:
+      return name_of(a.face_material, a.material_names, f) !=
+             name_of(b.face_material, b.material_names, g);
+    case CutCause::group:
+      return name_of(a.face_group, a.group_names, f) != name_of(b.face_group, b.group_names, g);
+    case CutCause::object:
+      return name_of(a.face_object, a.object_names, f) != name_of(b.face_object, b.object_names, g);
+    case CutCause::smoothing:
+      return (a.face_smoothing.empty() ? 0 : a.face_smoothing[f]) !=
+             (b.face_smoothing.empty() ? 0 : b.face_smoothing[g]);
+    default:
+      if (a.face_properties.size() != b.face_properties.size()) return true;
+      for (std::size_t k = 0; k < a.face_properties.size(); ++k) {
+        if (a.face_properties[k].values[f] != b.face_properties[k].values[g]) return true;
+      }
+      return false;
+  }
+}
+
+constexpr CutCause kCornerCauses[] = {CutCause::uv_seam, CutCause::normal_seam};
+constexpr CutCause kFaceCauses[] = {CutCause::material, CutCause::group, CutCause::object,
+                                    CutCause::smoothing, CutCause::face_property};
+
 }  // namespace
 
 std::int64_t euler_characteristic(const PolygonMesh& mesh) {
@@ -45,7 +102,43 @@ std::int64_t euler_characteristic(const PolygonMesh& mesh) {
 }
 
 // Whether an extra cut forbids pairing triangles f and g across their edge (a, b).
-bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, FaceId f, FaceId g, Edge e) {
+bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, std::span<const CutCause> cross,
+               FaceId f, FaceId g, Edge e) {
+  // The attribute cuts quadrangulate makes unless crossed or set by the caller, by value.
+  auto given = [&](CutCause cause) {
+    switch (cause) {
+      case CutCause::uv_seam:
+        return !cuts.corner_uv.empty();
+      case CutCause::normal_seam:
+        return !cuts.corner_normal.empty();
+      case CutCause::material:
+        return !cuts.face_material.empty();
+      case CutCause::group:
+        return !cuts.face_group.empty();
+      case CutCause::object:
+        return !cuts.face_object.empty();
+      case CutCause::smoothing:
+        return !cuts.face_smoothing.empty();
+      default:
+        return !cuts.face_property.empty();
+    }
+  };
+  auto applies = [&](CutCause cause) {
+    return !given(cause) && std::find(cross.begin(), cross.end(), cause) == cross.end();
+  };
+  const MeshAttributes& a = mesh.attributes;
+  for (CutCause cause : kCornerCauses) {
+    if (!applies(cause)) continue;
+    for (VertexId v : {e.first, e.second}) {
+      if (corner_value(a, cause, *corner_at(mesh, f, v)) !=
+          corner_value(a, cause, *corner_at(mesh, g, v))) {
+        return true;
+      }
+    }
+  }
+  for (CutCause cause : kFaceCauses)
+    if (applies(cause) && face_differs(cause, a, f, a, g)) return true;
+
   for (const auto& [u, v] : cuts.user_edges)
     if (edge(u, v) == e) return true;
   auto corner = [&](FaceId face, VertexId v) {
@@ -110,6 +203,7 @@ double pair_cost(const PolygonMesh& mesh, FaceId f, FaceId g) {
 
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
                               bool flips_allowed, const CutOptions& cuts,
+                              std::span<const CutCause> cross,
                               std::optional<double> max_corner_deviation) {
   const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
   // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
@@ -128,7 +222,7 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
     std::set<VertexId> four;
     for (FaceId f : fs)
       for (VertexId v : input.face(f)) four.insert(v);
-    if (four.size() != 4 || extra_cut(input, cuts, fs[0], fs[1], e)) continue;
+    if (four.size() != 4 || extra_cut(input, cuts, cross, fs[0], fs[1], e)) continue;
     if (max_corner_deviation &&
         pair_cost(input, std::min(fs[0], fs[1]), std::max(fs[0], fs[1])) > *max_corner_deviation) {
       continue;
@@ -283,6 +377,163 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
     }
     for (std::size_t v = 0; v < input.positions.size(); ++v) {
       if (result.mesh.positions[v] != input.positions[v]) return "an input vertex moved";
+    }
+  }
+  return {};
+}
+
+}  // namespace petersen::testing
+
+namespace petersen::testing {
+
+namespace {
+
+bool close(double x, double y) {
+  return std::abs(x - y) <= 1e-9 * (1 + std::abs(x));
+}
+
+bool close(const Value& x, const Value& y) {
+  if (x.has_value() != y.has_value()) return false;
+  if (!x) return true;
+  for (int d = 0; d < 3; ++d)
+    if (!close((*x)[d], (*y)[d])) return false;
+  return true;
+}
+
+}  // namespace
+
+std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& result) {
+  const MeshAttributes &a = input.attributes, &b = result.mesh.attributes;
+  const PolygonMesh& out = result.mesh;
+  try {
+    check_attributes(out);
+  } catch (const MeshError& e) {
+    return std::string("output attributes: ") + e.what();
+  }
+  if (a.corner_texcoord.empty() != b.corner_texcoord.empty() ||
+      a.corner_normal.empty() != b.corner_normal.empty() ||
+      a.has_face_attributes() != b.has_face_attributes() ||
+      a.vertex_properties.size() != b.vertex_properties.size() ||
+      a.material_libraries != b.material_libraries) {
+    return "the output does not have the input's kinds of attributes";
+  }
+  const std::size_t n = input.positions.size();
+  for (std::size_t k = 0; k < a.vertex_properties.size(); ++k) {
+    const PropertyColumn &x = a.vertex_properties[k], &y = b.vertex_properties[k];
+    if (x.name != y.name || x.type != y.type) return "vertex property " + x.name + " renamed";
+    for (std::size_t v = 0; v < n; ++v) {
+      if (x.values[v] != y.values[v]) {
+        return "vertex property " + x.name + " of vertex " + std::to_string(v) + " changed";
+      }
+    }
+  }
+  for (FaceId o = 0; o < out.face_count(); ++o) {
+    const auto [f, g] = result.sources[o];
+    const auto face = out.face(o);
+    const bool as_it_was =
+        f != kNoFace && g == kNoFace &&
+        std::equal(face.begin(), face.end(), input.face(f).begin(), input.face(f).end());
+    // lrs: a quad with a triangle its flips made has no input corners to compare with; it may
+    // only be made where the input has no corner or face attributes.
+    if (f == kNoFace || (g == kNoFace && !as_it_was && result.stats.flipped_edges > 0)) {
+      if (a.has_corner_attributes() || a.has_face_attributes()) {
+        return "output face " + std::to_string(o) + " has attributes but no source triangles";
+      }
+      continue;
+    }
+    for (CutCause cause : kFaceCauses) {
+      if (face_differs(cause, a, f, b, o)) {
+        return "output face " + std::to_string(o) + " has another " +
+               std::string(to_string(cause)) + " than its source " + std::to_string(f);
+      }
+    }
+    // The corner of the source triangles at input vertex u: the first's, else the second's.
+    auto source_corner = [&](VertexId u) {
+      if (auto c = corner_at(input, f, u)) return c;
+      return g == kNoFace ? std::nullopt : corner_at(input, g, u);
+    };
+    for (std::size_t k = 0; k < face.size(); ++k) {
+      const VertexId v = face[k];
+      const std::size_t oc = first_corner(out, o) + k;
+      // The input vertices v was made from: itself, an edge of the sources (their shared edge
+      // excepted), or all the sources' vertices (a quad's centre).
+      std::vector<VertexId> parents;
+      if (v < n) {
+        parents = {v};
+      } else {
+        const auto& p = out.positions[v];
+        auto at = [&](const std::vector<VertexId>& us) {
+          for (int d = 0; d < 3; ++d) {
+            double sum = 0;
+            for (VertexId u : us) sum += input.positions[u][d];
+            if (!close(sum / double(us.size()), p[d])) return false;
+          }
+          return true;
+        };
+        std::vector<VertexId> all;
+        for (FaceId s : {f, g}) {
+          if (s == kNoFace) continue;
+          const auto c = input.face(s);
+          for (std::size_t i = 0; i < c.size(); ++i) {
+            const VertexId u = c[i], w = c[(i + 1) % c.size()];
+            const bool shared = g != kNoFace && corner_at(input, f, u) && corner_at(input, f, w) &&
+                                corner_at(input, g, u) && corner_at(input, g, w);
+            if (parents.empty() && !shared && at({u, w})) parents = {u, w};
+            if (std::find(all.begin(), all.end(), u) == all.end()) all.push_back(u);
+          }
+        }
+        if (parents.empty() && all.size() == 4 && at(all)) parents = all;
+        if (parents.empty()) {
+          return "new vertex " + std::to_string(v) + " of output face " + std::to_string(o) +
+                 " is no midpoint of a side nor the centre of its sources";
+        }
+        for (std::size_t c = 0; c < a.vertex_properties.size(); ++c) {
+          const PropertyColumn& column = a.vertex_properties[c];
+          double sum = 0;
+          for (VertexId u : parents) sum += column.values[u];
+          double expected = sum / double(parents.size());
+          if (column.type != ScalarType::float32 && column.type != ScalarType::float64) {
+            expected = std::round(expected);
+          }
+          if (!close(expected, b.vertex_properties[c].values[v])) {
+            return "vertex property " + column.name + " of new vertex " + std::to_string(v) +
+                   " is not its parents' average";
+          }
+        }
+      }
+      for (CutCause cause : kCornerCauses) {
+        Value expected;
+        if (as_it_was) {
+          expected = corner_value(a, cause, first_corner(input, f) + k);
+        } else {
+          std::array<double, 3> sum{0, 0, 0};
+          bool all_have = true;
+          for (VertexId u : parents) {
+            const auto corner = source_corner(u);
+            if (!corner) {
+              return "vertex " + std::to_string(u) + " of output face " + std::to_string(o) +
+                     " is in none of its source faces";
+            }
+            const Value x = corner_value(a, cause, *corner);
+            all_have &= x.has_value();
+            if (x)
+              for (int d = 0; d < 3; ++d) sum[d] += (*x)[d];
+          }
+          for (double& x : sum) x /= double(parents.size());
+          if (cause == CutCause::normal_seam && parents.size() > 1) {
+            const double length = std::hypot(sum[0], sum[1], sum[2]);
+            if (length > 0)
+              for (double& x : sum) x /= length;
+          }
+          if (all_have) expected = sum;
+        }
+        if (!close(expected, corner_value(b, cause, oc))) {
+          return "corner " + std::to_string(k) + " (vertex " + std::to_string(v) +
+                 ") of output face " + std::to_string(o) + " has another " +
+                 (cause == CutCause::uv_seam ? "texture coordinate" : "normal") +
+                 " than the source corners it was made from";
+        }
+      }
     }
   }
   return {};

@@ -42,7 +42,7 @@ TEST(Threshold, CutsPairsOverItAndLeavesTheirTriangles) {
     auto run = [&](double degrees) {
       const QuadResult result =
           quadrangulate(mesh, {.objective = objective, .max_corner_deviation = degrees});
-      EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, degrees), "");
+      EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, {}, degrees), "");
       EXPECT_TRUE(result.stats.maximum_certified);
       EXPECT_EQ(result.stats.optimality_certified, objective == Objective::quality);
       return result;
@@ -61,6 +61,9 @@ TEST(Threshold, CutsPairsOverItAndLeavesTheirTriangles) {
     EXPECT_EQ(none.stats.cuts.by_cause[int(CutCause::shape)], 3u);
   }
   EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = std::nan("")}), std::invalid_argument);
+  // The threshold's cuts are the caller's own: never crossed.
+  EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = 20, .cross = {CutCause::shape}}),
+               std::invalid_argument);
 }
 
 // The rhombus's second triangle reversed: its edges to the square and to the other half are
@@ -72,7 +75,7 @@ TEST(Threshold, InconsistentEdgesCountOnlyThePairableOnes) {
     SCOPED_TRACE(degrees);
     const QuadResult result = quadrangulate(mesh, {.max_corner_deviation = degrees});
     EXPECT_EQ(result.stats.inconsistent_edges, inconsistent);
-    EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, degrees), "");
+    EXPECT_EQ(check_quad_result(mesh, result, false, false, {}, {}, degrees), "");
   }
 }
 
@@ -80,7 +83,7 @@ TEST(Threshold, AllQuadStillSplitsTheTrianglesLeft) {
   const PolygonMesh mesh = square_and_rhombus();
   const QuadResult result = quadrangulate(
       mesh, {.all_quad = true, .objective = Objective::quality, .max_corner_deviation = 20});
-  EXPECT_EQ(check_quad_result(mesh, result, true, false, {}, 20.0), "");
+  EXPECT_EQ(check_quad_result(mesh, result, true, false, {}, {}, 20.0), "");
   EXPECT_EQ(result.stats.pairs, 1u);
   EXPECT_GT(result.stats.split_quads, 0u);
   for (FaceId f = 0; f < result.mesh.face_count(); ++f) EXPECT_EQ(result.mesh.arity(f), 4u);
@@ -103,7 +106,7 @@ RC_GTEST_PROP(Threshold, MaximumOfWhatIsAllowedAndNothingOver, ()) {
   RC_ASSERT(result.stats.maximum_certified);
   RC_ASSERT(result.stats.optimality_certified == (objective == Objective::quality));
   RC_ASSERT(result.stats.flipped_edges == 0u);
-  const std::string problem = check_quad_result(mesh, result, false, false, {}, degrees);
+  const std::string problem = check_quad_result(mesh, result, false, false, {}, {}, degrees);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
 }

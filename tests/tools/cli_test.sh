@@ -61,6 +61,8 @@ check "a threshold no quad meets" "$petersen" quad "$work/mixed.off" "$work/mixe
   --max-corner-deviation -1 --objective quality --stats-json "$work/mixed-t.json"
 grep -q '"shape": 1' "$work/mixed-t.json" && grep -q '"triangles_left": 2,' "$work/mixed-t.json" || {
   failed=$((failed + 1)); echo "FAILED: threshold"; cat "$work/mixed-t.json"; }
+refuses "--cross shape" "not a cut of the mesh's attributes" \
+  "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
 # A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
 cp "$work/mixed-q.off" "$work/keep.off"
@@ -75,6 +77,10 @@ grep -q "^4 0 1 2 3$" "$work/same.off" || { failed=$((failed + 1)); echo "FAILED
 
 refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "$work/x.obj"
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
+check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \
+  --cross uv_seam,material,face_property
+refuses "--cross a cut of the structure" "not a cut of the mesh's attributes: boundary" \
+  "$petersen" quad "$work/open.off" "$work/x.off" --cross uv_seam,boundary
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 

@@ -34,7 +34,14 @@ enum class CutCause : std::uint8_t {
   shape,
 };
 inline constexpr int kCutCauses = 15;
+/// Whether a cause is one of the mesh's attributes (uv_seam to face_property): the cuts
+/// QuadOptions::cross may let pairs cross. The structure's, the caller's and shape never are.
+constexpr bool is_attribute_cause(CutCause cause) {
+  return cause >= CutCause::uv_seam && cause <= CutCause::face_property;
+}
 std::string_view to_string(CutCause cause);
+/// The cause named as to_string names it ("uv_seam", "material", ...), or nothing.
+std::optional<CutCause> parse_cut_cause(std::string_view name);
 
 /// Mesh edges that are cuts, by cause (index: CutCause).
 struct CutCounts {

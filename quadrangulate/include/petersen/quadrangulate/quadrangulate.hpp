@@ -65,6 +65,16 @@ struct QuadOptions {
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
   /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
   CutOptions cuts = {};
+  /// The mesh's own attributes cut too, on by default (mesh.attributes, where the mesh has them):
+  /// no pair crosses a texture-coordinate or normal seam (its two triangles give an end of the
+  /// edge different values; compared by value, so two `vt` entries with equal coordinates make
+  /// no seam), nor a border between different materials, groups, objects, smoothing groups or
+  /// face property values (all of a face's property columns together; names compared as
+  /// strings). Each applies where `cuts` leaves its span empty; name its cause here
+  /// (CutCause::uv_seam, normal_seam, material, group, object, smoothing, face_property) to let
+  /// pairs cross it. Any other cause throws std::invalid_argument: the mesh's structure and the
+  /// caller's own cuts are never crossed.
+  std::vector<CutCause> cross = {};
   /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
   /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
   PeerMatcher peer = nullptr;
@@ -116,6 +126,17 @@ struct QuadResult {
   /// The output: the input's positions (then all_quad's new vertices) and faces in input order:
   /// each pair's quad where its first triangle was, kept polygons and left triangles as they
   /// were (or, with all_quad, the quads they were split into).
+  /// With the input's attributes: a quad's corners have the corner attributes (texture
+  /// coordinate, normal) of the triangle corners they came from (the shared edge's ends those of
+  /// its first triangle, where a crossed seam lets them differ), and its face attributes
+  /// (material, group, object, smoothing group, face properties) are its first triangle's; kept
+  /// and left faces keep theirs; vertex properties are copied. all_quad's new vertices get
+  /// interpolated values: vertex properties averaged over the edge's ends or the quad's corners
+  /// (integer types rounded), and each face around a new vertex its own corner values averaged
+  /// likewise (normals renormalised), so a seam stays a seam; the new texture coordinates and
+  /// normals are appended, one entry per distinct value. lrs flips edges, and a flipped triangle
+  /// has no corners or face of the input to take attributes from: on a mesh with corner or face
+  /// attributes its closed components are paired by ps (lrs_fallback_components says so).
   PolygonMesh mesh;
   /// For each output face, the input faces it came from: {t1, t2} for a pair's quad (the quad
   /// follows t1's orientation), {f, kNoFace} for a face kept or left. With lrs, a triangle its
