@@ -70,7 +70,7 @@ struct MinCostStats {
   std::uint64_t blossoms_expanded = 0;
   std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
   std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
-  std::uint64_t released_scans = 0;  ///< nodes scanned when their tree augmented
+  std::uint64_t released_scans = 0;  ///< nodes scanned on leaving an expanded odd blossom
 };
 
 struct MinCostResult {
