@@ -247,7 +247,15 @@ class BlossomSolver {
     }
   }
   // v's outermost blossom; the duals of the sets holding v below it go to `below`.
+  // Most nodes scanned are their own top-level blossom: that case is inline, without the walk.
   std::uint32_t find(NodeId v, std::int64_t& below) {
+    if (rec_[v].parent == kNone) [[likely]] {
+      below = 0;
+      return v;
+    }
+    return find_nested(v, below);
+  }
+  [[gnu::noinline]] std::uint32_t find_nested(NodeId v, std::int64_t& below) {
     std::uint32_t x = v;
     std::int64_t sum = 0;
     walked_.clear();
@@ -373,6 +381,9 @@ class BlossomSolver {
       std::int64_t below_x, below_w;
       const std::uint32_t bx = find(x, below_x);
       const std::int64_t room = -below_x - current_dual(bx);  // the slack less 2·cost
+      // The neighbours' records are requested together: each is a likely cache miss, and the
+      // loop below would otherwise wait for them one at a time.
+      for (const Slot& slot : slots_of(x)) __builtin_prefetch(&rec_[slot.other]);
       for (const Slot& slot : slots_of(x)) {
         const std::uint32_t bw = find(slot.other, below_w);
         if (bw == bx) continue;
