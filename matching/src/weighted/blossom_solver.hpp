@@ -67,10 +67,7 @@ class BlossomSolver {
         tree_to_(ids_, kNone),
         tree_edge_(ids_, kNoEdge),
         mark_(ids_, 0),
-        generation_(ids_, 0),
-        up_(ids_, kNone),
-        up_generation_(ids_, 0),
-        up_sum_(ids_, 0),
+        up_(ids_),
         children_(ids_ - n_),
         conn_(ids_ - n_) {
     mate_.assign(n_, kNoEdge);
@@ -261,18 +258,17 @@ class BlossomSolver {
     walked_.clear();
     while (rec_[x].parent != kNone) {
       walked_.push_back({x, sum});
-      if (up_[x] != kNone && generation_[up_[x]] == up_generation_[x]) {
-        sum += up_sum_[x];
-        x = up_[x];
+      const Shortcut& up = up_[x];
+      if (up.to != kNone && rec_[up.to].generation == up.generation) {
+        sum += up.sum;
+        x = up.to;
       } else {
         sum += rec_[x].y;
         x = rec_[x].parent;
       }
     }
     for (auto [w, at] : walked_) {
-      up_[w] = x;
-      up_generation_[w] = generation_[x];
-      up_sum_[w] = sum - at;
+      up_[w] = {sum - at, x, rec_[x].generation};
     }
     below = sum;
     return x;
@@ -342,7 +338,7 @@ class BlossomSolver {
     rec_[b].label = kUnlabelled;
     rec_[b].parent = kNone;
     rec_[b].y = 0;
-    ++generation_[b];
+    ++rec_[b].generation;
     free_ids_.push_back(b);
   }
 
@@ -704,13 +700,14 @@ class BlossomSolver {
   std::size_t ids_;
   // What finding a blossom and its current dual reads, in one cache line's half: the stored
   // dual y, the clock at its last label change, the parent blossom (kNone at the top level),
-  // the tree of a labelled blossom and the label. Separate arrays cost a cache miss each per
-  // neighbour scanned.
+  // the tree of a labelled blossom, the generation its shortcuts are checked against, and the
+  // label. Separate arrays cost a cache miss each per neighbour scanned.
   struct alignas(32) Record {
     std::int64_t y = 0;
     std::int64_t since = 0;
     std::uint32_t parent = kNone;
     std::uint32_t tree = kNone;
+    std::uint32_t generation = 0;  // bumped when the blossom id is freed (see the top)
     std::uint8_t label = kUnlabelled;
   };
   HugeVector<Record> rec_;
@@ -719,10 +716,14 @@ class BlossomSolver {
   HugeVector<NodeId> tree_to_;    // the node in this blossom
   HugeVector<EdgeId> tree_edge_;
   HugeVector<std::uint32_t> mark_;
-  HugeVector<std::uint32_t> generation_;
-  HugeVector<std::uint32_t> up_;  // the shortcuts (see the top)
-  HugeVector<std::uint32_t> up_generation_;
-  HugeVector<std::int64_t> up_sum_;
+  // The shortcuts (see the top): x's ancestor `to`, valid while to's generation is `generation`,
+  // and the duals from x up to it; one record, read together on every walk.
+  struct Shortcut {
+    std::int64_t sum = 0;
+    std::uint32_t to = kNone;
+    std::uint32_t generation = 0;
+  };
+  HugeVector<Shortcut> up_;
   std::vector<std::pair<std::uint32_t, std::int64_t>> walked_;
   std::uint32_t stamp_ = 0;
   std::vector<std::vector<std::uint32_t>> children_;
