@@ -86,6 +86,7 @@ struct QuadArgs {
   std::vector<double> view;
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
+  std::uint32_t threads = 0;
   bool all_quad = false;
   std::optional<double> sharp_angle;
   std::string keep_edges;
@@ -112,8 +113,9 @@ int quad(const QuadArgs& args) {
   report.options.all_quad = args.all_quad;
   report.options.objective = *objective;
   report.options.peer = &lemon_peer::maximum_matching;
+  report.options.threads = args.threads;
   Clock total, clock;
-  const PolygonMesh mesh = read_mesh(args.input);
+  PolygonMesh mesh = read_mesh(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges);
@@ -127,6 +129,10 @@ int quad(const QuadArgs& args) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
   report.quad = result.stats;
+  // The input is not needed past this point: freed before the output's bytes are built beside
+  // the output mesh, where the peak would otherwise be.
+  const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
+  mesh = {};
   clock.lap();
   write_mesh(args.output, result.mesh);
   report.write_seconds = clock.lap();
@@ -144,7 +150,7 @@ int quad(const QuadArgs& args) {
     options.view = view;
     options.width = args.render_width;
     options.height = args.render_height;
-    options.first_added_vertex = VertexId(mesh.positions.size());
+    options.first_added_vertex = input_vertices;
     options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
                            (report.options.objective == Objective::quality
                                 ? std::string("min-cost (objective quality)")
@@ -168,25 +174,39 @@ struct GenerateArgs {
   std::uint64_t seed = 1;
 };
 
-PolygonMesh generated_surface(const GenerateArgs& args) {
-  if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
-  if (args.kind == "projective") return projective_plane(args.subdivision);
-  if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
+TriangleMesh randomized_plate(const GenerateArgs& args) {
   TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
   }
-  return to_polygon_mesh(mesh);
+  return mesh;
 }
 
-int generate(const GenerateArgs& args) {
+PolygonMesh generated_surface(const GenerateArgs& args) {
+  if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
+  if (args.kind == "projective") return projective_plane(args.subdivision);
+  if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
+  return to_polygon_mesh(randomized_plate(args));
+}
+
+TriangleMesh generated_mesh(const GenerateArgs& args) {
+  // A closed plate needs no polygon steps: no copy into a polygon mesh and back, which at 10^8
+  // triangles is gigabytes.
+  if (args.kind == "plate" && args.holes == 0 && args.fins == 0 && args.pinches == 0 &&
+      args.flip_faces == 0) {
+    return randomized_plate(args);
+  }
   PolygonMesh surface = generated_surface(args);
   // Each step with its own seed, so that asking for one does not change what another does.
   if (args.holes > 0) surface = punch_holes(surface, args.holes, args.seed + 1);
   if (args.fins > 0) surface = add_fins(surface, args.fins, args.seed + 2);
   if (args.pinches > 0) surface = pinch_vertices(surface, args.pinches, args.seed + 3);
   if (args.flip_faces > 0) surface = flip_faces(surface, args.flip_faces, args.seed + 4);
-  const TriangleMesh mesh = to_triangle_mesh(surface);
+  return to_triangle_mesh(surface);
+}
+
+int generate(const GenerateArgs& args) {
+  const TriangleMesh mesh = generated_mesh(args);
   write_triangle_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.triangles.size(),
               mesh.positions.size(), args.output.c_str());
@@ -239,6 +259,10 @@ int main(int argc, char** argv) {
                        "never pair across an edge whose triangles fold by more than DEG degrees");
   quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
                        "never pair across these edges: a file of vertex id pairs, one per line");
+  quad_cmd
+      ->add_option("--threads", quad_args.threads,
+                   "threads for the phases that split into independent parts (0: every core)")
+      ->capture_default_str();
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,

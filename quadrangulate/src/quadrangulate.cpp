@@ -9,6 +9,7 @@
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen {
@@ -67,7 +68,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
   stats.faces_in = face_count;
   stats.vertices = mesh.positions.size();
-  PairableGraph graph = build_pairable_graph(mesh, options.cuts);
+  PairableGraph graph = build_pairable_graph(mesh, options.cuts, options.threads);
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
@@ -129,20 +130,30 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
-  // Quality of the pairs' quads (every output face of four corners made from triangles).
-  std::vector<double> costs;
-  costs.reserve(stats.pairs);
-  double total_cost = 0;
-  for (FaceId o = 0; o < out.face_count(); ++o) {
-    const auto c = out.face(o);
-    if (c.size() != 4 || (result.sources[o][1] == kNoFace && result.sources[o][0] != kNoFace &&
-                          mesh.arity(result.sources[o][0]) != 3)) {
-      continue;
-    }
+  // Quality of the pairs' quads (every output face of four corners made from triangles): each
+  // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
+  // in face order, so the figures do not depend on the threads.
+  const FaceId out_faces = static_cast<FaceId>(out.face_count());
+  std::vector<double> costs(out_faces);
+  constexpr FaceId kBlock = 1 << 16;
+  run_parallel(options.threads, (out_faces + kBlock - 1) / kBlock, [&](std::uint32_t block) {
     const auto& p = out.positions;
-    costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
-    total_cost += costs.back();
+    for (FaceId o = block * kBlock; o < std::min(out_faces, (block + 1) * kBlock); ++o) {
+      const auto c = out.face(o);
+      const bool pair_quad =
+          c.size() == 4 && (result.sources[o][1] != kNoFace || result.sources[o][0] == kNoFace ||
+                            mesh.arity(result.sources[o][0]) == 3);
+      costs[o] = pair_quad ? quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) : -1.0;
+    }
+  });
+  double total_cost = 0;
+  std::size_t quads = 0;
+  for (double c : costs) {
+    if (c < 0) continue;
+    costs[quads++] = c;
+    total_cost += c;
   }
+  costs.resize(quads);
   measure_quality(std::move(costs), stats);
   stats.objective_total = options.objective == Objective::quality
                               ? double(pairing.objective_units) / kDefaultCostScale
