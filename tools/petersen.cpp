@@ -170,7 +170,7 @@ struct GenerateArgs {
   std::string output, kind = "plate";
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
   std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
-  bool dents = false;
+  bool dents = false, spatial_order = false;
   std::uint64_t seed = 1;
 };
 
@@ -179,6 +179,7 @@ TriangleMesh randomized_plate(const GenerateArgs& args) {
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
   }
+  if (args.spatial_order) mesh = spatially_ordered(mesh);
   return mesh;
 }
 
@@ -304,6 +305,9 @@ int main(int argc, char** argv) {
                    "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
       ->capture_default_str();
   gen_cmd->add_flag("--dents", gen_args.dents, "cavities instead of through-holes (genus 0)");
+  gen_cmd->add_flag("--spatial-order", gen_args.spatial_order,
+                    "plate: store triangles in Morton order of their centroids and vertices in "
+                    "order of first use, as scanners and subdivisions do");
   gen_cmd
       ->add_option("--splits", gen_args.splits, "random 1-to-3 triangle splits, for irregularity")
       ->capture_default_str();

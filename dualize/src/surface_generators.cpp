@@ -213,4 +213,61 @@ TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, st
                                  flips, seed);
 }
 
+TriangleMesh spatially_ordered(const TriangleMesh& mesh) {
+  std::array<double, 3> low{}, high{};
+  for (int d = 0; d < 3; ++d) {
+    low[d] = mesh.positions.empty() ? 0 : mesh.positions[0][d];
+    high[d] = low[d];
+  }
+  for (const auto& p : mesh.positions) {
+    for (int d = 0; d < 3; ++d) {
+      low[d] = std::min(low[d], p[d]);
+      high[d] = std::max(high[d], p[d]);
+    }
+  }
+  // 21 bits per axis, interleaved: the key of a centroid.
+  auto spread = [](std::uint64_t x) {
+    x &= 0x1FFFFF;
+    x = (x | x << 32) & 0x1F00000000FFFFull;
+    x = (x | x << 16) & 0x1F0000FF0000FFull;
+    x = (x | x << 8) & 0x100F00F00F00F00Full;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
+    x = (x | x << 2) & 0x1249249249249249ull;
+    return x;
+  };
+  HugeVector<std::array<std::uint64_t, 2>> order(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    std::uint64_t key = 0;
+    for (int d = 0; d < 3; ++d) {
+      double c = 0;
+      for (VertexId v : mesh.triangles[t]) c += mesh.positions[v][d];
+      const double extent = high[d] - low[d];
+      const double unit = extent > 0 ? (c / 3 - low[d]) / extent : 0;
+      key |= spread(static_cast<std::uint64_t>(std::clamp(unit, 0.0, 1.0) * 0x1FFFFF)) << d;
+    }
+    order[t] = {key, t};
+  }
+  std::sort(order.begin(), order.end());
+  TriangleMesh out;
+  out.triangles.resize(mesh.triangles.size());
+  HugeVector<VertexId> renamed(mesh.positions.size(), 0xFFFFFFFFu);
+  out.positions.reserve(mesh.positions.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const auto& t = mesh.triangles[order[i][1]];
+    for (int k = 0; k < 3; ++k) {
+      VertexId& id = renamed[t[k]];
+      if (id == 0xFFFFFFFFu) {
+        id = static_cast<VertexId>(out.positions.size());
+        out.positions.push_back(mesh.positions[t[k]]);
+      }
+      out.triangles[i][k] = id;
+    }
+  }
+  // Vertices no triangle uses keep their place at the end, in their order.
+  for (VertexId v = 0; v < mesh.positions.size(); ++v) {
+    if (renamed[v] == 0xFFFFFFFFu) out.positions.push_back(mesh.positions[v]);
+  }
+  return out;
+}
+
 }  // namespace petersen
