@@ -244,8 +244,14 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       bucket_starts(mesh.positions.size(), halfedge_count, from, to, used);
   const std::uint32_t threads = resolve_threads(threads_wanted);
   constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
-  const std::uint64_t slices =
+  std::uint64_t slices =
       std::max<std::uint64_t>(threads, (starts.back() + kSliceEntries - 1) / kSliceEntries);
+  // A large mesh gets four slices per thread at least, so that a wave's scratch (8 + 1 bytes per
+  // entry) is a quarter of the whole mesh's: the grouping was the front door's peak, beside the
+  // mesh and the graph (7M triangles: 88 bytes per triangle). Each slice reads the corners once
+  // more, sequentially, which costs little beside the grouping's random writes.
+  constexpr std::uint64_t kLargeEntries = std::uint64_t{1} << 20;
+  if (starts.back() >= kLargeEntries) slices = std::max<std::uint64_t>(slices, 4 * threads);
   std::vector<std::size_t> slice_start(slices + 1, mesh.positions.size());
   slice_start[0] = 0;
   for (std::uint64_t k = 1; k < slices; ++k) {
