@@ -84,8 +84,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   stats.check_seconds = clock.lap();
 
-  const quad_detail::TrianglePairing pairing =
-      quad_detail::pair_triangles(graph, mesh, options, stats);
+  quad_detail::TrianglePairing pairing = quad_detail::pair_triangles(graph, mesh, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
     stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
   }
@@ -100,8 +99,12 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   PolygonMesh& out = result.mesh;
   out.positions = mesh.positions;
-  out.corners.reserve(mesh.corners.size() - graph.node_count / 2);
-  result.sources.reserve(face_count - graph.node_count / 2);
+  // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
+  std::size_t paired_nodes = 0;
+  for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
+  out.corners.reserve(mesh.corners.size() - paired_nodes);
+  result.sources.reserve(face_count - paired_nodes / 2);
+  if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
   std::vector<quad_detail::FaceKind> kinds;  // for all_quad only
   auto emitted = [&](quad_detail::FaceKind kind) {
     if (options.all_quad) kinds.push_back(kind);
@@ -130,6 +133,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
+  pairing = {};  // freed before the quads' costs are measured beside the output
   // Quality of the pairs' quads (every output face of four corners made from triangles): each
   // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
   // in face order, so the figures do not depend on the threads.
