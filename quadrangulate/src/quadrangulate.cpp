@@ -133,7 +133,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
-  pairing = {};  // freed before the quads' costs are measured beside the output
+  pairing.partner = {};  // freed before the quads' costs are measured beside the output
   // Quality of the pairs' quads (every output face of four corners made from triangles): each
   // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
   // in face order, so the figures do not depend on the threads.
