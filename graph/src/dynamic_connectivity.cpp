@@ -40,7 +40,13 @@ DynamicConnectivity::DynamicConnectivity(std::uint32_t node_count, std::uint32_t
       vertex_capacity_(node_count, 0),
       arc_block_(edge_capacity, 0),
       arc_capacity_(edge_capacity, 0) {
-  for (NodeId v = 0; v < node_count; ++v) vertex_node(v, 0);
+  for (NodeId v = 0; v < node_count; ++v) {
+    const EttNode x = ett_->make_vertex(v);  // node v: see vertex_node
+    vertex_block_[v] = static_cast<std::uint32_t>(pool_.size());
+    vertex_capacity_[v] = 1;
+    pool_.push_back(x);
+  }
+  head_.resize(node_count, kNone);
 }
 
 DynamicConnectivity::~DynamicConnectivity() = default;
@@ -48,6 +54,9 @@ DynamicConnectivity::DynamicConnectivity(DynamicConnectivity&&) noexcept = defau
 DynamicConnectivity& DynamicConnectivity::operator=(DynamicConnectivity&&) noexcept = default;
 
 std::uint32_t DynamicConnectivity::vertex_node(NodeId v, int level) {
+  // The constructor makes the level-0 nodes first, in vertex order, so v's is node v: connected()
+  // and every level-0 update skip the pool's two dependent loads.
+  if (level == 0) return v;
   reserve_block(pool_, vertex_block_[v], vertex_capacity_[v], static_cast<std::uint32_t>(level));
   if (const std::uint32_t x = pool_[vertex_block_[v] + level]; x != kNone) return x;
   const EttNode x = ett_->make_vertex(v);
