@@ -1,6 +1,7 @@
 #include "euler_tour_forest.hpp"
 
 #include <stdexcept>
+#include <vector>
 
 namespace petersen::detail {
 
@@ -130,6 +131,34 @@ void EulerTourForest::cut(EttNode a, EttNode b) {
   } else {
     join(before_b, after_a);  // P = before_b, Q = after_b, R = after_a
   }
+}
+
+EttNode EulerTourForest::build(const std::vector<EttNode>& tour) {
+  if (tour.empty()) return kNoEtt;
+  // Each range's middle node is its subtree's root; nodes are listed parents first, so the
+  // aggregates are computed in the reverse order, children first.
+  struct Range {
+    std::uint32_t lo, hi;
+    EttNode parent;
+    bool right;
+  };
+  std::vector<Range> ranges = {{0, static_cast<std::uint32_t>(tour.size()), kNoEtt, false}};
+  std::vector<EttNode> order;
+  order.reserve(tour.size());
+  while (!ranges.empty()) {
+    const Range r = ranges.back();
+    ranges.pop_back();
+    if (r.lo >= r.hi) continue;
+    const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
+    const EttNode x = tour[mid];
+    nodes_[x].parent = r.parent;
+    if (r.parent != kNoEtt) (r.right ? nodes_[r.parent].right : nodes_[r.parent].left) = x;
+    order.push_back(x);
+    ranges.push_back({r.lo, mid, x, false});
+    ranges.push_back({mid + 1, r.hi, x, true});
+  }
+  for (auto it = order.rbegin(); it != order.rend(); ++it) update(*it);
+  return order.front();
 }
 
 void EulerTourForest::set_flag(EttNode x, int bit, bool on) {

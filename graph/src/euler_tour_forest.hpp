@@ -29,6 +29,10 @@ class EulerTourForest {
   std::uint32_t vertex_count(EttNode r) const { return count(r); }
   /// Joins the trees of vertex nodes x and y (different trees) by the arcs xy and yx.
   void link(EttNode x, EttNode y, EttNode xy, EttNode yx);
+  /// Makes one tree of `tour`, a sequence of nodes that are each alone in their tree (an Euler
+  /// tour: each vertex node once, each edge's two arcs around the tour of the side it leads
+  /// to), as a perfectly balanced splay tree; returns its root. O(length), iterative.
+  EttNode build(const std::vector<EttNode>& tour);
   /// Removes the edge with arcs a and b (both in one tree); the arcs leave all trees.
   void cut(EttNode a, EttNode b);
   /// Sets or clears flag bit `bit` (0 or 1) of node x, and the aggregates above it.
