@@ -1,6 +1,7 @@
 #include "petersen/graph/dynamic_connectivity.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <utility>
 
 #include "euler_tour_forest.hpp"
@@ -40,7 +41,13 @@ DynamicConnectivity::DynamicConnectivity(std::uint32_t node_count, std::uint32_t
       vertex_capacity_(node_count, 0),
       arc_block_(edge_capacity, 0),
       arc_capacity_(edge_capacity, 0) {
-  for (NodeId v = 0; v < node_count; ++v) vertex_node(v, 0);
+  for (NodeId v = 0; v < node_count; ++v) {
+    const EttNode x = ett_->make_vertex(v);  // node v: see vertex_node
+    vertex_block_[v] = static_cast<std::uint32_t>(pool_.size());
+    vertex_capacity_[v] = 1;
+    pool_.push_back(x);
+  }
+  head_.resize(node_count, kNone);
 }
 
 DynamicConnectivity::~DynamicConnectivity() = default;
@@ -48,6 +55,9 @@ DynamicConnectivity::DynamicConnectivity(DynamicConnectivity&&) noexcept = defau
 DynamicConnectivity& DynamicConnectivity::operator=(DynamicConnectivity&&) noexcept = default;
 
 std::uint32_t DynamicConnectivity::vertex_node(NodeId v, int level) {
+  // The constructor makes the level-0 nodes first, in vertex order, so v's is node v: connected()
+  // and every level-0 update skip the pool's two dependent loads.
+  if (level == 0) return v;
   reserve_block(pool_, vertex_block_[v], vertex_capacity_[v], static_cast<std::uint32_t>(level));
   if (const std::uint32_t x = pool_[vertex_block_[v] + level]; x != kNone) return x;
   const EttNode x = ett_->make_vertex(v);
@@ -112,6 +122,84 @@ bool DynamicConnectivity::insert_edge(EdgeId e, NodeId u, NodeId v) {
   state_[e] = State::non_tree;
   add_non_tree(e);
   return false;
+}
+
+void DynamicConnectivity::insert_all(std::span<const NodeId> ends) {
+  const auto n = static_cast<std::uint32_t>(vertex_block_.size());
+  const auto k = static_cast<EdgeId>(ends.size() / 2);
+  // The forest insert_edge would choose, edge by edge: union-find in id order. Non-tree edges go
+  // into their lists now, while every vertex node is alone (set_flag's splay is then free).
+  std::vector<NodeId> uf(n);
+  std::iota(uf.begin(), uf.end(), 0);
+  const auto find = [&](NodeId x) {
+    while (uf[x] != x) x = uf[x] = uf[uf[x]];
+    return x;
+  };
+  std::vector<std::uint32_t> offset(std::size_t{n} + 1, 0);
+  for (EdgeId e = 0; e < k; ++e) {
+    const NodeId u = ends[2 * std::size_t{e}], v = ends[2 * std::size_t{e} + 1];
+    ends_[2 * std::size_t{e}] = u;
+    ends_[2 * std::size_t{e} + 1] = v;
+    level_[e] = 0;
+    const NodeId ru = find(u), rv = find(v);
+    if (ru != rv) {
+      uf[ru] = rv;
+      state_[e] = State::tree;
+      ++offset[u + 1];
+      ++offset[v + 1];
+    } else {
+      state_[e] = State::non_tree;
+      add_non_tree(e);
+    }
+  }
+  // The tree edges at each vertex, then each tree's Euler tour by an iterative depth-first walk:
+  // the vertex, and for each child edge its first arc, the child's tour, its second arc (the
+  // order link() makes), the first arc flagged as a tree edge of its level.
+  for (NodeId v = 0; v < n; ++v) offset[v + 1] += offset[v];
+  std::vector<EdgeId> tree_edges(offset[n]);
+  std::vector<std::uint32_t> fill(offset.begin(), offset.end() - 1);
+  for (EdgeId e = 0; e < k; ++e)
+    if (state_[e] == State::tree) {
+      tree_edges[fill[ends_[2 * std::size_t{e}]]++] = e;
+      tree_edges[fill[ends_[2 * std::size_t{e} + 1]]++] = e;
+    }
+  std::vector<std::uint8_t> seen(n, 0);
+  std::vector<EttNode> tour;
+  struct Frame {
+    NodeId v;
+    std::uint32_t next;
+    EdgeId in;
+  };
+  std::vector<Frame> stack;
+  for (NodeId root = 0; root < n; ++root) {
+    if (seen[root] || offset[root] == offset[root + 1]) continue;
+    seen[root] = 1;
+    tour.assign(1, vertex_node(root, 0));
+    stack.assign(1, {root, offset[root], kNoEdge});
+    while (!stack.empty()) {
+      Frame& top = stack.back();
+      if (top.next == offset[top.v + 1]) {
+        const EdgeId in = top.in;
+        stack.pop_back();
+        if (in == kNoEdge) continue;
+        const EttNode b = ett_->make_arc(in);
+        arc(in, 0, 1) = b;
+        tour.push_back(b);
+        continue;
+      }
+      const EdgeId e = tree_edges[top.next++];
+      const NodeId w = endpoint(e, 0) ^ endpoint(e, 1) ^ top.v;
+      if (seen[w]) continue;  // the edge to top.v's parent
+      seen[w] = 1;
+      const EttNode a = ett_->make_arc(e);
+      arc(e, 0, 0) = a;
+      ett_->set_flag(a, kTreeFlag, true);
+      tour.push_back(a);
+      tour.push_back(vertex_node(w, 0));
+      stack.push_back({w, offset[w], e});  // `top` dangles from here on
+    }
+    ett_->build(tour);
+  }
 }
 
 DynamicConnectivity::Deletion DynamicConnectivity::delete_edge(EdgeId e) {

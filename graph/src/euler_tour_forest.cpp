@@ -1,23 +1,23 @@
 #include "euler_tour_forest.hpp"
 
+#include <stdexcept>
+#include <vector>
+
 namespace petersen::detail {
 
 namespace {
-constexpr std::uint8_t kVertexBit = 4;
+constexpr std::uint32_t kVertexBit = 4;
 }
 
 EttNode EulerTourForest::make_node(std::uint32_t owner, bool vertex) {
-  left_.push_back(kNoEtt);
-  right_.push_back(kNoEtt);
-  parent_.push_back(kNoEtt);
-  count_.push_back(vertex ? 1 : 0);
+  nodes_.push_back({kNoEtt, kNoEtt, kNoEtt, vertex ? (1u << kCountShift | kVertexBit) : 0});
   owner_.push_back(owner);
-  own_.push_back(vertex ? kVertexBit : 0);
-  aggregate_.push_back(0);
-  return static_cast<EttNode>(left_.size() - 1);
+  return static_cast<EttNode>(nodes_.size() - 1);
 }
 
 EttNode EulerTourForest::make_vertex(std::uint32_t owner) {
+  if (++vertices_ >= 1u << (32 - kCountShift))
+    throw std::length_error("EulerTourForest: more than 2^27 - 1 vertex nodes");
   return make_node(owner, true);
 }
 
@@ -25,43 +25,46 @@ EttNode EulerTourForest::make_arc(std::uint32_t owner) {
   if (free_.empty()) return make_node(owner, false);
   const EttNode a = free_.back();
   free_.pop_back();
-  left_[a] = right_[a] = parent_[a] = kNoEtt;
+  nodes_[a] = Node{};
   owner_[a] = owner;
-  own_[a] = aggregate_[a] = 0;
   return a;
 }
 
 void EulerTourForest::update(EttNode x) {
-  std::uint32_t c = (own_[x] & kVertexBit) ? 1 : 0;
-  std::uint8_t a = own_[x] & 3;
-  if (EttNode l = left_[x]; l != kNoEtt) c += count_[l], a |= aggregate_[l];
-  if (EttNode r = right_[x]; r != kNoEtt) c += count_[r], a |= aggregate_[r];
-  count_[x] = c;
-  aggregate_[x] = a;
+  Node& n = nodes_[x];
+  const std::uint32_t own = n.meta & kOwnMask;
+  std::uint32_t c = (own & kVertexBit) ? 1 : 0;
+  std::uint32_t a = own & 3;
+  if (n.left != kNoEtt) c += count(n.left), a |= aggregate(n.left);
+  if (n.right != kNoEtt) c += count(n.right), a |= aggregate(n.right);
+  n.meta = c << kCountShift | a << kAggregateShift | own;
 }
 
 void EulerTourForest::rotate(EttNode x) {
-  const EttNode y = parent_[x], z = parent_[y];
-  if (left_[y] == x) {
-    left_[y] = right_[x];
-    if (right_[x] != kNoEtt) parent_[right_[x]] = y;
-    right_[x] = y;
+  Node& nx = nodes_[x];
+  const EttNode y = nx.parent;
+  Node& ny = nodes_[y];
+  const EttNode z = ny.parent;
+  if (ny.left == x) {
+    ny.left = nx.right;
+    if (nx.right != kNoEtt) nodes_[nx.right].parent = y;
+    nx.right = y;
   } else {
-    right_[y] = left_[x];
-    if (left_[x] != kNoEtt) parent_[left_[x]] = y;
-    left_[x] = y;
+    ny.right = nx.left;
+    if (nx.left != kNoEtt) nodes_[nx.left].parent = y;
+    nx.left = y;
   }
-  parent_[y] = x;
-  parent_[x] = z;
-  if (z != kNoEtt) (left_[z] == y ? left_[z] : right_[z]) = x;
+  ny.parent = x;
+  nx.parent = z;
+  if (z != kNoEtt) (nodes_[z].left == y ? nodes_[z].left : nodes_[z].right) = x;
   update(y);
   update(x);
 }
 
 void EulerTourForest::splay(EttNode x) {
-  while (parent_[x] != kNoEtt) {
-    const EttNode y = parent_[x], z = parent_[y];
-    if (z != kNoEtt) rotate((left_[y] == x) == (left_[z] == y) ? y : x);
+  while (nodes_[x].parent != kNoEtt) {
+    const EttNode y = nodes_[x].parent, z = nodes_[y].parent;
+    if (z != kNoEtt) rotate((nodes_[y].left == x) == (nodes_[z].left == y) ? y : x);
     rotate(x);
   }
 }
@@ -74,7 +77,7 @@ EttNode EulerTourForest::root(EttNode x) {
 bool EulerTourForest::same_tree(EttNode x, EttNode y) {
   splay(x);
   EttNode r = y;
-  while (parent_[r] != kNoEtt) r = parent_[r];
+  while (nodes_[r].parent != kNoEtt) r = nodes_[r].parent;
   splay(y);  // pays for the walk
   return r == x;
 }
@@ -83,23 +86,23 @@ EttNode EulerTourForest::join(EttNode a, EttNode b) {
   if (a == kNoEtt) return b;
   if (b == kNoEtt) return a;
   EttNode m = a;
-  while (right_[m] != kNoEtt) m = right_[m];
+  while (nodes_[m].right != kNoEtt) m = nodes_[m].right;
   splay(m);
-  right_[m] = b;
-  parent_[b] = m;
+  nodes_[m].right = b;
+  nodes_[b].parent = m;
   update(m);
   return m;
 }
 
 EttNode EulerTourForest::detach_left(EttNode x) {
-  const EttNode l = left_[x];
-  if (l != kNoEtt) parent_[l] = kNoEtt, left_[x] = kNoEtt, update(x);
+  const EttNode l = nodes_[x].left;
+  if (l != kNoEtt) nodes_[l].parent = kNoEtt, nodes_[x].left = kNoEtt, update(x);
   return l;
 }
 
 EttNode EulerTourForest::detach_right(EttNode x) {
-  const EttNode r = right_[x];
-  if (r != kNoEtt) parent_[r] = kNoEtt, right_[x] = kNoEtt, update(x);
+  const EttNode r = nodes_[x].right;
+  if (r != kNoEtt) nodes_[r].parent = kNoEtt, nodes_[x].right = kNoEtt, update(x);
   return r;
 }
 
@@ -120,7 +123,7 @@ void EulerTourForest::cut(EttNode a, EttNode b) {
   splay(a);
   const EttNode before_a = detach_left(a), after_a = detach_right(a);
   EttNode r = b;
-  while (parent_[r] != kNoEtt) r = parent_[r];
+  while (nodes_[r].parent != kNoEtt) r = nodes_[r].parent;
   splay(b);
   const EttNode before_b = detach_left(b), after_b = detach_right(b);
   if (r == after_a) {
@@ -130,22 +133,51 @@ void EulerTourForest::cut(EttNode a, EttNode b) {
   }
 }
 
+EttNode EulerTourForest::build(const std::vector<EttNode>& tour) {
+  if (tour.empty()) return kNoEtt;
+  // Each range's middle node is its subtree's root; nodes are listed parents first, so the
+  // aggregates are computed in the reverse order, children first.
+  struct Range {
+    std::uint32_t lo, hi;
+    EttNode parent;
+    bool right;
+  };
+  std::vector<Range> ranges = {{0, static_cast<std::uint32_t>(tour.size()), kNoEtt, false}};
+  std::vector<EttNode> order;
+  order.reserve(tour.size());
+  while (!ranges.empty()) {
+    const Range r = ranges.back();
+    ranges.pop_back();
+    if (r.lo >= r.hi) continue;
+    const std::uint32_t mid = r.lo + (r.hi - r.lo) / 2;
+    const EttNode x = tour[mid];
+    nodes_[x].parent = r.parent;
+    if (r.parent != kNoEtt) (r.right ? nodes_[r.parent].right : nodes_[r.parent].left) = x;
+    order.push_back(x);
+    ranges.push_back({r.lo, mid, x, false});
+    ranges.push_back({mid + 1, r.hi, x, true});
+  }
+  for (auto it = order.rbegin(); it != order.rend(); ++it) update(*it);
+  return order.front();
+}
+
 void EulerTourForest::set_flag(EttNode x, int bit, bool on) {
   splay(x);
-  own_[x] = static_cast<std::uint8_t>(on ? own_[x] | (1u << bit) : own_[x] & ~(1u << bit));
+  std::uint32_t& meta = nodes_[x].meta;
+  meta = on ? meta | (1u << bit) : meta & ~(1u << bit);
   update(x);
 }
 
 EttNode EulerTourForest::find_flagged(EttNode r, int bit) {
-  if (!((aggregate_[r] >> bit) & 1)) return kNoEtt;
+  if (!((aggregate(r) >> bit) & 1)) return kNoEtt;
   EttNode x = r;
   for (;;) {
-    if (EttNode l = left_[x]; l != kNoEtt && ((aggregate_[l] >> bit) & 1)) {
+    if (EttNode l = nodes_[x].left; l != kNoEtt && ((aggregate(l) >> bit) & 1)) {
       x = l;
-    } else if ((own_[x] >> bit) & 1) {
+    } else if ((own(x) >> bit) & 1) {
       break;
     } else {
-      x = right_[x];
+      x = nodes_[x].right;
     }
   }
   splay(x);

@@ -13,7 +13,8 @@ inline constexpr EttNode kNoEtt = 0xFFFFFFFFu;
 
 class EulerTourForest {
  public:
-  /// A new one-vertex tree; `owner` is returned by owner(). O(1).
+  /// A new one-vertex tree; `owner` is returned by owner(). O(1). At most 2^27 - 1 vertex nodes
+  /// (the vertex count has 27 bits); throws std::length_error past that.
   EttNode make_vertex(std::uint32_t owner);
   /// A new arc node, not yet in any tree (reuses freed arcs). O(1).
   EttNode make_arc(std::uint32_t owner);
@@ -25,18 +26,36 @@ class EulerTourForest {
   /// Whether x and y lie in one tree. O(log n) amortized.
   bool same_tree(EttNode x, EttNode y);
   /// Number of vertex nodes in the tree whose splay root is r.
-  std::uint32_t vertex_count(EttNode r) const { return count_[r]; }
+  std::uint32_t vertex_count(EttNode r) const { return count(r); }
   /// Joins the trees of vertex nodes x and y (different trees) by the arcs xy and yx.
   void link(EttNode x, EttNode y, EttNode xy, EttNode yx);
+  /// Makes one tree of `tour`, a sequence of nodes that are each alone in their tree (an Euler
+  /// tour: each vertex node once, each edge's two arcs around the tour of the side it leads
+  /// to), as a perfectly balanced splay tree; returns its root. O(length), iterative.
+  EttNode build(const std::vector<EttNode>& tour);
   /// Removes the edge with arcs a and b (both in one tree); the arcs leave all trees.
   void cut(EttNode a, EttNode b);
   /// Sets or clears flag bit `bit` (0 or 1) of node x, and the aggregates above it.
   void set_flag(EttNode x, int bit, bool on);
-  bool flag(EttNode x, int bit) const { return (own_[x] >> bit) & 1; }
+  bool flag(EttNode x, int bit) const { return (own(x) >> bit) & 1; }
   /// Some node with flag `bit` in the tree whose splay root is r, or kNoEtt. O(log n) amortized.
   EttNode find_flagged(EttNode r, int bit);
 
  private:
+  // One node in 16 bytes, four to a cache line: a splay step reads and writes x, its parent and
+  // grandparent, and each was up to seven cache lines apart when every field had its own array
+  // (the ds chooser on armadillo-sub2's dual: splay and rotate were most of the time, stalled on
+  // those loads). meta = vertex count << 5 | aggregate flags << 3 | own bits (0, 1 the flags,
+  // 2 vertex); the owner, read once per raised edge, keeps an array of its own.
+  struct Node {
+    EttNode left = kNoEtt, right = kNoEtt, parent = kNoEtt;
+    std::uint32_t meta = 0;
+  };
+  static constexpr std::uint32_t kOwnMask = 7, kAggregateShift = 3, kCountShift = 5;
+
+  std::uint32_t count(EttNode x) const { return nodes_[x].meta >> kCountShift; }
+  std::uint32_t own(EttNode x) const { return nodes_[x].meta & kOwnMask; }
+  std::uint32_t aggregate(EttNode x) const { return (nodes_[x].meta >> kAggregateShift) & 3; }
   EttNode make_node(std::uint32_t owner, bool vertex);
   void update(EttNode x);
   void rotate(EttNode x);
@@ -46,10 +65,10 @@ class EulerTourForest {
   EttNode detach_right(EttNode x);
   EttNode reroot(EttNode x);  // the tour starting at x; returns the new root
 
-  std::vector<EttNode> left_, right_, parent_;
-  std::vector<std::uint32_t> count_, owner_;
-  std::vector<std::uint8_t> own_, aggregate_;  // bits 0, 1 the flags; bit 2 of own_: vertex
+  std::vector<Node> nodes_;
+  std::vector<std::uint32_t> owner_;
   std::vector<EttNode> free_;
+  std::uint32_t vertices_ = 0;
 };
 
 }  // namespace petersen::detail

@@ -4,48 +4,46 @@
 
 namespace petersen {
 
-LinkCutTree::LinkCutTree(std::uint32_t node_count)
-    : child_(2 * std::size_t{node_count}, kNoNode),
-      parent_(node_count, kNoNode),
-      reversed_(node_count, 0) {}
+LinkCutTree::LinkCutTree(std::uint32_t node_count) : nodes_(node_count) {}
 
 bool LinkCutTree::is_splay_root(NodeId x) const {
-  const NodeId p = parent_[x];
-  return p == kNoNode || (child_[2 * std::size_t{p}] != x && child_[2 * std::size_t{p} + 1] != x);
+  const NodeId p = nodes_[x].parent;
+  return p == kNoNode || (nodes_[p].child[0] != x && nodes_[p].child[1] != x);
 }
 
 void LinkCutTree::push(NodeId x) {
-  if (!reversed_[x]) return;
-  std::swap(child_[2 * std::size_t{x}], child_[2 * std::size_t{x} + 1]);
-  for (int k = 0; k < 2; ++k)
-    if (NodeId c = child_[2 * std::size_t{x} + k]; c != kNoNode) reversed_[c] ^= 1;
-  reversed_[x] = 0;
+  Node& n = nodes_[x];
+  if (!n.reversed) return;
+  std::swap(n.child[0], n.child[1]);
+  for (NodeId c : n.child)
+    if (c != kNoNode) nodes_[c].reversed ^= 1;
+  n.reversed = 0;
 }
 
 void LinkCutTree::rotate(NodeId x) {
-  const NodeId y = parent_[x], z = parent_[y];
-  const int side = child_[2 * std::size_t{y} + 1] == x ? 1 : 0;
-  if (!is_splay_root(y)) child_[2 * std::size_t{z} + (child_[2 * std::size_t{z} + 1] == y)] = x;
-  parent_[x] = z;
-  const NodeId moved = child_[2 * std::size_t{x} + 1 - side];
-  child_[2 * std::size_t{y} + side] = moved;
-  if (moved != kNoNode) parent_[moved] = y;
-  child_[2 * std::size_t{x} + 1 - side] = y;
-  parent_[y] = x;
+  const NodeId y = nodes_[x].parent, z = nodes_[y].parent;
+  const int side = nodes_[y].child[1] == x ? 1 : 0;
+  if (!is_splay_root(y)) nodes_[z].child[nodes_[z].child[1] == y ? 1 : 0] = x;
+  nodes_[x].parent = z;
+  const NodeId moved = nodes_[x].child[1 - side];
+  nodes_[y].child[side] = moved;
+  if (moved != kNoNode) nodes_[moved].parent = y;
+  nodes_[x].child[1 - side] = y;
+  nodes_[y].parent = x;
 }
 
 void LinkCutTree::splay(NodeId x) {
   path_.clear();
-  for (NodeId y = x;; y = parent_[y]) {
+  for (NodeId y = x;; y = nodes_[y].parent) {
     path_.push_back(y);
     if (is_splay_root(y)) break;
   }
   for (auto it = path_.rbegin(); it != path_.rend(); ++it) push(*it);
   while (!is_splay_root(x)) {
-    const NodeId y = parent_[x];
+    const NodeId y = nodes_[x].parent;
     if (!is_splay_root(y)) {
-      const NodeId z = parent_[y];
-      const bool zigzig = (child_[2 * std::size_t{y}] == x) == (child_[2 * std::size_t{z}] == y);
+      const NodeId z = nodes_[y].parent;
+      const bool zigzig = (nodes_[y].child[0] == x) == (nodes_[z].child[0] == y);
       rotate(zigzig ? y : x);
     }
     rotate(x);
@@ -54,9 +52,9 @@ void LinkCutTree::splay(NodeId x) {
 
 NodeId LinkCutTree::access(NodeId x) {
   NodeId last = kNoNode;
-  for (NodeId y = x; y != kNoNode; y = parent_[y]) {
+  for (NodeId y = x; y != kNoNode; y = nodes_[y].parent) {
     splay(y);
-    child_[2 * std::size_t{y} + 1] = last;
+    nodes_[y].child[1] = last;
     last = y;
   }
   splay(x);
@@ -65,27 +63,27 @@ NodeId LinkCutTree::access(NodeId x) {
 
 void LinkCutTree::evert(NodeId u) {
   access(u);
-  reversed_[u] ^= 1;
+  nodes_[u].reversed ^= 1;
 }
 
 void LinkCutTree::link(NodeId u, NodeId v) {
   evert(u);
-  parent_[u] = v;
+  nodes_[u].parent = v;
 }
 
 void LinkCutTree::cut(NodeId u, NodeId v) {
   evert(u);
   access(v);
   // The path is u–v alone: u is v's left child, with no children of its own on the path.
-  const NodeId left = child_[2 * std::size_t{v}];
-  child_[2 * std::size_t{v}] = kNoNode;
-  parent_[left] = kNoNode;
+  const NodeId left = nodes_[v].child[0];
+  nodes_[v].child[0] = kNoNode;
+  nodes_[left].parent = kNoNode;
 }
 
 NodeId LinkCutTree::find_root(NodeId u) {
   access(u);
   NodeId x = u;
-  for (push(x); child_[2 * std::size_t{x}] != kNoNode; push(x)) x = child_[2 * std::size_t{x}];
+  for (push(x); nodes_[x].child[0] != kNoNode; push(x)) x = nodes_[x].child[0];
   splay(x);
   return x;
 }

@@ -34,6 +34,24 @@ RC_GTEST_PROP(DynamicConnectivity, AgreesWithUnionFindAndReportsTheForest, ()) {
   std::vector<std::array<NodeId, 2>> ends(capacity);
   std::set<EdgeId> present, forest;  // forest: F_0 as replayed from the return values
   std::uint64_t tree_deletions = 0;
+  // Half the runs start from a bulk insertion of edges 0..k-1, whose forest must be the one
+  // inserting them one by one in id order gives.
+  if (*rc::gen::arbitrary<bool>()) {
+    const auto k = *rc::gen::inRange<EdgeId>(0, capacity);
+    std::vector<NodeId> flat;
+    UnionFind order(n);
+    for (EdgeId e = 0; e < k; ++e) {
+      ends[e] = {*rc::gen::inRange<NodeId>(0, n), *rc::gen::inRange<NodeId>(0, n)};
+      flat.insert(flat.end(), ends[e].begin(), ends[e].end());
+    }
+    dc.insert_all(flat);
+    for (EdgeId e = 0; e < k; ++e) {
+      present.insert(e);
+      const bool joins = ends[e][0] != ends[e][1] && order.unite(ends[e][0], ends[e][1]);
+      RC_ASSERT(dc.is_tree_edge(e) == joins);
+      if (joins) forest.insert(e);
+    }
+  }
   const auto steps = *rc::gen::inRange(1, 300);
   for (int s = 0; s < steps; ++s) {
     const EdgeId e = *rc::gen::inRange<EdgeId>(0, capacity);

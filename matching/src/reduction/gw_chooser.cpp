@@ -70,8 +70,8 @@ GwChooser::GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
   }
 }
 
-void GwChooser::swap(const ReductionGraph& graph, EdgeId in, EdgeId out) {
-  forest_.swap(in, graph.end(in, 0), graph.end(in, 1), out);
+void GwChooser::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
+  forest_.swap(in, a, b, out);
   in_tree_[out] = 0;
   in_tree_[in] = 1;
   ++swaps_;
@@ -92,7 +92,7 @@ void GwChooser::remove(const ReductionGraph& graph, std::span<const EdgeId> edge
     for (EdgeId t : edges) {
       if (internal(t) || !in_tree_[t] || !at_u(t)) continue;
       if (forest_.lca(u, graph.other_end(t, u)) != u) {
-        swap(graph, e, t);  // t leads from u toward the root v
+        swap(e, v, u, t);  // t leads from u toward the root v, which swap need not evert again
         break;
       }
     }
@@ -106,7 +106,7 @@ void GwChooser::remove(const ReductionGraph& graph, std::span<const EdgeId> edge
       if (internal(t) || !in_tree_[t]) continue;
       const EdgeId c = forest_.cover(t);
       if (!contains(edges, c)) {
-        swap(graph, c, t);
+        swap(c, graph.end(c, 0), graph.end(c, 1), t);
         merged = true;
         break;
       }

@@ -60,7 +60,8 @@ class GwChooser final : public Chooser {
   void verify(const ReductionGraph& graph) override;
 
  private:
-  void swap(const ReductionGraph& graph, EdgeId in, EdgeId out);
+  // Swaps in = {a, b} into the forest for out; a is everted (free when it is the root).
+  void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
 
   CoverForest forest_;
   HugeVector<std::uint8_t> in_tree_;

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
@@ -29,6 +30,13 @@ class DynamicConnectivity {
   /// Inserts edge e = {u, v} (e absent, e < edge_capacity; loops and parallel edges allowed).
   /// Returns true when e joined two trees, i.e. became a spanning-forest edge.
   bool insert_edge(EdgeId e, NodeId u, NodeId v);
+
+  /// Inserts edges 0..k-1, edge e = {ends[2e], ends[2e + 1]}, into a structure that has no edge
+  /// yet: the same spanning forest as k calls of insert_edge in id order (an edge is a tree edge
+  /// exactly when it joins two trees; read it back with is_tree_edge), built in O(n + k) near
+  /// linear time: union-find chooses the forest, and each tree's Euler tour becomes one balanced
+  /// splay tree at once instead of k connectivity queries and links.
+  void insert_all(std::span<const NodeId> ends);
 
   /// What a deletion did to the spanning forest: nothing (a non-tree edge), a split, or a split
   /// healed by `replacement` (now a spanning-forest edge).

@@ -15,7 +15,7 @@ class LinkCutTree {
  public:
   explicit LinkCutTree(std::uint32_t node_count);
 
-  std::uint32_t node_count() const { return static_cast<std::uint32_t>(parent_.size()); }
+  std::uint32_t node_count() const { return static_cast<std::uint32_t>(nodes_.size()); }
   /// Makes u the root of its tree.
   void evert(NodeId u);
   /// Adds the edge {u, v}; u and v must be in different trees. u becomes a child of v.
@@ -29,15 +29,21 @@ class LinkCutTree {
   NodeId lca(NodeId u, NodeId v);
 
  private:
+  // A node's children, parent and reversal bit in one 16-byte record, four to a cache line: a
+  // splay step reads x, its parent and grandparent, one line each (they were three or four lines
+  // each in separate arrays).
+  struct Node {
+    NodeId child[2] = {kNoNode, kNoNode};  // left (toward the root), right
+    NodeId parent = kNoNode;               // splay parent, or path parent for a splay root
+    std::uint32_t reversed = 0;
+  };
   bool is_splay_root(NodeId x) const;
   void push(NodeId x);
   void rotate(NodeId x);
   void splay(NodeId x);
   NodeId access(NodeId x);  // returns the last node where the path to the root was switched
 
-  std::vector<NodeId> child_;   // 2 per node: left (toward the root), right
-  std::vector<NodeId> parent_;  // splay parent, or path parent for a splay root
-  std::vector<std::uint8_t> reversed_;
+  std::vector<Node> nodes_;
   std::vector<NodeId> path_;  // scratch for splay's top-down push
 };
 
