@@ -386,16 +386,23 @@ class PlyParser {
     return static_cast<VertexId>(index);
   }
 
-  // The columns the element's properties go to, or none for an element that is not kept.
-  const std::vector<int>* columns_of(const Element& element) const {
-    if (element.name == "vertex") return &layout_.vertex_column;
-    if (element.name == "face") return &layout_.face_column;
-    return nullptr;
-  }
-  void keep(const Element& element, int column, double value) {
-    auto& columns = element.name == "vertex" ? mesh_.attributes.vertex_properties
-                                             : mesh_.attributes.face_properties;
-    columns[column].values.push_back(value);
+  // Where the element's properties go: per property, the column (-1: none); no kept element has
+  // an empty list.
+  struct Kept {
+    const std::vector<int>* column_of = nullptr;
+    std::vector<PropertyColumn>* columns = nullptr;
+
+    bool keeps(std::size_t k) const { return column_of && (*column_of)[k] >= 0; }
+    void add(std::size_t k, double value) const {
+      (*columns)[(*column_of)[k]].values.push_back(value);
+    }
+  };
+  Kept kept(const Element& element) {
+    if (element.name == "vertex") {
+      return {&layout_.vertex_column, &mesh_.attributes.vertex_properties};
+    }
+    if (element.name == "face") return {&layout_.face_column, &mesh_.attributes.face_properties};
+    return {};
   }
 
   // Ends a face record: its corners, and their texture coordinates when the record had some (u v
@@ -428,7 +435,7 @@ class PlyParser {
 
   void read_ascii(const Element& element) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
-    const std::vector<int>* columns = columns_of(element);
+    const Kept columns = kept(element);
     auto fail = [&](const std::string& what) { at_.fail(what); };
     std::string_view line, token;
     for (std::uint64_t i = 0; i < element.count; ++i) {
@@ -464,14 +471,14 @@ class PlyParser {
               if (layout_.xyz[axis] == int(k)) p[axis] = value;
             }
           }
-          if (columns && (*columns)[k] >= 0) {
+          if (columns.keeps(k)) {
             if (is_integer(property.type) && !fits(property.type, whole)) {
               fail(record_name(element, i) + ": value " + std::to_string(whole) +
                    " out of range for the type of property " + property.name);
             }
             // A float property holds what a binary file of the same header would.
             if (property.type == Type::f32) value = static_cast<float>(value);
-            keep(element, (*columns)[k], value);
+            columns.add(k, value);
           }
           continue;
         }
@@ -581,7 +588,7 @@ class PlyParser {
       lines_.pos = in.pos;
       return;
     }
-    const std::vector<int>* columns = columns_of(element);
+    const Kept columns = kept(element);
     for (; i < element.count && !element.properties.empty(); ++i) {
       std::array<double, 3> p{};
       face_.clear();
@@ -599,9 +606,9 @@ class PlyParser {
             for (int axis = 0; axis < 3; ++axis) {
               if (layout_.xyz[axis] == int(k)) p[axis] = value;
             }
-          } else if (columns && (*columns)[k] >= 0) {
+          } else if (columns.keeps(k)) {
             // Kept as read, NaN included: a property is not a coordinate.
-            keep(element, (*columns)[k], in.real(property.type));
+            columns.add(k, in.real(property.type));
           } else {
             in.pos += item;
           }

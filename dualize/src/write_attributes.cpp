@@ -79,7 +79,16 @@ void drop_obj_attributes(const MeshAttributes& a, const char* format, bool keeps
 
 // A property value in text: a whole number for an integer type, a real one otherwise (see
 // Buffer::real), as the OFF reader tells them apart.
+// A binary PLY may hold NaN or infinity in a property; no text reader takes it back.
+void check_finite(const PropertyColumn& column, double value) {
+  if (!std::isfinite(value)) {
+    throw MeshError("property '" + column.name + "' has a value that is not finite (" +
+                    std::to_string(value) + "); a text format cannot hold it");
+  }
+}
+
 void put_value(Buffer& out, const PropertyColumn& column, double value) {
+  check_finite(column, value);
   if (column.type == ScalarType::float32 || column.type == ScalarType::float64) {
     out.real(value);
   } else {
@@ -190,6 +199,7 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     for (const PropertyColumn* column : colour) {
       out.put(' ');
       const double value = column->values[v];
+      check_finite(*column, value);
       out.number(column->type == ScalarType::uint8 ? value / 255 : value);
     }
     out.put('\n');
@@ -201,6 +211,10 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
       out.word(keyword);
       for (int k = 0; k < components; ++k) {
         if (k > 0) out.put(' ');
+        if (!std::isfinite(value[k])) {
+          throw MeshError(std::string("a texture coordinate or normal is not finite (") +
+                          std::to_string(value[k]) + "); OBJ cannot hold it");
+        }
         out.number(value[k]);
       }
       out.put('\n');

@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -102,7 +103,7 @@ std::string difference(const PolygonMesh& a, const PolygonMesh& b) {
   if (a.positions.size() != b.positions.size()) return "vertex counts";
   for (std::size_t v = 0; v < a.positions.size(); ++v) {
     if (a.positions[v] != b.positions[v]) {
-      char buffer[160];
+      char buffer[256];
       std::snprintf(buffer, sizeof buffer,
                     "vertex %zu: %.17g %.17g %.17g against %.17g %.17g %.17g", v, a.positions[v][0],
                     a.positions[v][1], a.positions[v][2], b.positions[v][0], b.positions[v][1],
@@ -450,6 +451,16 @@ TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
   mesh.attributes.face_properties[0] = {"big", ScalarType::uint8, {256}};
   EXPECT_THROW(write_mesh((dir / "m.ply").string(), mesh), MeshError);
   EXPECT_FALSE(fs::exists(dir / "m.ply"));
+  // A binary PLY holds a NaN colour; the text formats cannot.
+  mesh.attributes.face_properties.clear();
+  for (const char* name : {"red", "green", "blue"}) {
+    mesh.attributes.vertex_properties.push_back({name, ScalarType::float32, {0.5, NAN, 1}});
+  }
+  EXPECT_TRUE(write_mesh((dir / "nan.ply").string(), mesh).empty());
+  EXPECT_TRUE(
+      std::isnan(read_mesh((dir / "nan.ply").string()).attributes.vertex_properties[1].values[1]));
+  EXPECT_THROW(write_mesh((dir / "nan.off").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "nan.obj").string(), mesh), MeshError);
 }
 
 // ---------------------------------------------------------------------------------------------
