@@ -438,6 +438,26 @@ TEST(AttributeConversions, EachFormatSaysWhatItDrops) {
   EXPECT_EQ(slurp(dir / "p.off").substr(0, 27), "COFF\n4 2 0\n0 0 0 255 0 0\n1 ");
 }
 
+TEST(AttributeConversions, OffIntoObjAndPly) {
+  const fs::path dir = scratch_dir();
+  const PolygonMesh off = parse_mesh(
+      "CNOFF\n3 1 0\n0 0 0 0 0 1 255 0 0 7\n1 0 0 0 0 1 0 255 0 7\n0 1 0 0 0 1 0 0 255 7\n"
+      "3 0 1 2 1 2 3\n",
+      MeshFormat::off, "in");
+  EXPECT_EQ(joined(write_mesh((dir / "c.obj").string(), off)),
+            "vertex property 'nx': OBJ has no place for it\n"
+            "vertex property 'ny': OBJ has no place for it\n"
+            "vertex property 'nz': OBJ has no place for it\n"
+            "vertex property 'alpha': OBJ has no place for it\n"
+            "face property 'red': OBJ has no place for it\n"
+            "face property 'green': OBJ has no place for it\n"
+            "face property 'blue': OBJ has no place for it\n");
+  EXPECT_NE(slurp(dir / "c.obj").find("v 1 0 0 0 1 0\n"), std::string::npos);
+  // PLY holds every OFF property with its type.
+  EXPECT_TRUE(write_mesh((dir / "c.ply").string(), off).empty());
+  EXPECT_EQ(difference(off, read_mesh((dir / "c.ply").string())), "");
+}
+
 TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
   const fs::path dir = scratch_dir();
   PolygonMesh mesh = parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", MeshFormat::obj, "in");
