@@ -44,6 +44,40 @@ PolygonMesh mixed_polygons() {
   return mesh;
 }
 
+// The mesh with every kind of attribute the writers write back: a texture coordinate and normal
+// per corner (some corners without), materials, groups, objects and smoothing groups per face,
+// a material library, byte colours per vertex and a float property per face; each format's
+// writer keeps what it holds, so the seeds hold the readers' attribute syntax.
+PolygonMesh with_attributes(PolygonMesh mesh) {
+  MeshAttributes& a = mesh.attributes;
+  for (std::uint32_t c = 0; c < mesh.corners.size(); ++c) {
+    a.texcoords.push_back({0.25 * (c % 5), 0.125 * (c % 7), 0});
+    a.corner_texcoord.push_back(c % 9 == 4 ? kNoAttribute : c);
+    a.corner_normal.push_back(c % 3);
+  }
+  a.normals = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+  a.material_names = {"red", "blue"};
+  a.group_names = {"left part"};
+  a.object_names = {"thing"};
+  a.material_libraries = {"scene.mtl"};
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) {
+    a.face_material.push_back(f % 2);
+    a.face_group.push_back(f < 2 ? kNoAttribute : 0);
+    a.face_object.push_back(0);
+    a.face_smoothing.push_back(f % 3);
+  }
+  for (const char* name : {"red", "green", "blue"}) {
+    PropertyColumn column{name, ScalarType::uint8, {}};
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v)
+      column.values.push_back(double(v % 256));
+    a.vertex_properties.push_back(std::move(column));
+  }
+  PropertyColumn quality{"quality", ScalarType::float32, {}};
+  for (std::uint32_t f = 0; f < mesh.face_count(); ++f) quality.values.push_back(0.5 * f);
+  a.face_properties.push_back(std::move(quality));
+  return mesh;
+}
+
 void save(const fs::path& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary) << bytes;
 }
@@ -152,6 +186,9 @@ int main(int argc, char** argv) {
   for (const auto& [name, mesh] : meshes) {
     for (const char* format : {"off", "obj", "ply"}) {
       write_mesh((dir / format / (name + "." + format)).string(), mesh);
+    }
+    for (const char* format : {"off", "obj", "ply"}) {
+      write_mesh((dir / format / (name + "-attributes." + format)).string(), with_attributes(mesh));
     }
     save(dir / "obj" / (name + "-spellings.obj"), obj_spellings(mesh));
     save(dir / "ply" / (name + "-ascii.ply"), ply_other(mesh, true));

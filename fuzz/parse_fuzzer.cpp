@@ -1,7 +1,7 @@
 // libFuzzer target for one mesh reader (PETERSEN_FUZZ_FORMAT: obj, off or ply). Bad bytes must
 // give a MeshError; any other exception, a crash, a sanitizer report, a hang or a huge
-// allocation is a finding. What parses must be a well-formed polygon mesh, and the triangle
-// reader must agree with the polygon reader on the same bytes.
+// allocation is a finding. What parses must be a well-formed polygon mesh with consistent
+// attributes, and the triangle reader must agree with the polygon reader on the same bytes.
 
 #include <cstdint>
 #include <cstdlib>
@@ -45,6 +45,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   if (parsed) {
     require(mesh.face_count() > 0);
+    // What the reader keeps beside the faces is consistent with them (a MeshError here is a
+    // reader's bug, not bad input).
+    try {
+      check_attributes(mesh);
+    } catch (const MeshError&) {
+      std::abort();
+    }
     require(mesh.all_triangles()
                 ? mesh.corners.size() % 3 == 0
                 : mesh.face_start.front() == 0 && mesh.face_start.back() == mesh.corners.size());

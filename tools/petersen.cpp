@@ -39,8 +39,23 @@ class Clock {
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
 
+// Prints on stderr what a reader read past or a writer had no place for, one warning per kind of
+// thing, naming the file.
+void warn_dropped(const std::string& path, const std::vector<std::string>& dropped) {
+  for (const std::string& item : dropped) {
+    std::fprintf(stderr, "petersen: warning: %s: dropped %s\n", path.c_str(), item.c_str());
+  }
+}
+
+PolygonMesh read_mesh_warning(const std::string& path) {
+  std::vector<std::string> dropped;
+  PolygonMesh mesh = read_mesh(path, &dropped);
+  warn_dropped(path, dropped);
+  return mesh;
+}
+
 int info(const std::string& path) {
-  const PolygonMesh mesh = read_mesh(path);
+  const PolygonMesh mesh = read_mesh_warning(path);
   std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
   // The quads' shape, by the measure `petersen quad` reports and --objective quality minimises.
   const QualityFigures quality = quality_figures(quad_costs(mesh));
@@ -62,7 +77,7 @@ struct RenderArgs {
 };
 
 int render(const RenderArgs& args) {
-  const PolygonMesh mesh = read_mesh(args.input);
+  const PolygonMesh mesh = read_mesh_warning(args.input);
   const MeshReport report = inspect_mesh(mesh);
   std::string faces;
   for (const auto& [arity, count] : report.faces_by_arity) {
@@ -131,7 +146,7 @@ int quad(const QuadArgs& args) {
   report.options.cross = cross;
   report.options.threads = args.threads;
   Clock total, clock;
-  PolygonMesh mesh = read_mesh(args.input);
+  PolygonMesh mesh = read_mesh_warning(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges);
@@ -151,7 +166,7 @@ int quad(const QuadArgs& args) {
   const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
   mesh = {};
   clock.lap();
-  write_mesh(args.output, result.mesh);
+  warn_dropped(args.output, write_mesh(args.output, result.mesh));
   report.write_seconds = clock.lap();
   report.total_seconds = total.lap();
   print_summary(stdout, report);

@@ -1,6 +1,9 @@
 // PLY: a text header declaring elements and their properties, then the data in ascii (one record
-// per line) or binary (little or big endian). Only vertex x, y, z and the face index list are
-// kept; every other property and element is read past according to its declared type.
+// per line) or binary (little or big endian). Kept: vertex x, y, z, the face index list, every
+// other scalar property of a vertex or face (a PropertyColumn with its declared type; a float
+// written in ascii is rounded to float, as a binary file would hold it) and MeshLab's per-corner
+// "texcoord" face list (u v per corner, or empty). Other lists and other elements are read past
+// according to their declared type and reported as dropped.
 
 #include <bit>
 #include <cstring>
@@ -69,10 +72,38 @@ struct Element {
 
 enum class Encoding { ascii, little, big };
 
-// What the reader keeps: the slots of x, y, z in the vertex element and of the face list.
+ScalarType scalar_type(Type type) {
+  return static_cast<ScalarType>(static_cast<std::uint8_t>(type));
+}
+static_assert(static_cast<int>(Type::f64) == static_cast<int>(ScalarType::float64));
+
+// Whether a whole number read from ascii fits the declared integer type.
+bool fits(Type type, std::int64_t value) {
+  switch (type) {
+    case Type::i8:
+      return value >= -128 && value <= 127;
+    case Type::u8:
+      return value >= 0 && value <= 255;
+    case Type::i16:
+      return value >= -32768 && value <= 32767;
+    case Type::u16:
+      return value >= 0 && value <= 65535;
+    case Type::i32:
+      return value >= -2147483648ll && value <= 2147483647ll;
+    case Type::u32:
+      return value >= 0 && value <= 4294967295ll;
+    default:
+      return true;
+  }
+}
+
+// What the reader keeps: the slots of x, y, z in the vertex element, of the face's corner and
+// texcoord lists, and for every other vertex or face property the column it goes to (-1: none).
 struct Layout {
   int xyz[3] = {-1, -1, -1};
   int face_list = -1;
+  int texcoord_list = -1;
+  std::vector<int> vertex_column, face_column;
 };
 
 // Reads binary scalars with a bounds check on every read, so truncation is always caught.
@@ -139,8 +170,14 @@ struct BinaryCursor {
 
 class PlyParser {
  public:
-  PlyParser(std::string_view bytes, const std::string& source, FaceKinds kinds)
-      : bytes_(bytes), source_(source), kinds_(kinds), lines_{bytes}, at_{source, lines_} {}
+  PlyParser(std::string_view bytes, const std::string& source, FaceKinds kinds,
+            std::vector<std::string>& dropped)
+      : bytes_(bytes),
+        source_(source),
+        kinds_(kinds),
+        dropped_(dropped),
+        lines_{bytes},
+        at_{source, lines_} {}
 
   PolygonMesh parse() {
     read_header();
@@ -251,8 +288,46 @@ class PlyParser {
         if (!is_integer(p.type)) fail_header(*face, "face indices must have an integer type");
         layout_.face_list = static_cast<int>(i);
       }
+      if (p.is_list && p.name == "texcoord") layout_.texcoord_list = static_cast<int>(i);
     }
     if (layout_.face_list < 0) fail_header(*face, "face element has no vertex_indices list");
+    keep_properties(*vertex, true, layout_.vertex_column, mesh_.attributes.vertex_properties);
+    keep_properties(*face, false, layout_.face_column, mesh_.attributes.face_properties);
+    for (const Element& element : elements_) {
+      if (&element != vertex && &element != face) {
+        dropped_.push_back("element '" + element.name + "' (" + std::to_string(element.count) +
+                           " records)");
+      }
+    }
+    // Written back as float when all three were; anything else is written as double, which
+    // holds every type exactly. Only binary files: ascii positions keep their digits.
+    bool all_float = encoding_ != Encoding::ascii;
+    for (int axis : layout_.xyz)
+      all_float = all_float && vertex->properties[axis].type == Type::f32;
+    mesh_.attributes.position_type = all_float ? ScalarType::float32 : ScalarType::float64;
+  }
+
+  // Maps each property of the element that is not a slot of the layout to a new column, or
+  // drops it (a list, or an x, y, z declared twice).
+  void keep_properties(const Element& element, bool is_vertex, std::vector<int>& column_of,
+                       std::vector<PropertyColumn>& columns) {
+    column_of.assign(element.properties.size(), -1);
+    for (std::size_t k = 0; k < element.properties.size(); ++k) {
+      const Property& p = element.properties[k];
+      const int slot = static_cast<int>(k);
+      if (is_vertex ? (slot == layout_.xyz[0] || slot == layout_.xyz[1] || slot == layout_.xyz[2])
+                    : (slot == layout_.face_list || slot == layout_.texcoord_list)) {
+        continue;
+      }
+      const bool duplicate_axis = is_vertex && (p.name == "x" || p.name == "y" || p.name == "z");
+      if (p.is_list || duplicate_axis) {
+        dropped_.push_back(element.name + " " + (p.is_list ? "list " : "") + "property '" + p.name +
+                           "'" + (duplicate_axis ? " (declared again)" : ""));
+        continue;
+      }
+      column_of[k] = static_cast<int>(columns.size());
+      columns.push_back({p.name, scalar_type(p.type), {}});
+    }
   }
 
   [[noreturn]] void fail_header(const Element& element, const std::string& what) const {
@@ -274,9 +349,19 @@ class PlyParser {
                                " records, more than the remaining " + std::to_string(remaining) +
                                " bytes can hold");
     }
-    if (element.name == "vertex") mesh_.positions.reserve(element.count);
+    if (element.name == "vertex") {
+      mesh_.positions.reserve(element.count);
+      for (PropertyColumn& column : mesh_.attributes.vertex_properties) {
+        column.values.reserve(element.count);
+      }
+    }
     // Triangles are the common case; a face record holds at least one byte per corner.
-    if (element.name == "face") mesh_.corners.reserve(std::min(3 * element.count, remaining));
+    if (element.name == "face") {
+      mesh_.corners.reserve(std::min(3 * element.count, remaining));
+      for (PropertyColumn& column : mesh_.attributes.face_properties) {
+        column.values.reserve(element.count);
+      }
+    }
   }
 
   std::string record_name(const Element& element, std::uint64_t i) const {
@@ -301,8 +386,56 @@ class PlyParser {
     return static_cast<VertexId>(index);
   }
 
+  // Where the element's properties go: per property, the column (-1: none); no kept element has
+  // an empty list.
+  struct Kept {
+    const std::vector<int>* column_of = nullptr;
+    std::vector<PropertyColumn>* columns = nullptr;
+
+    bool keeps(std::size_t k) const { return column_of && (*column_of)[k] >= 0; }
+    void add(std::size_t k, double value) const {
+      (*columns)[(*column_of)[k]].values.push_back(value);
+    }
+  };
+  Kept kept(const Element& element) {
+    if (element.name == "vertex") {
+      return {&layout_.vertex_column, &mesh_.attributes.vertex_properties};
+    }
+    if (element.name == "face") return {&layout_.face_column, &mesh_.attributes.face_properties};
+    return {};
+  }
+
+  // Ends a face record: its corners, and their texture coordinates when the record had some (u v
+  // per corner) or the file has some elsewhere (none for these corners then).
+  void add_face(std::uint64_t i, const auto& fail) {
+    MeshAttributes& attributes = mesh_.attributes;
+    const std::size_t corners_before = mesh_.corners.size();
+    if (!texcoord_values_.empty()) {
+      if (texcoord_values_.size() != 2 * face_.size()) {
+        fail("face " + std::to_string(i) + ": texcoord list of " +
+             std::to_string(texcoord_values_.size()) + " values for " +
+             std::to_string(face_.size()) + " corners (expected 2 per corner, or none)");
+      }
+      if (attributes.texcoords.size() + face_.size() >= kNoAttribute) {
+        fail("more than 2^32 - 2 texture coordinates");
+      }
+      for (std::size_t k = 0; k < face_.size(); ++k) {
+        push_attribute(attributes.corner_texcoord,
+                       static_cast<std::uint32_t>(attributes.texcoords.size()), kNoAttribute,
+                       corners_before + k);
+        attributes.texcoords.push_back({texcoord_values_[2 * k], texcoord_values_[2 * k + 1], 0});
+      }
+    } else if (!attributes.corner_texcoord.empty()) {
+      attributes.corner_texcoord.insert(attributes.corner_texcoord.end(), face_.size(),
+                                        kNoAttribute);
+    }
+    texcoord_values_.clear();
+    mesh_.add_face(face_);
+  }
+
   void read_ascii(const Element& element) {
     const bool is_vertex = element.name == "vertex", is_face = element.name == "face";
+    const Kept columns = kept(element);
     auto fail = [&](const std::string& what) { at_.fail(what); };
     std::string_view line, token;
     for (std::uint64_t i = 0; i < element.count; ++i) {
@@ -326,19 +459,26 @@ class PlyParser {
         if (!property.is_list) {
           next();
           double value = 0;
-          std::int64_t unused = 0;
-          if (!(is_integer(property.type) ? text::parse_integer(token, unused)
+          std::int64_t whole = 0;
+          if (!(is_integer(property.type) ? text::parse_integer(token, whole)
                                           : text::parse_real(token, value))) {
             fail(record_name(element, i) + ": bad value " + text::Located::quote(token) +
                  " for property " + property.name);
           }
+          if (is_integer(property.type)) value = static_cast<double>(whole);
           if (is_vertex) {
             for (int axis = 0; axis < 3; ++axis) {
-              if (layout_.xyz[axis] == int(k)) {
-                if (is_integer(property.type)) value = static_cast<double>(unused);
-                p[axis] = value;
-              }
+              if (layout_.xyz[axis] == int(k)) p[axis] = value;
             }
+          }
+          if (columns.keeps(k)) {
+            if (is_integer(property.type) && !fits(property.type, whole)) {
+              fail(record_name(element, i) + ": value " + std::to_string(whole) +
+                   " out of range for the type of property " + property.name);
+            }
+            // A float property holds what a binary file of the same header would.
+            if (property.type == Type::f32) value = static_cast<float>(value);
+            columns.add(k, value);
           }
           continue;
         }
@@ -348,6 +488,7 @@ class PlyParser {
           fail(record_name(element, i) + ": bad list length " + text::Located::quote(token));
         }
         const bool corners = is_face && layout_.face_list == int(k);
+        const bool texcoords = is_face && layout_.texcoord_list == int(k);
         if (corners) check_corner_count(i, items, fail);
         for (std::int64_t j = 0; j < items; ++j) {
           next();
@@ -358,10 +499,15 @@ class PlyParser {
             fail(record_name(element, i) + ": bad list value " + text::Located::quote(token));
           }
           if (corners) face_.push_back(checked_index(element, i, index, fail));
+          if (texcoords) {
+            if (is_integer(property.type)) value = static_cast<double>(index);
+            if (property.type == Type::f32) value = static_cast<float>(value);
+            texcoord_values_.push_back(value);
+          }
         }
       }
       if (is_vertex) mesh_.positions.push_back(p);
-      if (is_face) mesh_.add_face(face_);
+      if (is_face) add_face(i, fail);
     }
   }
 
@@ -442,6 +588,7 @@ class PlyParser {
       lines_.pos = in.pos;
       return;
     }
+    const Kept columns = kept(element);
     for (; i < element.count && !element.properties.empty(); ++i) {
       std::array<double, 3> p{};
       face_.clear();
@@ -459,6 +606,9 @@ class PlyParser {
             for (int axis = 0; axis < 3; ++axis) {
               if (layout_.xyz[axis] == int(k)) p[axis] = value;
             }
+          } else if (columns.keeps(k)) {
+            // Kept as read, NaN included: a property is not a coordinate.
+            columns.add(k, in.real(property.type));
           } else {
             in.pos += item;
           }
@@ -477,12 +627,15 @@ class PlyParser {
           for (std::int64_t j = 0; j < items; ++j) {
             face_.push_back(checked_index(element, i, in.integer(property.type), fail));
           }
+        } else if (is_face && layout_.texcoord_list == int(k)) {
+          for (std::int64_t j = 0; j < items; ++j)
+            texcoord_values_.push_back(in.real(property.type));
         } else {
           in.pos += static_cast<std::size_t>(items) * item;
         }
       }
       if (is_vertex) mesh_.positions.push_back(p);
-      if (is_face) mesh_.add_face(face_);
+      if (is_face) add_face(i, fail);
     }
     lines_.pos = in.pos;
   }
@@ -490,20 +643,23 @@ class PlyParser {
   std::string_view bytes_;
   const std::string& source_;
   FaceKinds kinds_;
+  std::vector<std::string>& dropped_;
   text::Lines lines_;
   text::Located at_;
   Encoding encoding_ = Encoding::ascii;
   std::vector<Element> elements_;
   Layout layout_;
   PolygonMesh mesh_;
-  std::vector<VertexId> face_;  // the corners of the face being read, reused
+  std::vector<VertexId> face_;           // the corners of the face being read, reused
+  std::vector<double> texcoord_values_;  // its texcoord list, u v per corner
   std::uint64_t vertex_count_ = 0;
 };
 
 }  // namespace
 
-PolygonMesh parse_ply(std::string_view bytes, const std::string& source, FaceKinds kinds) {
-  return PlyParser(bytes, source, kinds).parse();
+PolygonMesh parse_ply(std::string_view bytes, const std::string& source, FaceKinds kinds,
+                      std::vector<std::string>& dropped) {
+  return PlyParser(bytes, source, kinds, dropped).parse();
 }
 
 }  // namespace petersen

@@ -8,18 +8,20 @@ namespace petersen {
 namespace {
 
 PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& source,
-                  FaceKinds kinds) {
+                  FaceKinds kinds, std::vector<std::string>* dropped) {
   if (bytes.empty()) throw MeshError(source + ": empty file");
+  std::vector<std::string> ignored;
+  std::vector<std::string>& out = dropped ? *dropped : ignored;
   PolygonMesh mesh;
   switch (format) {
     case MeshFormat::off:
-      mesh = parse_off(bytes, source, kinds);
+      mesh = parse_off(bytes, source, kinds, out);
       break;
     case MeshFormat::obj:
-      mesh = parse_obj(bytes, source, kinds);
+      mesh = parse_obj(bytes, source, kinds, out);
       break;
     case MeshFormat::ply:
-      mesh = parse_ply(bytes, source, kinds);
+      mesh = parse_ply(bytes, source, kinds, out);
       break;
   }
   // A file with no faces is not a mesh the library can do anything with; say so here rather
@@ -52,24 +54,26 @@ MeshFormat mesh_format_of(const std::string& path) {
   throw MeshError(path + ": unknown mesh format (expected .off, .obj or .ply, optionally .gz)");
 }
 
-PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source) {
-  return parse(bytes, format, source, FaceKinds::polygons);
+PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
+                       std::vector<std::string>* dropped) {
+  return parse(bytes, format, source, FaceKinds::polygons, dropped);
 }
 
-PolygonMesh read_mesh(const std::string& path) {
+PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped) {
   const MeshFormat format = mesh_format_of(path);
-  return parse(read_file_bytes(path).view(), format, path, FaceKinds::polygons);
+  return parse(read_file_bytes(path).view(), format, path, FaceKinds::polygons, dropped);
 }
 
 TriangleMesh parse_triangle_mesh(std::string_view bytes, MeshFormat format,
                                  const std::string& source) {
-  return to_triangles(parse(bytes, format, source, FaceKinds::triangles));
+  return to_triangles(parse(bytes, format, source, FaceKinds::triangles, nullptr));
 }
 
 TriangleMesh read_triangle_mesh(const std::string& path) {
   const MeshFormat format = mesh_format_of(path);
   // The file's bytes are freed at the end of this statement, before the conversion.
-  PolygonMesh mesh = parse(read_file_bytes(path).view(), format, path, FaceKinds::triangles);
+  PolygonMesh mesh =
+      parse(read_file_bytes(path).view(), format, path, FaceKinds::triangles, nullptr);
   return to_triangles(std::move(mesh));
 }
 

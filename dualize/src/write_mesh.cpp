@@ -8,6 +8,7 @@
 #include "file_bytes.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "write_buffer.hpp"
 
 namespace petersen {
 
@@ -21,40 +22,6 @@ struct MeshView {
   std::size_t corner_count = 0;
   std::uint32_t max_arity = 0;
   FaceAt face;
-};
-
-// The file's bytes, built in memory and written at once. The buffer is sized from an upper
-// bound of the output (every number at its longest), so it never grows and is never filled
-// first; on huge pages and recycled like the meshes' arrays (huge_pages.hpp).
-class Buffer {
- public:
-  explicit Buffer(std::size_t bound) : data_(make_huge_array<char>(bound)), end_(data_.get()) {}
-
-  std::string_view view() const { return {data_.get(), std::size_t(end_ - data_.get())}; }
-  void word(std::string_view s) {
-    std::memcpy(end_, s.data(), s.size());
-    end_ += s.size();
-  }
-  void put(char c) { *end_++ = c; }
-  // std::to_chars: the shortest text that reads back as the same double, no locale.
-  template <typename T>
-  void number(T x) {
-    end_ = std::to_chars(end_, end_ + kLongestNumber, x).ptr;
-  }
-  template <typename T>
-  void binary(const T* values, std::size_t count) {
-    static_assert(std::endian::native == std::endian::little,
-                  "binary PLY writing assumes a little-endian host");
-    std::memcpy(end_, values, count * sizeof(T));
-    end_ += count * sizeof(T);
-  }
-
-  // "-2.2250738585072014e-308" is 24 characters; a 64-bit integer has at most 20 digits.
-  static constexpr std::size_t kLongestNumber = 24;
-
- private:
-  HugeArray<char> data_;
-  char* end_;
 };
 
 template <class FaceAt>
@@ -165,7 +132,19 @@ void write_fixed(const std::string& path, std::span<const std::array<double, 3>>
 
 }  // namespace
 
-void write_mesh(const std::string& path, const PolygonMesh& mesh) {
+std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& mesh) {
+  check_attributes(mesh);
+  const MeshFormat format = mesh_format_of(path);
+  std::vector<std::string> dropped;
+  const bool float_positions =
+      format == MeshFormat::ply && mesh.attributes.position_type == ScalarType::float32;
+  if (!mesh.attributes.empty() || float_positions) {
+    const Buffer bytes = format == MeshFormat::off   ? off_with_attributes(mesh, dropped)
+                         : format == MeshFormat::obj ? obj_with_attributes(mesh, dropped)
+                                                     : ply_with_attributes(mesh, dropped);
+    write_file_bytes(path, bytes.view());
+    return dropped;
+  }
   std::uint32_t max_arity = mesh.face_count() > 0 ? 3 : 0;
   if (!mesh.all_triangles()) {
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
@@ -175,6 +154,7 @@ void write_mesh(const std::string& path, const PolygonMesh& mesh) {
   auto face = [&mesh](std::size_t f) { return mesh.face(static_cast<FaceId>(f)); };
   write_view(path, MeshView<decltype(face)>{mesh.positions, mesh.face_count(), mesh.corners.size(),
                                             max_arity, face});
+  return dropped;
 }
 
 void write_quad_mesh(const std::string& path, const QuadMesh& mesh) {

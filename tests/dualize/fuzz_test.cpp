@@ -46,8 +46,18 @@ const std::vector<Seed>& seeds() {
       {MeshFormat::off,
        "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"},
       {MeshFormat::obj,
-       "# t\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nf 1 3 2\nf 1/1 2/1 4/1\nf 2//1 3//1 "
-       "4//1\nf -4/1/1 -1/1/1 -2/1/1\n"},
+       "# t\nmtllib a.mtl\nv 0 0 0 1 0 0\nv 1 0 0 0 1 0\nv 0 1 0 0 0 1\nv 0 0 1 1 1 1\nvt 0 0\n"
+       "vt 1 0 0.5\nvn 0 0 1\no thing\ng a group\nusemtl m\ns 1\nf 1 3 2\nf 1/1 2/-1 4/1\n"
+       "usemtl n\ns off\nl 1 2\nf 2//1 3//1 4//-1\ng\nf -4/1/1 -1/2/1 -2/1/1\n"},
+      {MeshFormat::off,
+       "CNOFF\n4 4 6\n0 0 0 0 0 1 255 0 0 255\n1 0 0 0 0 1 0 255 0 255\n0 1 0 0 0 1 0 0 255 9\n"
+       "0 0 1 0 0 1 9 9 9 9\n3 0 2 1 0.5 0.5 0.5\n3 0 1 3\n3 1 2 3 1 0 0\n3 0 3 2 7\n"},
+      {MeshFormat::ply,
+       "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty uchar red\nproperty "
+       "float y\nproperty float z\nproperty list uchar int n\nelement face 4\nproperty list "
+       "uchar int vertex_indices\nproperty short q\nproperty list uchar float texcoord\nelement "
+       "edge 1\nproperty int a\nend_header\n0 1 0 0 0\n1 2 0 0 1 5\n0 3 1 0 0\n0 4 0 1 0\n"
+       "3 0 2 1 -3 6 0 0 1 0 1 1\n3 0 1 3 4 0\n3 1 2 3 5 0\n3 0 3 2 6 6 0 0 0 0 0 0\n7\n"},
       {MeshFormat::ply,
        "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty "
        "float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 "

@@ -238,7 +238,7 @@ TEST(ParsePolygons, EveryFormatKeepsFacesOfAnyArityExactly) {
   const std::string vertices = "0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n";
   const std::string off = "OFF\n5 3 0\n" + vertices + "4 0 1 2 3\n3 0 2 4 255 0 0\n5 4 3 2 4 1\n";
   const std::string obj =
-      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 0\n"
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 0\nvt 0 0\nvn 0 0 1\n"
       "f 1 2/1 3//1 4/1/1\nf 1 3 5\nf -1 4 -3 5 -4\n";
   const std::string ply_ascii =
       "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\n"

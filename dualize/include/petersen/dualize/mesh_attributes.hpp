@@ -63,6 +63,9 @@ struct MeshAttributes {
   std::vector<PropertyColumn> vertex_properties;
   /// PLY face scalar properties (the corner list is the face itself), and OFF face colours.
   std::vector<PropertyColumn> face_properties;
+  /// The type a PLY declared for x, y and z, so that a float PLY is written back as float; other
+  /// formats have no type and leave float64. Not an attribute: empty() ignores it.
+  ScalarType position_type = ScalarType::float64;
 
   bool has_corner_attributes() const { return !corner_texcoord.empty() || !corner_normal.empty(); }
   bool has_face_attributes() const {
