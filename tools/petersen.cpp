@@ -12,13 +12,13 @@
 #include "match_command.hpp"
 #include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
-#include "petersen/render/quad_quality.hpp"
 #include "petersen/render/render_mesh.hpp"
 #include "petersen/version.hpp"
 #include "run_report.hpp"
@@ -42,6 +42,9 @@ class Clock {
 int info(const std::string& path) {
   const PolygonMesh mesh = read_mesh(path);
   std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
+  // The quads' shape, by the measure `petersen quad` reports and --objective quality minimises.
+  const QualityFigures quality = quality_figures(quad_costs(mesh));
+  if (quality.quads > 0) std::printf("quality: %s\n", describe(quality).c_str());
   return 0;
 }
 
@@ -73,7 +76,7 @@ int render(const RenderArgs& args) {
                      std::to_string(report.vertices) + " vertices, " +
                          std::to_string(report.faces) + " faces (" + faces + " corners), " +
                          std::to_string(report.boundary_loops) + " boundary loops"};
-  const QuadQualityFigures quality = quality_figures(quad_costs(mesh));
+  const QualityFigures quality = quality_figures(quad_costs(mesh));
   if (quality.quads > 0) options.caption.push_back(describe(quality));
   render_mesh(mesh, args.output, options);
   std::printf("%s written\n", args.output.c_str());
@@ -87,7 +90,7 @@ struct QuadArgs {
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   bool all_quad = false;
-  std::optional<double> sharp_angle;
+  std::optional<double> sharp_angle, max_corner_deviation;
   std::string keep_edges;
   std::vector<std::string> cross;
 };
@@ -103,7 +106,7 @@ int quad(const QuadArgs& args) {
   std::vector<CutCause> cross;
   for (const std::string& name : args.cross) {
     const auto cause = parse_cut_cause(name);
-    if (!cause || *cause < CutCause::uv_seam) {
+    if (!cause || !is_attribute_cause(*cause)) {
       throw CLI::ValidationError("--cross",
                                  "not a cut of the mesh's attributes: " + name +
                                      " (uv_seam, normal_seam, material, group, object, smoothing "
@@ -131,6 +134,7 @@ int quad(const QuadArgs& args) {
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges);
   report.options.cuts.sharp_angle_degrees = args.sharp_angle;
+  report.options.max_corner_deviation = args.max_corner_deviation;
   report.options.cuts.user_edges = keep_edges;
   report.load_seconds = clock.lap();
   QuadResult result;
@@ -178,6 +182,7 @@ struct GenerateArgs {
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
   std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
   bool dents = false;
+  double jitter = 0.1;
   std::uint64_t seed = 1;
 };
 
@@ -185,6 +190,13 @@ PolygonMesh generated_surface(const GenerateArgs& args) {
   if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
   if (args.kind == "projective") return projective_plane(args.subdivision);
   if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
+  if (args.kind == "jittered-grid" || args.kind == "jittered-torus") {
+    return jittered_grid({.nx = args.nx,
+                          .ny = args.ny,
+                          .jitter = args.jitter,
+                          .torus = args.kind == "jittered-torus",
+                          .seed = args.seed});
+  }
   TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
@@ -222,7 +234,7 @@ int main(int argc, char** argv) {
   CLI::App* info_cmd =
       app.add_subcommand("info",
                          "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
-                         "orientability and genus");
+                         "orientability, genus and the quads' worst-corner figures");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
   QuadArgs quad_args;
@@ -250,6 +262,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
                        "never pair across an edge whose triangles fold by more than DEG degrees");
+  quad_cmd->add_option("--max-corner-deviation", quad_args.max_corner_deviation,
+                       "only pair two triangles whose quad's worst corner is at most DEG degrees "
+                       "from 90 (Blender's threshold mode, exact: the maximum pairing of what is "
+                       "allowed, the cheapest with --objective quality); others stay triangles");
   quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
                        "never pair across these edges: a file of vertex id pairs, one per line");
   quad_cmd
@@ -289,7 +305,8 @@ int main(int argc, char** argv) {
   CLI::App* gen_cmd = app.add_subcommand(
       "generate",
       "Write a test triangulation: a voxel plate with holes (genus holes-x*holes-y) or dents "
-      "(genus 0), a Klein bottle, a projective plane or an open grid; optionally with holes, "
+      "(genus 0), a Klein bottle, a projective plane, an open grid or a jittered grid or torus; "
+      "optionally with holes, "
       "fins, pinched vertices and flipped faces");
   gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")->required();
   gen_cmd->add_option("--holes-x", gen_args.holes_x)->capture_default_str();
@@ -307,12 +324,19 @@ int main(int argc, char** argv) {
   gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
   gen_cmd
       ->add_option("--kind", gen_args.kind,
-                   "plate, klein (Klein bottle), projective (projective plane) or open-grid")
-      ->check(CLI::IsMember({"plate", "klein", "projective", "open-grid"}))
+                   "plate, klein (Klein bottle), projective (projective plane), open-grid, "
+                   "jittered-grid or jittered-torus (near-square quads cut along random "
+                   "diagonals)")
+      ->check(CLI::IsMember(
+          {"plate", "klein", "projective", "open-grid", "jittered-grid", "jittered-torus"}))
       ->capture_default_str();
-  gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and open-grid")
+  gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and the grids")
       ->capture_default_str();
-  gen_cmd->add_option("--ny", gen_args.ny, "grid rows of klein and open-grid")
+  gen_cmd->add_option("--ny", gen_args.ny, "grid rows of klein and the grids")
+      ->capture_default_str();
+  gen_cmd
+      ->add_option("--jitter", gen_args.jitter,
+                   "jittered grids: how far a vertex may move, a fraction of the spacing")
       ->capture_default_str();
   gen_cmd->add_option("--holes", gen_args.holes, "random patches of faces to remove");
   gen_cmd->add_option("--fins", gen_args.fins, "triangles to add on edges (non-manifold edges)");

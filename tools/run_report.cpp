@@ -75,6 +75,11 @@ void print_summary(std::FILE* out, const RunReport& r) {
                " non-convex, total %.4f%s\n",
                s.quality_median, s.quality_p95, s.nonconvex_quads, s.objective_total,
                s.optimality_certified ? " (minimum certified)" : "");
+  if (r.options.max_corner_deviation) {
+    std::fprintf(out, "threshold   quads of at most %g degrees; %" PRIu64 " pairs over it cut\n",
+                 *r.options.max_corner_deviation,
+                 s.cuts.by_cause[static_cast<int>(CutCause::shape)]);
+  }
   if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
     std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",
                  s.added_vertices, s.split_quads, s.all_quad_seconds);

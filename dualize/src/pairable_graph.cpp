@@ -12,9 +12,9 @@ namespace petersen {
 namespace {
 
 constexpr std::string_view kCauseNames[kCutCauses] = {
-    "boundary", "non_manifold", "polygon",   "degenerate",   "duplicate",
-    "user",     "sharp",        "uv_seam",   "normal_seam",  "material",
-    "group",    "object",       "smoothing", "face_property"};
+    "boundary", "non_manifold", "polygon",   "degenerate",    "duplicate",
+    "user",     "sharp",        "uv_seam",   "normal_seam",   "material",
+    "group",    "object",       "smoothing", "face_property", "shape"};
 
 }  // namespace
 

@@ -240,6 +240,58 @@ PolygonMesh open_grid(std::uint32_t nx, std::uint32_t ny) {
   return mesh;
 }
 
+PolygonMesh jittered_grid(const JitteredGrid& spec) {
+  const std::uint32_t nx = spec.nx, ny = spec.ny;
+  if (!(spec.jitter >= 0 && spec.jitter < 0.25)) {
+    throw std::invalid_argument("jittered_grid: jitter " + std::to_string(spec.jitter) +
+                                " is outside [0, 0.25)");
+  }
+  if (spec.torus && (ny < 3 || nx < 3 * std::uint64_t{ny})) {
+    throw std::invalid_argument("jittered_grid: a torus needs ny >= 3 and nx >= 3 ny, not " +
+                                std::to_string(nx) + " x " + std::to_string(ny));
+  }
+  PolygonMesh mesh = open_grid(nx, ny);  // also checks the sizes
+  std::mt19937_64 rng(spec.seed);
+  // A uniform double in [-1, 1) from the top 53 bits, the same on every standard library.
+  auto unit = [&] { return double(rng() >> 11) * 0x1p-52 - 1.0; };
+  // Lattice point (x, y), moved, in lattice units.
+  const std::uint32_t columns = spec.torus ? nx : nx + 1, rows = spec.torus ? ny : ny + 1;
+  std::vector<std::array<double, 2>> lattice(std::size_t{columns} * rows);
+  for (std::uint32_t y = 0; y < rows; ++y) {
+    for (std::uint32_t x = 0; x < columns; ++x) {
+      lattice[std::size_t{y} * columns + x] = {x + spec.jitter * unit(), y + spec.jitter * unit()};
+    }
+  }
+  auto vertex = [&](std::uint32_t x, std::uint32_t y) {
+    return static_cast<VertexId>((y % rows) * columns + x % columns);
+  };
+  mesh.positions.resize(lattice.size());
+  for (std::size_t v = 0; v < lattice.size(); ++v) {
+    const auto [x, y] = lattice[v];
+    if (!spec.torus) {
+      mesh.positions[v] = {x, y, 0.0};
+      continue;
+    }
+    // x around the major circle, y around the tube; outward normal (u × v) for increasing x, y.
+    const double u = 2 * std::numbers::pi * x / nx, w = 2 * std::numbers::pi * y / ny;
+    const double major = double(nx) / ny, ring = major + std::cos(w);
+    mesh.positions[v] = {ring * std::cos(u), ring * std::sin(u), std::sin(w)};
+  }
+  for (std::uint32_t y = 0; y < ny; ++y) {
+    for (std::uint32_t x = 0; x < nx; ++x) {
+      const VertexId p00 = vertex(x, y), p10 = vertex(x + 1, y), p11 = vertex(x + 1, y + 1),
+                     p01 = vertex(x, y + 1);
+      VertexId* c = mesh.corners.data() + 6 * (std::size_t{y} * nx + x);
+      const bool along_p00_p11 = rng() >> 63;
+      const std::array<VertexId, 6> faces =
+          along_p00_p11 ? std::array<VertexId, 6>{p00, p10, p11, p00, p11, p01}
+                        : std::array<VertexId, 6>{p00, p10, p01, p10, p11, p01};
+      std::copy(faces.begin(), faces.end(), c);
+    }
+  }
+  return mesh;
+}
+
 PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   const std::size_t faces = mesh.face_count(), vertices = mesh.positions.size();

@@ -2,23 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
+
+#include "petersen/dualize/vec3.hpp"
 
 namespace petersen {
 
 namespace {
 
-using Vec = std::array<double, 3>;
+using vec3::cross, vec3::dot, vec3::sub;
+using Vec = vec3::Vec3;
 
-Vec sub(const Vec& p, const Vec& q) {
-  return {p[0] - q[0], p[1] - q[1], p[2] - q[2]};
-}
-double dot(const Vec& p, const Vec& q) {
-  return p[0] * q[0] + p[1] * q[1] + p[2] * q[2];
-}
-Vec cross(const Vec& p, const Vec& q) {
-  return {p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
-}
 // p without its component along the unit vector n.
 Vec project(const Vec& p, const Vec& n) {
   const double along = dot(p, n);
@@ -69,6 +64,69 @@ HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual)
         quad_corner_deviation(p[t1[k]], p[t2[(j + 2) % 3]], p[t1[(k + 1) % 3]], p[t1[(k + 2) % 3]]);
   }
   return cost;
+}
+
+HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh) {
+  HugeVector<double> degrees(graph.edge_count());
+  const auto& p = mesh.positions;
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    for (int k = 0; k < 3; ++k) {
+      const EdgeId e = graph.node_edges[3 * std::size_t{v} + k];
+      if (e == kNoEdge) continue;
+      const NodeId w = graph.edge_ends[2 * std::size_t{e}] == v
+                           ? graph.edge_ends[2 * std::size_t{e} + 1]
+                           : graph.edge_ends[2 * std::size_t{e}];
+      // In the lower face's orientation, as the output quad: the same rounding as measuring it.
+      if (graph.face_of(w) < graph.face_of(v)) continue;
+      const auto t1 = mesh.face(graph.face_of(v));
+      const auto t2 = mesh.face(graph.face_of(w));
+      const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
+      const VertexId d = t2[0] != a && t2[0] != b   ? t2[0]
+                         : t2[1] != a && t2[1] != b ? t2[1]
+                                                    : t2[2];
+      degrees[e] = quad_corner_deviation(p[a], p[d], p[b], p[c]);
+    }
+  }
+  return degrees;
+}
+
+std::vector<double> quad_costs(const PolygonMesh& mesh) {
+  std::vector<double> costs;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.arity(f) != 4) continue;
+    const auto q = mesh.face(f);
+    costs.push_back(quad_corner_deviation(mesh.positions[q[0]], mesh.positions[q[1]],
+                                          mesh.positions[q[2]], mesh.positions[q[3]]));
+  }
+  return costs;
+}
+
+QualityFigures quality_figures(std::vector<double> costs) {
+  QualityFigures figures;
+  figures.quads = costs.size();
+  if (costs.empty()) return figures;
+  for (double c : costs) {
+    figures.total += c;
+    figures.nonconvex += c > 90;
+  }
+  std::sort(costs.begin(), costs.end());
+  auto rank = [&](double p) {  // nearest rank: the smallest cost with at least p of them at most
+    const auto k = static_cast<std::size_t>(std::ceil(p * double(costs.size())));
+    return costs[std::max<std::size_t>(k, 1) - 1];
+  };
+  figures.median = rank(0.5);
+  figures.p95 = rank(0.95);
+  return figures;
+}
+
+std::string describe(const QualityFigures& f) {
+  char line[200];
+  std::snprintf(line, sizeof line,
+                "%llu quads, worst corner median %.1f\xc2\xb0, p95 %.1f\xc2\xb0, %llu non-convex, "
+                "total %.1f\xc2\xb0",
+                static_cast<unsigned long long>(f.quads), f.median, f.p95,
+                static_cast<unsigned long long>(f.nonconvex), f.total);
+  return line;
 }
 
 }  // namespace petersen

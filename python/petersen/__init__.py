@@ -97,6 +97,7 @@ def quadrangulate(
     objective: str = "pairs",
     sharp_angle: Optional[float] = None,
     keep_edges: Optional[npt.ArrayLike] = None,
+    max_corner_deviation: Optional[float] = None,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -110,7 +111,10 @@ def quadrangulate(
     ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
     (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
-    (e, 2) array of vertex pairs, names edges no quad may remove. Same options, same seed: same
+    (e, 2) array of vertex pairs, names edges no quad may remove. ``max_corner_deviation``
+    (degrees) allows only pairs whose quad costs at most that (``quad_quality``); the others are
+    cuts of cause "shape" and their triangles may stay (the maximum pairing of what is allowed,
+    the cheapest with ``objective="quality"``). Same options, same seed: same
     answer as ``petersen quad``. The GIL is released while the library works.
 
     Raises ``ValueError`` with the library's message for a bad mesh (a vertex index out of range,
@@ -119,7 +123,8 @@ def quadrangulate(
     """
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
-        None if sharp_angle is None else float(sharp_angle), keep_edges)
+        None if sharp_angle is None else float(sharp_angle), keep_edges,
+        None if max_corner_deviation is None else float(max_corner_deviation))
     return QuadResult(**r)
 
 

@@ -68,7 +68,8 @@ py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
 py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::string& algorithm,
                           const std::string& augment, std::uint64_t seed, bool all_quad,
                           const std::string& objective, std::optional<double> sharp_angle,
-                          const py::handle& keep_edges) {
+                          const py::handle& keep_edges,
+                          std::optional<double> max_corner_deviation) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -89,6 +90,7 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.objective = objective_of(objective);
   options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
+  options.max_corner_deviation = max_corner_deviation;
   options.cuts.user_edges = kept_edges;
   const PolygonMesh mesh = mesh_from(V, F);
   QuadResult result;
@@ -222,7 +224,7 @@ PYBIND11_MODULE(_petersen, m) {
   });
   m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
-        py::arg("sharp_angle"), py::arg("keep_edges"));
+        py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"));
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),

@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "arrays.hpp"
-#include "petersen/render/quad_quality.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/render/render_mesh.hpp"
 
 namespace petersen::python {

@@ -54,6 +54,17 @@ def test_the_quality_objective_is_certified_and_no_worse():
         petersen.quadrangulate(V, F, objective="beauty")
 
 
+def test_a_threshold_leaves_triangles_rather_than_bad_quads():
+    V, F = torus(16, 12)
+    V = V + np.random.default_rng(5).normal(scale=0.05, size=V.shape)
+    r = petersen.quadrangulate(V, F, objective="quality", max_corner_deviation=20)
+    check_result(V, as_faces(F), r)
+    assert r.stats["optimality_certified"] is True
+    assert r.stats["max_corner_deviation"] == 20
+    assert r.stats["cut_edges_by_cause"]["shape"] > 0 and r.stats["triangles_left"] > 0
+    assert (petersen.quad_quality(r.V, r.quads) <= 20).all()
+
+
 def test_all_quad_splits_an_odd_open_mesh():
     V, F = open_grid(3, 3)
     F = F[:-1]  # 17 triangles: one must be left, then split

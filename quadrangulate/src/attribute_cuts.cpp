@@ -86,7 +86,7 @@ CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
                           AttributeCutIds& ids) {
   bool crossed[kCutCauses] = {};
   for (CutCause cause : options.cross) {
-    if (cause < CutCause::uv_seam) {
+    if (!is_attribute_cause(cause)) {
       throw std::invalid_argument(
           "cross: " + std::string(to_string(cause)) +
           " cannot be crossed; the mesh's attributes make the cuts that can: uv_seam, "

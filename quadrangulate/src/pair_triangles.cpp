@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "lap_clock.hpp"
-#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/augment.hpp"
@@ -268,31 +267,11 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
   stats.verify_seconds += clock.lap();
 }
 
-// The cost of each pairable edge: the quad_corner_deviation of the quad its triangles make, in
-// the first triangle's orientation (as the output quad), scaled to the solver's integers.
-HugeVector<Cost> pair_costs(const PairableGraph& graph, const PolygonMesh& mesh) {
-  HugeVector<double> degrees(graph.edge_count());
-  const auto& p = mesh.positions;
-  for (NodeId v = 0; v < graph.node_count; ++v) {
-    for (int k = 0; k < 3; ++k) {
-      const EdgeId e = graph.node_edges[3 * std::size_t{v} + k];
-      if (e == kNoEdge || graph.edge_ends[2 * std::size_t{e}] != v) continue;
-      const auto t1 = mesh.face(graph.face_of(v));
-      const auto t2 = mesh.face(graph.face_of(graph.edge_ends[2 * std::size_t{e} + 1]));
-      const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
-      const VertexId d = t2[0] != a && t2[0] != b   ? t2[0]
-                         : t2[1] != a && t2[1] != b ? t2[1]
-                                                    : t2[2];
-      degrees[e] = quad_corner_deviation(p[a], p[d], p[b], p[c]);
-    }
-  }
-  return scale_costs(degrees);
-}
-
 }  // namespace
 
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
-                               const QuadOptions& options, QuadStats& stats) {
+                               std::span<const double> degrees, const QuadOptions& options,
+                               QuadStats& stats) {
   LapClock clock;
   TrianglePairing pairing;
   const std::uint32_t n = graph.node_count;
@@ -300,8 +279,10 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   const Algorithm closed_algorithm =
       options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
   const bool quality = options.objective == Objective::quality;
-  const bool use_lrs = options.algorithm == Algorithm::lrs && !quality;
-  const HugeVector<Cost> costs = quality ? pair_costs(graph, mesh) : HugeVector<Cost>{};
+  // lrs flips edges, making quads the threshold never judged: with one, ps does its work.
+  const bool use_lrs =
+      options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
+  const HugeVector<Cost> costs = quality ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();
 
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is

@@ -3,6 +3,7 @@
 // algorithm, the others by augmenting paths with a Tutte–Berge witness (quadrangulate.hpp).
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
@@ -26,10 +27,12 @@ struct TrianglePairing {
 inline constexpr NodeId kLrsNode = kNoNode - 1;
 
 /// Pairs the nodes of `graph` (the pairable graph of `mesh`; its edge arrays may be taken over, its
-/// node_face stays) and checks the answer:
+/// node_face stays) and checks the answer; Objective::quality needs `degrees`, the cost of each
+/// edge (pairable_edge_quality).
 /// throws std::logic_error if a matching fails the verifier or its witness. Fills the matching,
 /// lrs, component and time fields of `stats`, and maximum_certified.
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
-                               const QuadOptions& options, QuadStats& stats);
+                               std::span<const double> degrees, const QuadOptions& options,
+                               QuadStats& stats);
 
 }  // namespace petersen::quad_detail

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,7 @@
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "shape_cuts.hpp"
 
 namespace petersen {
 
@@ -28,21 +30,6 @@ std::array<VertexId, 4> quad_of(std::span<const VertexId> t1, std::span<const Ve
     return {a, d, b, c};
   }
   throw std::logic_error("internal error: paired triangles share no edge");
-}
-
-// The quality figures of the pairs' quads (QuadStats): median, 95th percentile, non-convex count.
-void measure_quality(std::vector<double> costs, QuadStats& stats) {
-  if (costs.empty()) return;
-  auto at = [&](double q) {
-    const auto k = static_cast<std::ptrdiff_t>(q * double(costs.size() - 1));
-    std::nth_element(costs.begin(), costs.begin() + k, costs.end());
-    return costs[static_cast<std::size_t>(k)];
-  };
-  stats.quality_median = at(0.5);
-  stats.quality_p95 = at(0.95);
-  for (double c : costs) {
-    stats.nonconvex_quads += c > 90.0;
-  }
 }
 
 constexpr std::pair<Objective, std::string_view> kObjectiveNames[] = {
@@ -63,6 +50,9 @@ std::optional<Objective> parse_objective(std::string_view name) {
 }
 
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
+  if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
+    throw std::invalid_argument("max_corner_deviation is NaN");
+  }
   quad_detail::LapClock total, clock;
   QuadResult result;
   QuadStats& stats = result.stats;
@@ -73,6 +63,13 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     quad_detail::AttributeCutIds ids;  // freed once the graph has the cuts
     return build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids));
   }();
+  HugeVector<double> degrees;
+  if (options.objective == Objective::quality || options.max_corner_deviation) {
+    degrees = pairable_edge_quality(graph, mesh);
+  }
+  if (options.max_corner_deviation) {
+    quad_detail::cut_by_shape(graph, mesh, degrees, *options.max_corner_deviation);
+  }
   stats.triangles = graph.node_count;
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
@@ -89,7 +86,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   stats.check_seconds = clock.lap();
 
   const quad_detail::TrianglePairing pairing =
-      quad_detail::pair_triangles(graph, mesh, options, stats);
+      quad_detail::pair_triangles(graph, mesh, degrees, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
     stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
   }
@@ -137,7 +134,6 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   // Quality of the pairs' quads (every output face of four corners made from triangles).
   std::vector<double> costs;
   costs.reserve(stats.pairs);
-  double total_cost = 0;
   for (FaceId o = 0; o < out.face_count(); ++o) {
     const auto c = out.face(o);
     if (c.size() != 4 || (result.sources[o][1] == kNoFace && result.sources[o][0] != kNoFace &&
@@ -146,12 +142,14 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     }
     const auto& p = out.positions;
     costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
-    total_cost += costs.back();
   }
-  measure_quality(std::move(costs), stats);
+  const QualityFigures quality = quality_figures(std::move(costs));
+  stats.quality_median = quality.median;
+  stats.quality_p95 = quality.p95;
+  stats.nonconvex_quads = quality.nonconvex;
   stats.objective_total = options.objective == Objective::quality
                               ? double(pairing.objective_units) / kDefaultCostScale
-                              : total_cost;
+                              : quality.total;
   if (!mesh.attributes.empty()) {
     out.attributes = quad_detail::attributes_of_pairs(mesh, out, result.sources);
   }

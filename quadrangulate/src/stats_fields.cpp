@@ -17,6 +17,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   if (!quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs)) {
     add("augment", std::string(to_string(options.augment)));
   }
+  if (options.max_corner_deviation) d("max_corner_deviation", *options.max_corner_deviation);
   u("vertices", s.vertices);
   u("faces_in", s.faces_in);
   u("triangles", s.triangles);

@@ -9,27 +9,15 @@
 #include <numbers>
 #include <numeric>
 
-#include "petersen/render/quad_quality.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/dualize/vec3.hpp"
 
 namespace petersen {
 
 namespace {
 
-using Vec = std::array<double, 3>;
-
-Vec sub(const Vec& a, const Vec& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-double dot(const Vec& a, const Vec& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-Vec cross(const Vec& a, const Vec& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Vec unit(const Vec& a) {
-  const double l = std::sqrt(dot(a, a));
-  return {a[0] / l, a[1] / l, a[2] / l};
-}
+using vec3::cross, vec3::dot, vec3::sub, vec3::unit;
+using Vec = vec3::Vec3;
 
 bool ends_with(std::string s, const std::string& suffix) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });

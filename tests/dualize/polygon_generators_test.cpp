@@ -349,6 +349,79 @@ TEST(OpenGrid, IsAnOrientedDiskWithOneBoundaryLoop) {
   EXPECT_THROW(open_grid(0, 3), std::invalid_argument);
 }
 
+TEST(JitteredGrid, IsTheGridMovedAndRecutWithinItsSquares) {
+  const std::uint32_t nx = 7, ny = 5;
+  const double jitter = 0.1;
+  const PolygonMesh mesh = jittered_grid({.nx = nx, .ny = ny, .jitter = jitter, .seed = 3});
+  EXPECT_EQ(malformation(mesh), "");
+  const Census c = census(mesh);
+  EXPECT_EQ(c.faces, 2 * std::size_t{nx} * ny);
+  EXPECT_EQ(c.euler(), 1);
+  EXPECT_EQ(c.boundary_loops, 1u);
+  EXPECT_EQ(c.inconsistent_edges, 0u);
+  EXPECT_EQ(repeated_faces(mesh), 0u);
+  const PolygonMesh lattice = open_grid(nx, ny);
+  ASSERT_EQ(mesh.positions.size(), lattice.positions.size());
+  bool moved = false;
+  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+    EXPECT_LE(std::abs(mesh.positions[v][0] - lattice.positions[v][0]), jitter);
+    EXPECT_LE(std::abs(mesh.positions[v][1] - lattice.positions[v][1]), jitter);
+    moved |= mesh.positions[v] != lattice.positions[v];
+  }
+  EXPECT_TRUE(moved);
+  std::size_t along_p00_p11 = 0;
+  for (std::uint32_t q = 0; q < nx * ny; ++q) {
+    // Faces 2q and 2q + 1 cover square q exactly, one diagonal shared.
+    const VertexId p00 = q / nx * (nx + 1) + q % nx;
+    const std::set<VertexId> square{p00, p00 + 1, p00 + nx + 1, p00 + nx + 2};
+    std::set<VertexId> both;
+    std::multiset<VertexId> corners;
+    for (FaceId f : {2 * q, 2 * q + 1}) {
+      for (VertexId v : mesh.face(f)) {
+        both.insert(v);
+        corners.insert(v);
+      }
+      const auto t = mesh.face(f);
+      const auto &p = mesh.positions[t[0]], &r = mesh.positions[t[1]], &u = mesh.positions[t[2]];
+      EXPECT_GT((r[0] - p[0]) * (u[1] - p[1]) - (r[1] - p[1]) * (u[0] - p[0]), 0);
+    }
+    EXPECT_EQ(both, square);
+    along_p00_p11 += corners.count(p00) == 2;
+  }
+  // Both diagonals occur.
+  EXPECT_GT(along_p00_p11, 0u);
+  EXPECT_LT(along_p00_p11, std::size_t{nx} * ny);
+  EXPECT_THROW(jittered_grid({.nx = 3, .ny = 3, .jitter = 0.3}), std::invalid_argument);
+  EXPECT_THROW(jittered_grid({.nx = 0, .ny = 3}), std::invalid_argument);
+}
+
+TEST(JitteredGrid, TorusIsAClosedOrientedSurfaceOfGenus1) {
+  const PolygonMesh mesh = jittered_grid({.nx = 30, .ny = 10, .jitter = 0.1, .torus = true});
+  EXPECT_EQ(malformation(mesh), "");
+  const Census c = census(mesh);
+  EXPECT_EQ(c.vertices, 300u);
+  EXPECT_EQ(c.faces, 600u);
+  EXPECT_EQ(c.euler(), 0);
+  EXPECT_EQ(c.boundary_edges, 0u);
+  EXPECT_EQ(c.non_manifold_edges, 0u);
+  EXPECT_EQ(c.inconsistent_edges, 0u);
+  EXPECT_EQ(c.components, 1u);
+  EXPECT_TRUE(c.orientable);
+  EXPECT_EQ(repeated_faces(mesh), 0u);
+  // Facing outwards: each face's normal points away from the tube's centre circle.
+  for (const auto& f : faces_of(mesh)) {
+    const auto &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
+    const double u[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+    const double w[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+    const double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                         u[0] * w[1] - u[1] * w[0]};
+    const double radial = std::hypot(p[0], p[1]), major = 3.0;
+    const double out[3] = {p[0] - major * p[0] / radial, p[1] - major * p[1] / radial, p[2]};
+    EXPECT_GT(n[0] * out[0] + n[1] * out[1] + n[2] * out[2], 0);
+  }
+  EXPECT_THROW(jittered_grid({.nx = 20, .ny = 10, .torus = true}), std::invalid_argument);
+}
+
 TEST(Census, FindsClosedOrientableSurfacesOrientable) {
   // The control for the non-orientability checks above: the same count succeeds on surfaces
   // that have an orientation, whatever their genus.

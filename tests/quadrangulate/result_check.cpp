@@ -7,6 +7,7 @@
 #include <set>
 
 #include "peers.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/tutte_berge.hpp"
 
@@ -184,9 +185,26 @@ bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, std::span<const 
   return false;
 }
 
+// The cost of the quad triangles f < g make, in f's orientation: f = (a, b, c) sharing a-b with g,
+// whose third vertex is d, gives (a, d, b, c).
+double pair_cost(const PolygonMesh& mesh, FaceId f, FaceId g) {
+  const auto t = mesh.face(f), u = mesh.face(g);
+  auto in_u = [&](VertexId v) { return std::find(u.begin(), u.end(), v) != u.end(); };
+  for (int k = 0; k < 3; ++k) {
+    const VertexId a = t[k], b = t[(k + 1) % 3], c = t[(k + 2) % 3];
+    if (!in_u(a) || !in_u(b)) continue;
+    const VertexId d =
+        *std::find_if(u.begin(), u.end(), [&](VertexId v) { return v != a && v != b; });
+    const auto& p = mesh.positions;
+    return quad_corner_deviation(p[a], p[d], p[b], p[c]);
+  }
+  return kDegenerateQuadCost;
+}
+
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
                               bool flips_allowed, const CutOptions& cuts,
-                              std::span<const CutCause> cross) {
+                              std::span<const CutCause> cross,
+                              std::optional<double> max_corner_deviation) {
   const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
   // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
   // repeated vertex, whose union has four vertices.
@@ -205,6 +223,10 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
     for (FaceId f : fs)
       for (VertexId v : input.face(f)) four.insert(v);
     if (four.size() != 4 || extra_cut(input, cuts, cross, fs[0], fs[1], e)) continue;
+    if (max_corner_deviation &&
+        pair_cost(input, std::min(fs[0], fs[1]), std::max(fs[0], fs[1])) > *max_corner_deviation) {
+      continue;
+    }
     pairable.insert({std::min(fs[0], fs[1]), std::max(fs[0], fs[1])});
     edges.push_back({node_of[fs[0]], node_of[fs[1]]});
   }
@@ -263,6 +285,11 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
       for (FaceId t : {f, g})
         for (VertexId v : input.face(t)) both.insert(v);
       if (out.size() != 4 || quad != both) return "quad " + std::to_string(o) + " is not its pair";
+      const auto& p = result.mesh.positions;
+      if (max_corner_deviation && quad_corner_deviation(p[out[0]], p[out[1]], p[out[2]],
+                                                        p[out[3]]) > *max_corner_deviation) {
+        return "quad " + std::to_string(o) + " is over the threshold";
+      }
       const auto t = input.face(f);
       auto at = [&](VertexId v) { return std::find(out.begin(), out.end(), v) - out.begin(); };
       for (int k = 0; k < 3; ++k) {

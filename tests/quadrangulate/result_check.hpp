@@ -3,6 +3,7 @@
 // its own pairable graph (a std::map over edges), LEMON's and Boost's maximum matchings for the
 // size, and verify_maximum_matching for the witness.
 
+#include <optional>
 #include <span>
 #include <string>
 
@@ -15,9 +16,11 @@ namespace petersen::testing {
 /// `cuts` are the extra cuts the run was given, judged here on their own terms; the cuts of the
 /// input's attributes (seams, material and other borders) are judged from the values
 /// themselves, except those whose span `cuts` sets and those `cross` names.
+/// `max_corner_deviation` is the run's threshold: no pair's quad may cost more.
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
                               bool flips_allowed, const CutOptions& cuts = {},
-                              std::span<const CutCause> cross = {});
+                              std::span<const CutCause> cross = {},
+                              std::optional<double> max_corner_deviation = {});
 
 /// Empty when the output carries the input's attributes: every output corner of an input vertex
 /// has the texture coordinate and normal (values) of that vertex's corner in the output face's

@@ -11,8 +11,6 @@
 #include <fstream>
 #include <memory>
 
-#include "petersen/render/quad_quality.hpp"
-
 namespace petersen {
 namespace {
 

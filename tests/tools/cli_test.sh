@@ -52,6 +52,17 @@ printf 'OFF\n6 3 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 0 0\n2 1 0\n4 0 1 2 3\n3 1 4 5
   >"$work/mixed.off"
 check "a mesh with a quad" "$petersen" quad "$work/mixed.off" "$work/mixed-q.off"
 grep -q "^4 0 1 2 3$" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: quad not kept"; }
+# info gives the quads' shape: the kept square and the paired one, both right-angled.
+check "info on a mixed mesh" "$petersen" info "$work/mixed-q.off"
+grep -q "^quality: 2 quads, worst corner median 0.0" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: info lacks the quality figures"; cat "$work/out"; }
+# The threshold mode: a pair over it is a cut of cause shape and its triangles stay.
+check "a threshold no quad meets" "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" \
+  --max-corner-deviation -1 --objective quality --stats-json "$work/mixed-t.json"
+grep -q '"shape": 1' "$work/mixed-t.json" && grep -q '"triangles_left": 2,' "$work/mixed-t.json" || {
+  failed=$((failed + 1)); echo "FAILED: threshold"; cat "$work/mixed-t.json"; }
+refuses "--cross shape" "not a cut of the mesh's attributes" \
+  "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
 # A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
 cp "$work/mixed-q.off" "$work/keep.off"

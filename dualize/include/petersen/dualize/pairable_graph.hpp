@@ -29,8 +29,16 @@ enum class CutCause : std::uint8_t {
   object,         ///< ... different objects
   smoothing,      ///< ... different smoothing groups
   face_property,  ///< ... different values of another per-face property
+  /// The quad of its two triangles deviates from right angles by more than the caller allows
+  /// (QuadOptions::max_corner_deviation; cut by quadrangulate, not build_pairable_graph).
+  shape,
 };
-inline constexpr int kCutCauses = 14;
+inline constexpr int kCutCauses = 15;
+/// Whether a cause is one of the mesh's attributes (uv_seam to face_property): the cuts
+/// QuadOptions::cross may let pairs cross. The structure's, the caller's and shape never are.
+constexpr bool is_attribute_cause(CutCause cause) {
+  return cause >= CutCause::uv_seam && cause <= CutCause::face_property;
+}
 std::string_view to_string(CutCause cause);
 /// The cause named as to_string names it ("uv_seam", "material", ...), or nothing.
 std::optional<CutCause> parse_cut_cause(std::string_view name);

@@ -40,6 +40,26 @@ PolygonMesh projective_plane(std::uint32_t subdivision);
 /// std::invalid_argument when nx or ny is 0 or the mesh would pass 2^32 - 1 corners. O(nx·ny).
 PolygonMesh open_grid(std::uint32_t nx, std::uint32_t ny);
 
+/// A lattice of near-square quads, each cut along a random one of its two diagonals: a mesh whose
+/// best pairing gives back the quads it was made from. Every lattice point is moved by up to
+/// `jitter` (a fraction of the spacing) along each lattice direction, uniformly at random.
+/// - open (torus false): open_grid's rectangle [0, nx] × [0, ny] at z = 0, vertex (x, y) at
+///   y·(nx+1) + x, one boundary loop;
+/// - torus: closed, the lattice wrapped around a torus of minor radius 1 and major radius nx/ny
+///   (so that the quads are near-square on average), vertex (x, y) at y·nx + x, x around the
+///   major circle; needs nx ≥ 3·ny (the hole) and ny ≥ 3.
+/// Square q = y·nx + x (corners (x, y), (x+1, y), (x+1, y+1), (x, y+1)) is faces 2q and 2q + 1,
+/// counter-clockwise (seen from +z, or from outside the torus). Throws std::invalid_argument as
+/// open_grid does, for a jitter outside [0, 0.25) (the squares could fold), or a torus too
+/// small. O(nx·ny).
+struct JitteredGrid {
+  std::uint32_t nx = 60, ny = 60;
+  double jitter = 0.1;
+  bool torus = false;
+  std::uint64_t seed = 1;
+};
+PolygonMesh jittered_grid(const JitteredGrid& spec);
+
 /// The mesh with `holes` random patches of faces removed: each patch is a random remaining face,
 /// alone or (with probability 1/2) together with every remaining face sharing a vertex with it.
 /// Each patch cut into a surface's interior opens a new boundary loop; patches may overlap,

@@ -1,11 +1,16 @@
 #pragma once
 // The shape of a quad as its worst corner's deviation from a right angle (issue 14's measure),
-// and that cost for every quad the dual of a closed triangle mesh could form.
+// that cost for every quad the dual of a closed triangle mesh could form, and the figures that
+// summarise a mesh's quads (quadrangulate's stats, `petersen info`, the pictures' captions).
 
 #include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/mesh.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
@@ -29,5 +34,29 @@ double quad_corner_deviation(const std::array<double, 3>& a, const std::array<do
 /// triangles would form, with the corners quads_from_matching gives it: triangles (a, b, c) and
 /// (b, a, d) sharing edge a-b form (a, d, b, c). O(F).
 HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual);
+
+/// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
+/// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b
+/// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F).
+HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh);
+
+/// Quads summarised by their costs: how many, the median and 95th percentile (the nearest-rank
+/// element of the sorted costs; 0 when there are no quads), how many are non-convex (cost above
+/// 90°), and the sum of the costs.
+struct QualityFigures {
+  std::uint64_t quads = 0;
+  double median = 0, p95 = 0, total = 0;
+  std::uint64_t nonconvex = 0;
+};
+
+/// The cost of every face of four corners of `mesh`, in face order. O(F).
+std::vector<double> quad_costs(const PolygonMesh& mesh);
+
+/// The figures of the given costs. O(q log q).
+QualityFigures quality_figures(std::vector<double> costs);
+
+/// One line for people: "1550 quads, worst corner median 12.3°, p95 40.2°, 3 non-convex, total
+/// 9876.5°".
+std::string describe(const QualityFigures& figures);
 
 }  // namespace petersen

@@ -54,6 +54,14 @@ struct QuadOptions {
   /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
   /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
   Objective objective = Objective::pairs;
+  /// The threshold mode (Blender's Tris to Quads, made exact): only triangles whose quad costs at
+  /// most this many degrees (quad_corner_deviation) may be paired; every other pairable edge is a
+  /// cut of cause CutCause::shape. The pairing is then a certified maximum matching of what is
+  /// left, the cheapest of those with Objective::quality; triangles no such pair takes stay
+  /// triangles. With all_quad those are still split into quads, which the threshold does not
+  /// judge (it says which pairs are allowed, not what the splits look like). Algorithm::lrs is
+  /// matched by ps under a threshold, since its flips would make quads the threshold never saw.
+  std::optional<double> max_corner_deviation = {};
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
   /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
   CutOptions cuts = {};
@@ -92,8 +100,9 @@ struct QuadStats {
   bool maximum_certified = false;        ///< the pairing passed the verifier and the witness check
   /// Objective::quality: the certificates proved the total cost minimal.
   bool optimality_certified = false;
-  /// The quads made of two input triangles, by quad_corner_deviation in degrees: median, 95th
-  /// percentile, how many are non-convex (cost above 90), and the sum (for Objective::quality
+  /// The quads made of two input triangles, by quad_corner_deviation in degrees (quality_figures
+  /// of petersen/dualize/quad_quality.hpp): median, 95th percentile, how many are non-convex
+  /// (cost above 90), and the sum (for Objective::quality
   /// the certified optimum, in the solver's integer units over kDefaultCostScale).
   double quality_median = 0, quality_p95 = 0, objective_total = 0;
   std::uint64_t nonconvex_quads = 0;
