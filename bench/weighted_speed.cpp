@@ -3,11 +3,16 @@
 // augmentation (shape-blind, the cardinality floor), on the dual of each mesh.
 // Usage: petersen_weighted_speed [--no-lemon] [mesh files...]; without files it measures every
 // shared mesh of at least 80k triangles from ../shared/meshes (when present).
+// Columns: ours_s and ps_s are wall-time medians of 3 rounds, cpu_s that of the thread's CPU time
+// (cpu_min the least); xfaster = LEMON's wall time / ours, xcpu = LEMON's CPU time / ours, x_ps
+// and xcpu_ps = ours / PS in wall and CPU time. On a loaded machine the CPU ratios are the
+// steadier ones: both programs are single-threaded, and wall time adds whatever else ran.
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <filesystem>
 #include <functional>
 #include <string>
@@ -31,6 +36,16 @@ double seconds_of(const std::function<void()>& run) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+// This thread's CPU time: on the loaded machine, wall times of one program swing 2x between
+// runs; CPU times swing less, so A/B comparisons of the solver read this column.
+double cpu_seconds_of(const std::function<void()>& run) {
+  timespec start, end;
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &start);
+  run();
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &end);
+  return double(end.tv_sec - start.tv_sec) + 1e-9 * double(end.tv_nsec - start.tv_nsec);
+}
+
 double median(std::vector<double> values) {
   std::sort(values.begin(), values.end());
   return values[values.size() / 2];
@@ -44,13 +59,17 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon)
   const CubicGraph& g = dual.graph;
   const HugeVector<double> degrees = dual_edge_quality(mesh, dual);
   const HugeVector<Cost> costs = scale_costs(degrees);
-  std::vector<double> ours, ps;
+  std::vector<double> ours, ours_cpu, ps, ps_cpu;
   MinCostResult result;
   for (int round = 0; round < kRounds; ++round) {
-    ours.push_back(seconds_of([&] { result = min_cost_perfect_matching(g, costs); }));
+    ours.push_back(seconds_of([&] {
+      ours_cpu.push_back(cpu_seconds_of([&] { result = min_cost_perfect_matching(g, costs); }));
+    }));
     ps.push_back(seconds_of([&] {
-      perfect_matching(g,
-                       {.algorithm = Algorithm::ps, .augment = Augment::local, .validate = false});
+      ps_cpu.push_back(cpu_seconds_of([&] {
+        perfect_matching(
+            g, {.algorithm = Algorithm::ps, .augment = Augment::local, .validate = false});
+      }));
     }));
   }
   CertificateCheck check;
@@ -62,17 +81,19 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon)
     std::printf("%s: CERTIFICATE REJECTED: %s\n", name.c_str(), check.problem.c_str());
     std::exit(1);
   }
-  double lemon_seconds = 0;
+  double lemon_seconds = 0, lemon_cpu = 0;
   std::int64_t lemon_total = 0;
   if (with_lemon) {
     std::vector<std::uint32_t> mate(g.node_count());
     lemon_seconds = seconds_of([&] {
-      if (!lemon_peer::min_cost_perfect_matching(g.node_count(), g.edge_ends().data(),
-                                                 g.edge_count(), costs.data(), mate.data(),
-                                                 lemon_total)) {
-        std::printf("%s: LEMON found no perfect matching\n", name.c_str());
-        std::exit(1);
-      }
+      lemon_cpu = cpu_seconds_of([&] {
+        if (!lemon_peer::min_cost_perfect_matching(g.node_count(), g.edge_ends().data(),
+                                                   g.edge_count(), costs.data(), mate.data(),
+                                                   lemon_total)) {
+          std::printf("%s: LEMON found no perfect matching\n", name.c_str());
+          std::exit(1);
+        }
+      });
     });
     if (lemon_total != result.total_cost) {
       std::printf("%s: OPTIMA DIFFER: ours %lld, LEMON %lld\n", name.c_str(),
@@ -81,14 +102,17 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon)
     }
   }
   const MinCostStats& s = result.stats;
-  const double t = median(ours), t_ps = median(ps);
+  const double t = median(ours), t_ps = median(ps), cpu = median(ours_cpu);
   std::printf(
-      "%-24s %9u %8.3f %8.3f %8.3f %8.3f %8.3f %7.1f %7.3f %7.1f %8.2f %6.1f%% %8llu %8llu\n",
-      name.c_str(), g.node_count(), t, s.init_seconds, s.search_seconds, verify_seconds,
-      lemon_seconds, lemon_seconds / t, t_ps, t / t_ps,
+      "%-24s %9u %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %8.3f %7.1f %7.1f %7.3f %7.1f %7.1f %8.2f "
+      "%6.1f%% %8llu %8llu %9llu %9llu %9llu\n",
+      name.c_str(), g.node_count(), t, cpu, *std::min_element(ours_cpu.begin(), ours_cpu.end()),
+      s.init_seconds, s.search_seconds, verify_seconds, lemon_seconds, lemon_seconds / t,
+      lemon_cpu / cpu, t_ps, t / t_ps, cpu / median(ps_cpu),
       double(result.total_cost) / kDefaultCostScale / (g.node_count() / 2),
       100.0 * s.free_after_init / g.node_count(), (unsigned long long)s.blossoms_shrunk,
-      (unsigned long long)s.queue_pushes);
+      (unsigned long long)s.queue_pushes, (unsigned long long)s.nodes_labelled,
+      (unsigned long long)s.even_scans, (unsigned long long)s.released_scans);
   std::fflush(stdout);
 }
 
@@ -112,9 +136,11 @@ int main(int argc, char** argv) {
       if (std::filesystem::exists(path)) files.push_back(path);
     }
   }
-  std::printf("%-24s %9s %8s %8s %8s %8s %8s %7s %7s %7s %8s %7s %8s %8s\n", "mesh", "nodes",
-              "ours_s", "init_s", "search_s", "verify_s", "lemon_s", "xfaster", "ps_s", "x_ps",
-              "mean_deg", "free0", "blossoms", "pushes");
+  std::printf(
+      "%-24s %9s %8s %8s %8s %8s %8s %8s %8s %7s %7s %7s %7s %7s %8s %7s %8s %8s %9s %9s %9s\n",
+      "mesh", "nodes", "ours_s", "cpu_s", "cpu_min", "init_s", "search_s", "verify_s", "lemon_s",
+      "xfaster", "xcpu", "ps_s", "x_ps", "xcpu_ps", "mean_deg", "free0", "blossoms", "pushes",
+      "labels", "even_scan", "rel_scan");
   for (const std::string& file : files) {
     measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon);
   }

@@ -89,6 +89,7 @@ struct QuadArgs {
   std::vector<double> view;
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
+  std::uint32_t threads = 0;
   bool all_quad = false;
   std::optional<double> sharp_angle, max_corner_deviation;
   std::string keep_edges;
@@ -128,8 +129,9 @@ int quad(const QuadArgs& args) {
   report.options.objective = *objective;
   report.options.peer = &lemon_peer::maximum_matching;
   report.options.cross = cross;
+  report.options.threads = args.threads;
   Clock total, clock;
-  const PolygonMesh mesh = read_mesh(args.input);
+  PolygonMesh mesh = read_mesh(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges);
@@ -144,6 +146,10 @@ int quad(const QuadArgs& args) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
   report.quad = result.stats;
+  // The input is not needed past this point: freed before the output's bytes are built beside
+  // the output mesh, where the peak would otherwise be.
+  const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
+  mesh = {};
   clock.lap();
   write_mesh(args.output, result.mesh);
   report.write_seconds = clock.lap();
@@ -161,7 +167,7 @@ int quad(const QuadArgs& args) {
     options.view = view;
     options.width = args.render_width;
     options.height = args.render_height;
-    options.first_added_vertex = VertexId(mesh.positions.size());
+    options.first_added_vertex = input_vertices;
     options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
                            (report.options.objective == Objective::quality
                                 ? std::string("min-cost (objective quality)")
@@ -181,10 +187,19 @@ struct GenerateArgs {
   std::string output, kind = "plate";
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
   std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
-  bool dents = false;
+  bool dents = false, spatial_order = false;
   double jitter = 0.1;
   std::uint64_t seed = 1;
 };
+
+TriangleMesh randomized_plate(const GenerateArgs& args) {
+  TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
+  if (args.splits > 0 || args.flips > 0) {
+    mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
+  }
+  if (args.spatial_order) mesh = spatially_ordered(mesh);
+  return mesh;
+}
 
 PolygonMesh generated_surface(const GenerateArgs& args) {
   if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
@@ -197,21 +212,27 @@ PolygonMesh generated_surface(const GenerateArgs& args) {
                           .torus = args.kind == "jittered-torus",
                           .seed = args.seed});
   }
-  TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
-  if (args.splits > 0 || args.flips > 0) {
-    mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
-  }
-  return to_polygon_mesh(mesh);
+  return to_polygon_mesh(randomized_plate(args));
 }
 
-int generate(const GenerateArgs& args) {
+TriangleMesh generated_mesh(const GenerateArgs& args) {
+  // A closed plate needs no polygon steps: no copy into a polygon mesh and back, which at 10^8
+  // triangles is gigabytes.
+  if (args.kind == "plate" && args.holes == 0 && args.fins == 0 && args.pinches == 0 &&
+      args.flip_faces == 0) {
+    return randomized_plate(args);
+  }
   PolygonMesh surface = generated_surface(args);
   // Each step with its own seed, so that asking for one does not change what another does.
   if (args.holes > 0) surface = punch_holes(surface, args.holes, args.seed + 1);
   if (args.fins > 0) surface = add_fins(surface, args.fins, args.seed + 2);
   if (args.pinches > 0) surface = pinch_vertices(surface, args.pinches, args.seed + 3);
   if (args.flip_faces > 0) surface = flip_faces(surface, args.flip_faces, args.seed + 4);
-  const TriangleMesh mesh = to_triangle_mesh(surface);
+  return to_triangle_mesh(surface);
+}
+
+int generate(const GenerateArgs& args) {
+  const TriangleMesh mesh = generated_mesh(args);
   write_triangle_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.triangles.size(),
               mesh.positions.size(), args.output.c_str());
@@ -274,6 +295,10 @@ int main(int argc, char** argv) {
                    "uv_seam, normal_seam, material, group, object, smoothing, face_property "
                    "(comma-separated)")
       ->delimiter(',');
+  quad_cmd
+      ->add_option("--threads", quad_args.threads,
+                   "threads for the phases that split into independent parts (0: every core)")
+      ->capture_default_str();
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
@@ -316,6 +341,9 @@ int main(int argc, char** argv) {
                    "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
       ->capture_default_str();
   gen_cmd->add_flag("--dents", gen_args.dents, "cavities instead of through-holes (genus 0)");
+  gen_cmd->add_flag("--spatial-order", gen_args.spatial_order,
+                    "plate: store triangles in Morton order of their centroids and vertices in "
+                    "order of first use, as scanners and subdivisions do");
   gen_cmd
       ->add_option("--splits", gen_args.splits, "random 1-to-3 triangle splits, for irregularity")
       ->capture_default_str();

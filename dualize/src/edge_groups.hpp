@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "petersen/dualize/mesh.hpp"
@@ -20,35 +21,73 @@ struct EdgeGroups {
   HugeVector<std::array<std::uint32_t, 2>> entries;
 };
 
+/// Sorts one bucket: a vertex has a handful of edges, where an insertion sort on the entries read
+/// as one 64-bit key (larger vertex, then halfedge) beats std::sort's call and set-up.
+inline void sort_bucket(std::array<std::uint32_t, 2>* first, std::array<std::uint32_t, 2>* last) {
+  if (last - first > 16) return std::sort(first, last);
+  auto key = [](const std::array<std::uint32_t, 2>& e) { return std::uint64_t{e[0]} << 32 | e[1]; };
+  for (auto* i = first + 1; i < last; ++i) {
+    const std::array<std::uint32_t, 2> entry = *i;
+    auto* j = i;
+    for (; j != first && key(*(j - 1)) > key(entry); --j) *j = *(j - 1);
+    *j = entry;
+  }
+}
+
+/// The bucket offsets of every vertex: start[v] is the number of used halfedges whose smaller end
+/// lies below v (size vertex_count + 1). One pass over the halfedges.
+template <class From, class To, class Used>
+HugeVector<std::uint32_t> bucket_starts(std::size_t vertex_count, std::uint32_t halfedge_count,
+                                        From from, To to, Used used) {
+  HugeVector<std::uint32_t> start(vertex_count + 1, 0);
+  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
+    if (used(h)) ++start[std::min(from(h), to(h)) + 1];
+  }
+  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
+  return start;
+}
+
+/// The groups of the used halfedges whose smaller end lies in [first_vertex, last_vertex), from
+/// the offsets of bucket_starts: start and entries are those of the range alone (start[0] is
+/// first_vertex's bucket, at entry 0). One pass over all halfedges, then a sort within each
+/// bucket: O(H + R log d) for R halfedges in the range and maximum vertex degree d. Ranges that
+/// split the vertices let callers group a large mesh a slice at a time, or slices in parallel.
+template <class From, class To, class Used>
+EdgeGroups group_halfedges_in(std::span<const std::uint32_t> all_starts, std::size_t first_vertex,
+                              std::size_t last_vertex, std::uint32_t halfedge_count, From from,
+                              To to, Used used) {
+  EdgeGroups groups;
+  const std::uint32_t base = all_starts[first_vertex];
+  groups.start.resize(last_vertex - first_vertex + 1);
+  for (std::size_t i = 0; i < groups.start.size(); ++i) {
+    groups.start[i] = all_starts[first_vertex + i] - base;
+  }
+  groups.entries.resize(groups.start.back());
+  // Each bucket's next free entry, moved along as the bucket fills.
+  HugeVector<std::uint32_t> cursor(groups.start.begin(), groups.start.end() - 1);
+  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
+    if (!used(h)) continue;
+    const VertexId a = from(h), b = to(h);
+    const std::size_t low = std::min(a, b);
+    if (low < first_vertex || low >= last_vertex) continue;
+    groups.entries[cursor[low - first_vertex]++] = {std::max(a, b), h};
+  }
+  for (std::size_t v = 0; v + 1 < groups.start.size(); ++v) {
+    sort_bucket(groups.entries.data() + groups.start[v],
+                groups.entries.data() + groups.start[v + 1]);
+  }
+  return groups;
+}
+
 /// Groups halfedges 0..halfedge_count-1, halfedge h running from from(h) to to(h) (vertices below
 /// vertex_count), skipping those for which used(h) is false. A counting sort by smaller vertex,
 /// then a sort within each bucket: O(H log d) for maximum vertex degree d.
 template <class From, class To, class Used>
 EdgeGroups group_halfedges(std::size_t vertex_count, std::uint32_t halfedge_count, From from, To to,
                            Used used) {
-  // After the placement loop start[v] has moved to the end of bucket v; the shift restores it.
-  EdgeGroups groups;
-  auto& start = groups.start;
-  start.assign(vertex_count + 1, 0);
-  std::uint32_t total = 0;
-  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
-    if (!used(h)) continue;
-    ++start[std::min(from(h), to(h)) + 1];
-    ++total;
-  }
-  for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
-  groups.entries.resize(total);
-  for (std::uint32_t h = 0; h < halfedge_count; ++h) {
-    if (!used(h)) continue;
-    const VertexId a = from(h), b = to(h);
-    groups.entries[start[std::min(a, b)]++] = {std::max(a, b), h};
-  }
-  for (std::size_t v = vertex_count; v > 0; --v) start[v] = start[v - 1];
-  start[0] = 0;
-  for (std::size_t v = 0; v < vertex_count; ++v) {
-    std::sort(groups.entries.begin() + start[v], groups.entries.begin() + start[v + 1]);
-  }
-  return groups;
+  const HugeVector<std::uint32_t> start =
+      bucket_starts(vertex_count, halfedge_count, from, to, used);
+  return group_halfedges_in(start, 0, vertex_count, halfedge_count, from, to, used);
 }
 
 /// Halfedge h = 3t + k runs from corner k of triangle t to corner (k+1)%3.

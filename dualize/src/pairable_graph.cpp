@@ -6,6 +6,7 @@
 #include <string>
 
 #include "edge_groups.hpp"
+#include "petersen/graph/parallel.hpp"
 
 namespace petersen {
 
@@ -39,6 +40,12 @@ void check_faces(const PolygonMesh& mesh) {
                     " face corners; at most 4294967280 are supported");
   }
   const std::size_t vertex_count = mesh.positions.size();
+  if (mesh.all_triangles()) {
+    // One branch-free sweep over the corners; the face is looked for only when one is bad.
+    bool bad = false;
+    for (VertexId v : mesh.corners) bad |= v >= vertex_count;
+    if (!bad) return;
+  }
   for (std::size_t f = 0; f < faces; ++f) {
     const auto corners = mesh.face(static_cast<FaceId>(f));
     if (corners.size() < 3) {
@@ -96,7 +103,8 @@ std::array<double, 3> normal_of(const PolygonMesh& mesh, std::span<const VertexI
 
 }  // namespace
 
-PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts) {
+PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts,
+                                   std::uint32_t threads_wanted) {
   check_faces(mesh);
   check_sizes(mesh, cuts);
   std::vector<std::uint64_t> user_edges;
@@ -113,8 +121,16 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   // Triangles become nodes in face order; a face repeating a vertex is degenerate.
   PairableGraph graph;
   HugeVector<NodeId> face_node;
-  std::vector<std::uint8_t> degenerate(face_count, 0);
-  for (FaceId f = 0; f < face_count; ++f) degenerate[f] = repeats_a_vertex(mesh.face(f));
+  // Per face only for polygons, where the test is quadratic in the arity; a triangle's is three
+  // comparisons on corners the edge visit reads anyway.
+  std::vector<std::uint8_t> degenerate_face;
+  if (!triangles_only) {
+    degenerate_face.resize(face_count);
+    for (FaceId f = 0; f < face_count; ++f) degenerate_face[f] = repeats_a_vertex(mesh.face(f));
+  }
+  auto degenerate = [&](FaceId f) {
+    return triangles_only ? repeats_a_vertex(mesh.face(f)) : bool(degenerate_face[f]);
+  };
   if (triangles_only) {
     graph.node_count = face_count;
   } else {
@@ -127,73 +143,154 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   }
   auto node_of = [&](FaceId f) { return triangles_only ? f : face_node[f]; };
 
-  const EdgeGroups groups = half.group();
   graph.node_edges.assign(3 * std::size_t{graph.node_count}, kNoEdge);
   HugeVector<NodeId>& ends = graph.edge_ends;
   ends.reserve(triangles_only ? halfedge_count : 0);
-  auto cut = [&](CutCause cause) { ++graph.cuts.by_cause[static_cast<int>(cause)]; };
-  const auto& entries = groups.entries;
-  for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
-    ++graph.mesh_edges;
-    const std::uint32_t copies = end - first;
-    const std::uint32_t h1 = entries[first][1];
-    const std::uint32_t h2 = copies == 2 ? entries[first + 1][1] : 0;
-    if (copies == 1) return cut(CutCause::boundary);
-    if (copies > 2) return cut(CutCause::non_manifold);
-    const FaceId f1 = half.face(h1), f2 = half.face(h2);
-    if (f1 == f2 || degenerate[f1] || degenerate[f2]) return cut(CutCause::degenerate);
-    if (mesh.arity(f1) != 3 || mesh.arity(f2) != 3) return cut(CutCause::polygon);
-    // The corner of each triangle opposite the shared edge: after its end.
-    const std::uint32_t k1 = h1 - half.first(f1), k2 = h2 - half.first(f2);
-    const VertexId opposite1 = mesh.corners[half.first(f1) + (k1 + 2) % 3];
-    const VertexId opposite2 = mesh.corners[half.first(f2) + (k2 + 2) % 3];
-    if (opposite1 == opposite2) return cut(CutCause::duplicate);
-    const VertexId a = half.from(h1), b = half.to(h1);
-    const bool same_way = half.from(h2) == a;
-    if (!user_edges.empty() &&
-        std::binary_search(user_edges.begin(), user_edges.end(),
-                           std::uint64_t{std::min(a, b)} << 32 | std::max(a, b))) {
-      return cut(CutCause::user);
+
+  // What one slice of the vertices found: its counts, and which of its groups are pairable edges.
+  struct Slice {
+    EdgeGroups groups;
+    std::vector<std::uint8_t> pairable;  // per entry: the first of a pairable edge's two
+    CutCounts cuts;
+    std::uint64_t mesh_edges = 0, inconsistent_edges = 0;
+    std::uint32_t edges = 0;
+  };
+  // Decides each edge of the slice's groups: a cut (counted by cause) or pairable (marked).
+  auto classify = [&](Slice& slice) {
+    const auto& entries = slice.groups.entries;
+    slice.pairable.assign(entries.size(), 0);
+    auto cut = [&](CutCause cause) { ++slice.cuts.by_cause[static_cast<int>(cause)]; };
+    // The visit reads the corners of both faces of an edge: random accesses that the loop's
+    // branches keep from overlapping, so they are fetched ahead.
+    constexpr std::uint32_t kAhead = 16;
+    const std::uint32_t entry_count = static_cast<std::uint32_t>(entries.size());
+    for_each_edge_group(slice.groups, [&](std::uint32_t first, std::uint32_t end) {
+      // An edge has two entries, so two are fetched per visit.
+      for (std::uint32_t i = first + kAhead; i < first + kAhead + 2 && i < entry_count; ++i) {
+        __builtin_prefetch(mesh.corners.data() + entries[i][1]);
+      }
+      ++slice.mesh_edges;
+      const std::uint32_t copies = end - first;
+      const std::uint32_t h1 = entries[first][1];
+      const std::uint32_t h2 = copies == 2 ? entries[first + 1][1] : 0;
+      if (copies == 1) return cut(CutCause::boundary);
+      if (copies > 2) return cut(CutCause::non_manifold);
+      const FaceId f1 = half.face(h1), f2 = half.face(h2);
+      if (f1 == f2 || degenerate(f1) || degenerate(f2)) return cut(CutCause::degenerate);
+      if (mesh.arity(f1) != 3 || mesh.arity(f2) != 3) return cut(CutCause::polygon);
+      // The corner of each triangle opposite the shared edge: after its end.
+      const std::uint32_t k1 = h1 - half.first(f1), k2 = h2 - half.first(f2);
+      const VertexId opposite1 = mesh.corners[half.first(f1) + (k1 + 2) % 3];
+      const VertexId opposite2 = mesh.corners[half.first(f2) + (k2 + 2) % 3];
+      if (opposite1 == opposite2) return cut(CutCause::duplicate);
+      const VertexId a = half.from(h1), b = half.to(h1);
+      const bool same_way = half.from(h2) == a;
+      if (!user_edges.empty() &&
+          std::binary_search(user_edges.begin(), user_edges.end(),
+                             std::uint64_t{std::min(a, b)} << 32 | std::max(a, b))) {
+        return cut(CutCause::user);
+      }
+      if (cuts.sharp_angle_degrees) {
+        const auto n1 = normal_of(mesh, mesh.face(f1));
+        auto n2 = normal_of(mesh, mesh.face(f2));
+        if (same_way)
+          for (double& x : n2) x = -x;  // orient f2 as f1
+        const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
+        const double norms = std::sqrt((n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) *
+                                       (n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
+        // A zero-area triangle has no normal: its fold is unknown, so the edge is cut.
+        if (!(norms > 0)) return cut(CutCause::sharp);
+        // The fold in degrees, compared as the option says ("more than DEG"): comparing cosines
+        // instead cut a cube's exact 90-degree edges at DEG = 90, since cos(90°) is 6e-17, not 0.
+        const double fold =
+            std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / std::numbers::pi;
+        if (fold > *cuts.sharp_angle_degrees) return cut(CutCause::sharp);
+      }
+      // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
+      // f2 runs along the edge the same way, else the next one.
+      const std::uint32_t a2 = same_way ? h2 : half.next(h2), b2 = same_way ? half.next(h2) : h2;
+      auto seam = [&](std::span<const std::uint32_t> id) {
+        return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
+      };
+      if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
+      if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
+      auto border = [&](std::span<const std::uint32_t> id) {
+        return !id.empty() && id[f1] != id[f2];
+      };
+      if (border(cuts.face_material)) return cut(CutCause::material);
+      if (border(cuts.face_group)) return cut(CutCause::group);
+      if (border(cuts.face_object)) return cut(CutCause::object);
+      if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
+      if (border(cuts.face_property)) return cut(CutCause::face_property);
+      slice.inconsistent_edges += same_way;
+      slice.pairable[first] = 1;
+      ++slice.edges;
+    });
+  };
+  // Numbers the slice's pairable edges from `first_edge` on, in entry order.
+  auto number = [&](const Slice& slice, EdgeId first_edge) {
+    const auto& entries = slice.groups.entries;
+    EdgeId e = first_edge;
+    for (std::uint32_t i = 0; i < entries.size(); ++i) {
+      if (!slice.pairable[i]) continue;
+      const std::uint32_t h1 = entries[i][1], h2 = entries[i + 1][1];
+      const FaceId f1 = half.face(h1), f2 = half.face(h2);
+      const NodeId n1 = node_of(f1), n2 = node_of(f2);
+      graph.node_edges[3 * std::size_t{n1} + (h1 - half.first(f1))] = e;
+      graph.node_edges[3 * std::size_t{n2} + (h2 - half.first(f2))] = e;
+      ends[2 * std::size_t{e}] = n1;
+      ends[2 * std::size_t{e} + 1] = n2;
+      ++e;
     }
-    if (cuts.sharp_angle_degrees) {
-      const auto n1 = normal_of(mesh, mesh.face(f1));
-      auto n2 = normal_of(mesh, mesh.face(f2));
-      if (same_way)
-        for (double& x : n2) x = -x;  // orient f2 as f1
-      const double dot = n1[0] * n2[0] + n1[1] * n2[1] + n1[2] * n2[2];
-      const double norms = std::sqrt((n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) *
-                                     (n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
-      // A zero-area triangle has no normal: its fold is unknown, so the edge is cut.
-      if (!(norms > 0)) return cut(CutCause::sharp);
-      // The fold in degrees, compared as the option says ("more than DEG"): comparing cosines
-      // instead cut a cube's exact 90-degree edges at DEG = 90, since cos(90°) is 6e-17, not 0.
-      const double fold = std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-      if (fold > *cuts.sharp_angle_degrees) return cut(CutCause::sharp);
+  };
+
+  // The vertices in slices of about kSliceEntries halfedges (at least one per thread): each slice
+  // groups only its own halfedges, so the grouping's scratch is a slice's, not the whole mesh's,
+  // and slices are classified in parallel. A wave of slices, one per thread, is classified, then
+  // numbered in order, so edges keep the order of their mesh edge (min, max).
+  const auto from = [&](std::uint32_t h) { return half.from(h); };
+  const auto to = [&](std::uint32_t h) { return half.to(h); };
+  const auto used = [&](std::uint32_t h) { return half.from(h) != half.to(h); };
+  const HugeVector<std::uint32_t> starts =
+      bucket_starts(mesh.positions.size(), halfedge_count, from, to, used);
+  const std::uint32_t threads = resolve_threads(threads_wanted);
+  constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
+  std::uint64_t slices =
+      std::max<std::uint64_t>(threads, (starts.back() + kSliceEntries - 1) / kSliceEntries);
+  // A large mesh gets four slices per thread at least, so that a wave's scratch (8 + 1 bytes per
+  // entry) is a quarter of the whole mesh's: the grouping was the front door's peak, beside the
+  // mesh and the graph (7M triangles: 88 bytes per triangle). Each slice reads the corners once
+  // more, sequentially, which costs little beside the grouping's random writes.
+  constexpr std::uint64_t kLargeEntries = std::uint64_t{1} << 20;
+  if (starts.back() >= kLargeEntries) slices = std::max<std::uint64_t>(slices, 4 * threads);
+  std::vector<std::size_t> slice_start(slices + 1, mesh.positions.size());
+  slice_start[0] = 0;
+  for (std::uint64_t k = 1; k < slices; ++k) {
+    // The first vertex whose bucket starts at or past the k-th share of the entries.
+    const std::uint64_t target = starts.back() * k / slices;
+    slice_start[k] =
+        std::size_t(std::lower_bound(starts.begin(), starts.end() - 1, target) - starts.begin());
+  }
+  for (std::uint64_t wave = 0; wave < slices; wave += threads) {
+    const std::uint32_t count =
+        static_cast<std::uint32_t>(std::min<std::uint64_t>(threads, slices - wave));
+    std::vector<Slice> wave_slices(count);
+    run_parallel(threads, count, [&](std::uint32_t i) {
+      wave_slices[i].groups = group_halfedges_in(
+          starts, slice_start[wave + i], slice_start[wave + i + 1], halfedge_count, from, to, used);
+      classify(wave_slices[i]);
+    });
+    std::vector<EdgeId> first_edge(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const Slice& slice = wave_slices[i];
+      first_edge[i] = graph.edge_count();
+      ends.resize(ends.size() + 2 * std::size_t{slice.edges});
+      graph.mesh_edges += slice.mesh_edges;
+      graph.inconsistent_edges += slice.inconsistent_edges;
+      for (int c = 0; c < kCutCauses; ++c) graph.cuts.by_cause[c] += slice.cuts.by_cause[c];
     }
-    // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
-    // f2 runs along the edge the same way, else the next one.
-    const std::uint32_t a2 = same_way ? h2 : half.next(h2), b2 = same_way ? half.next(h2) : h2;
-    auto seam = [&](std::span<const std::uint32_t> id) {
-      return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
-    };
-    if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
-    if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
-    auto border = [&](std::span<const std::uint32_t> id) {
-      return !id.empty() && id[f1] != id[f2];
-    };
-    if (border(cuts.face_material)) return cut(CutCause::material);
-    if (border(cuts.face_group)) return cut(CutCause::group);
-    if (border(cuts.face_object)) return cut(CutCause::object);
-    if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
-    if (border(cuts.face_property)) return cut(CutCause::face_property);
-    graph.inconsistent_edges += same_way;
-    const EdgeId e = graph.edge_count();
-    const NodeId n1 = node_of(f1), n2 = node_of(f2);
-    graph.node_edges[3 * std::size_t{n1} + k1] = e;
-    graph.node_edges[3 * std::size_t{n2} + k2] = e;
-    ends.push_back(n1);
-    ends.push_back(n2);
-  });
+    run_parallel(threads, count, [&](std::uint32_t i) { number(wave_slices[i], first_edge[i]); });
+  }
   graph.cubic = 2 * std::size_t{graph.edge_count()} == graph.node_edges.size();
   return graph;
 }

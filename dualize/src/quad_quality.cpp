@@ -32,21 +32,48 @@ double quad_corner_deviation(const Vec& a, const Vec& b, const Vec& c, const Vec
   // Also catches an overflowing cross product (length infinite).
   if (!(length > 0) || !std::isfinite(length)) return kDegenerateQuadCost;
   for (double& x : n) x /= length;
-  double worst = 0;
+  // Each corner's angle as (cos, sin) times a positive factor: counter-clockwise about n from
+  // to_next to to_prev.
+  double along[4], across[4];
   for (int k = 0; k < 4; ++k) {
     const Vec& p = corners[k];
     const Vec to_next = project(sub(corners[(k + 1) % 4], p), n);
     const Vec to_prev = project(sub(corners[(k + 3) % 4], p), n);
     if (dot(to_next, to_next) == 0 || dot(to_prev, to_prev) == 0) return kDegenerateQuadCost;
-    // Counter-clockwise about n from to_next to to_prev: the interior angle of a quad whose
-    // corners run counter-clockwise about n, as (c − a) × (d − b) makes them.
-    double theta = std::atan2(dot(n, cross(to_next, to_prev)), dot(to_next, to_prev)) * 180.0 /
-                   std::numbers::pi;
-    if (theta < 0) theta += 360.0;
-    if (theta >= 360.0) theta = 0;
-    worst = std::max(worst, std::abs(90.0 - theta));
+    along[k] = dot(to_next, to_prev);
+    across[k] = dot(n, cross(to_next, to_prev));
   }
-  return worst;
+  // |90° − θ| in degrees, θ in [0°, 360°): the interior angle of a quad whose corners run
+  // counter-clockwise about n, as (c − a) × (d − b) makes them.
+  auto deviation = [&](int k) {
+    double theta = std::atan2(across[k], along[k]) * 180.0 / std::numbers::pi;
+    if (theta < 0) theta += 360.0;
+    if (theta >= 360.0) theta = 0;  // rounding reached the full turn
+    return std::abs(90.0 - theta);
+  };
+  // The worst corner is found without trigonometry: the diamond angle (x, y) -> [0, 4) rises
+  // with θ and is symmetric about 90° like θ itself, so |1 − diamond| orders the corners as
+  // |90° − θ| does; only the worst corner's atan2 is taken. Where rounding wraps θ to 0 the
+  // order may differ, and all four are measured.
+  auto diamond = [](double x, double y) {
+    if (x == 0 && y == 0) return 0.0;
+    if (y >= 0) return x >= 0 ? y / (x + y) : 1 - x / (y - x);
+    return x < 0 ? 2 - y / (-x - y) : 3 + x / (x - y);
+  };
+  int worst = 0;
+  double worst_key = -1;
+  for (int k = 0; k < 4; ++k) {
+    const double key = std::abs(1 - diamond(along[k], across[k]));
+    if (key > worst_key) worst_key = key, worst = k;
+  }
+  double theta = std::atan2(across[worst], along[worst]) * 180.0 / std::numbers::pi;
+  if (theta < 0) theta += 360.0;
+  if (theta < 360.0 && worst_key >= 0) return std::abs(90.0 - theta);
+  // A wrapped worst corner, or no corner's angle defined (NaN from overflowing products, which
+  // the maximum skips as before).
+  double deviation_max = 0;
+  for (int k = 0; k < 4; ++k) deviation_max = std::max(deviation_max, deviation(k));
+  return deviation_max;
 }
 
 HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual) {

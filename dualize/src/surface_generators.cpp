@@ -6,6 +6,8 @@
 #include <unordered_map>
 #include <vector>
 
+#include "edge_groups.hpp"
+
 namespace petersen {
 
 namespace {
@@ -128,6 +130,8 @@ TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, st
   // in README.md relies on it); no std distribution, whose results differ between libraries.
   std::mt19937_64 rng(seed);
   auto& tris = mesh.triangles;
+  tris.reserve(tris.size() + 2 * std::size_t{splits});
+  mesh.positions.reserve(mesh.positions.size() + splits);
   for (std::uint32_t k = 0; k < splits; ++k) {
     FaceId t = static_cast<FaceId>(rng() % tris.size());
     auto [a, b, c] = tris[t];
@@ -141,40 +145,60 @@ TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, st
     tris.push_back({b, c, m});
     tris.push_back({c, a, m});
   }
-  // Edge flips: the directed edge (u, v) of one triangle meets (v, u) of the other.
-  auto key = [](VertexId u, VertexId v) { return (std::uint64_t{u} << 32) | v; };
-  std::unordered_map<std::uint64_t, FaceId> face_of;  // directed edge -> triangle holding it
-  std::vector<std::uint32_t> degree(mesh.positions.size(), 0);
-  for (FaceId t = 0; t < tris.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      face_of[key(tris[t][k], tris[t][(k + 1) % 3])] = t;
-      ++degree[tris[t][k]];
-    }
+  // Edge flips on halfedges: halfedge 3t + k runs from corner k of triangle t to corner k + 1,
+  // and twin[h] is the halfedge running back along the same edge (4 bytes per halfedge, where a
+  // map of directed edges cost ten times that and a hash per step).
+  const std::uint32_t halfedges = static_cast<std::uint32_t>(3 * tris.size());
+  HugeVector<std::uint32_t> twin(halfedges);
+  {
+    const EdgeGroups groups = group_halfedges(mesh, {});
+    for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
+      if (end - first != 2) throw MeshError("randomize_triangulation: the mesh is not closed");
+      twin[groups.entries[first][1]] = groups.entries[first + 1][1];
+      twin[groups.entries[first + 1][1]] = groups.entries[first][1];
+    });
   }
-  auto corner_after = [&](FaceId t, VertexId u, VertexId v) {
-    for (int k = 0; k < 3; ++k)
-      if (tris[t][k] == u && tris[t][(k + 1) % 3] == v) return tris[t][(k + 2) % 3];
-    return VertexId{0xFFFFFFFFu};
+  auto from = [&](std::uint32_t h) { return tris[h / 3][h % 3]; };
+  auto to = [&](std::uint32_t h) { return tris[h / 3][(h % 3 + 1) % 3]; };
+  auto next = [](std::uint32_t h) { return h - h % 3 + (h % 3 + 1) % 3; };
+  auto prev = [](std::uint32_t h) { return h - h % 3 + (h % 3 + 2) % 3; };
+  // Whether the halfedge w -> z exists: a walk around w, from its halfedge `start`.
+  auto has_halfedge = [&](std::uint32_t start, VertexId z) {
+    std::uint32_t h = start;
+    do {
+      if (to(h) == z) return true;
+      h = twin[prev(h)];
+    } while (h != start);
+    return false;
   };
+  std::vector<std::uint32_t> degree(mesh.positions.size(), 0);
+  for (const auto& t : tris)
+    for (VertexId v : t) ++degree[v];
   for (std::uint32_t k = 0; k < flips; ++k) {
     FaceId t = static_cast<FaceId>(rng() % tris.size());
     int corner = static_cast<int>(rng() % 3);
-    VertexId u = tris[t][corner], v = tris[t][(corner + 1) % 3];
-    VertexId w = tris[t][(corner + 2) % 3];
-    FaceId t2 = face_of.at(key(v, u));
-    VertexId z = corner_after(t2, v, u);
+    const std::uint32_t h = 3 * t + corner, g = twin[h];
+    const FaceId t2 = g / 3;
+    const VertexId u = from(h), v = to(h), w = from(prev(h)), z = from(prev(g));
     // Flip (u,v) to (w,z) only if (w,z) is not an edge already and u, v keep degree >= 3.
-    if (w == z || degree[u] <= 3 || degree[v] <= 3 || face_of.count(key(w, z))) continue;
+    if (w == z || degree[u] <= 3 || degree[v] <= 3 || has_halfedge(prev(h), z)) continue;
     // t = (u, v, w) and t2 = (v, u, z) bound the quad u, z, v, w (counter-clockwise); its other
-    // diagonal gives (u, z, w) and (z, v, w), with the same orientation.
-    for (int j = 0; j < 3; ++j) {
-      face_of.erase(key(tris[t][j], tris[t][(j + 1) % 3]));
-      face_of.erase(key(tris[t2][j], tris[t2][(j + 1) % 3]));
-    }
+    // diagonal gives (u, z, w) and (z, v, w), with the same orientation. The outer sides keep
+    // their twins, which are told their new halfedges.
+    const std::uint32_t vw = twin[next(h)], wu = twin[prev(h)], uz = twin[next(g)],
+                        zv = twin[prev(g)];
     tris[t] = {u, z, w};
     tris[t2] = {z, v, w};
-    for (FaceId f : {t, t2})
-      for (int j = 0; j < 3; ++j) face_of[key(tris[f][j], tris[f][(j + 1) % 3])] = f;
+    const std::uint32_t a = 3 * t, b = 3 * t2;
+    auto join = [&](std::uint32_t x, std::uint32_t y) {
+      twin[x] = y;
+      twin[y] = x;
+    };
+    join(a, uz);
+    join(a + 1, b + 2);
+    join(a + 2, wu);
+    join(b, zv);
+    join(b + 1, vw);
     --degree[u];
     --degree[v];
     ++degree[w];
@@ -187,6 +211,63 @@ TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, st
                                    std::uint64_t seed) {
   return randomize_triangulation(voxel_plate({genus, genus == 0 ? 0u : 1u, 1, false}), splits,
                                  flips, seed);
+}
+
+TriangleMesh spatially_ordered(const TriangleMesh& mesh) {
+  std::array<double, 3> low{}, high{};
+  for (int d = 0; d < 3; ++d) {
+    low[d] = mesh.positions.empty() ? 0 : mesh.positions[0][d];
+    high[d] = low[d];
+  }
+  for (const auto& p : mesh.positions) {
+    for (int d = 0; d < 3; ++d) {
+      low[d] = std::min(low[d], p[d]);
+      high[d] = std::max(high[d], p[d]);
+    }
+  }
+  // 21 bits per axis, interleaved: the key of a centroid.
+  auto spread = [](std::uint64_t x) {
+    x &= 0x1FFFFF;
+    x = (x | x << 32) & 0x1F00000000FFFFull;
+    x = (x | x << 16) & 0x1F0000FF0000FFull;
+    x = (x | x << 8) & 0x100F00F00F00F00Full;
+    x = (x | x << 4) & 0x10C30C30C30C30C3ull;
+    x = (x | x << 2) & 0x1249249249249249ull;
+    return x;
+  };
+  HugeVector<std::array<std::uint64_t, 2>> order(mesh.triangles.size());
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    std::uint64_t key = 0;
+    for (int d = 0; d < 3; ++d) {
+      double c = 0;
+      for (VertexId v : mesh.triangles[t]) c += mesh.positions[v][d];
+      const double extent = high[d] - low[d];
+      const double unit = extent > 0 ? (c / 3 - low[d]) / extent : 0;
+      key |= spread(static_cast<std::uint64_t>(std::clamp(unit, 0.0, 1.0) * 0x1FFFFF)) << d;
+    }
+    order[t] = {key, t};
+  }
+  std::sort(order.begin(), order.end());
+  TriangleMesh out;
+  out.triangles.resize(mesh.triangles.size());
+  HugeVector<VertexId> renamed(mesh.positions.size(), 0xFFFFFFFFu);
+  out.positions.reserve(mesh.positions.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const auto& t = mesh.triangles[order[i][1]];
+    for (int k = 0; k < 3; ++k) {
+      VertexId& id = renamed[t[k]];
+      if (id == 0xFFFFFFFFu) {
+        id = static_cast<VertexId>(out.positions.size());
+        out.positions.push_back(mesh.positions[t[k]]);
+      }
+      out.triangles[i][k] = id;
+    }
+  }
+  // Vertices no triangle uses keep their place at the end, in their order.
+  for (VertexId v = 0; v < mesh.positions.size(); ++v) {
+    if (renamed[v] == 0xFFFFFFFFu) out.positions.push_back(mesh.positions[v]);
+  }
+  return out;
 }
 
 }  // namespace petersen

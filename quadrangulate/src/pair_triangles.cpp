@@ -260,9 +260,17 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
     throw std::logic_error("internal error: " + name +
                            " returned a matching that is not perfect: " + check.message);
   }
-  for (NodeId v = 0; v < cubic.node_count(); ++v) {
-    const NodeId w = cubic.other_end(matching.mate_edge[v], v);
-    pairing.partner[node_of.empty() ? v : node_of[v]] = node_of.empty() ? w : node_of[w];
+  if (node_of.empty()) {
+    // The whole graph: the partners are written over the mate edges, each from its own entry,
+    // so that no second array of n entries is live beside the graph.
+    pairing.partner = std::move(matching.mate_edge);
+    for (NodeId v = 0; v < cubic.node_count(); ++v) {
+      pairing.partner[v] = cubic.other_end(pairing.partner[v], v);
+    }
+  } else {
+    for (NodeId v = 0; v < cubic.node_count(); ++v) {
+      pairing.partner[node_of[v]] = node_of[cubic.other_end(matching.mate_edge[v], v)];
+    }
   }
   stats.verify_seconds += clock.lap();
 }
@@ -275,7 +283,6 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   LapClock clock;
   TrianglePairing pairing;
   const std::uint32_t n = graph.node_count;
-  pairing.partner.assign(n, kNoNode);
   const Algorithm closed_algorithm =
       options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
   const bool quality = options.objective == Objective::quality;
@@ -288,8 +295,8 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.
   if (graph.cubic && !use_lrs) {
-    const Components components = components_of(graph);
-    stats.components = stats.closed_components = components.closed.size();
+    // Only their number: the per-node ids are freed before the matching's arrays are made.
+    stats.components = stats.closed_components = components_of(graph).closed.size();
     CubicGraph cubic =
         CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
     stats.dual_seconds += clock.lap();
@@ -299,6 +306,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     return pairing;
   }
 
+  pairing.partner.assign(n, kNoNode);
   const Components components = components_of(graph);
   stats.components = components.closed.size();
   std::vector<NodeId> closed_nodes, open_nodes;

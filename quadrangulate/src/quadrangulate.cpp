@@ -12,6 +12,7 @@
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "shape_cuts.hpp"
 
@@ -61,7 +62,8 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   stats.vertices = mesh.positions.size();
   PairableGraph graph = [&] {
     quad_detail::AttributeCutIds ids;  // freed once the graph has the cuts
-    return build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids));
+    return build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids),
+                                options.threads);
   }();
   HugeVector<double> degrees;
   if (options.objective == Objective::quality || options.max_corner_deviation) {
@@ -85,7 +87,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   stats.check_seconds = clock.lap();
 
-  const quad_detail::TrianglePairing pairing =
+  quad_detail::TrianglePairing pairing =
       quad_detail::pair_triangles(graph, mesh, degrees, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
     stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
@@ -101,8 +103,12 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   PolygonMesh& out = result.mesh;
   out.positions = mesh.positions;
-  out.corners.reserve(mesh.corners.size() - graph.node_count / 2);
-  result.sources.reserve(face_count - graph.node_count / 2);
+  // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
+  std::size_t paired_nodes = 0;
+  for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
+  out.corners.reserve(mesh.corners.size() - paired_nodes);
+  result.sources.reserve(face_count - paired_nodes / 2);
+  if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
   std::vector<quad_detail::FaceKind> kinds;  // for all_quad only
   auto emitted = [&](quad_detail::FaceKind kind) {
     if (options.all_quad) kinds.push_back(kind);
@@ -131,18 +137,24 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
-  // Quality of the pairs' quads (every output face of four corners made from triangles).
-  std::vector<double> costs;
-  costs.reserve(stats.pairs);
-  for (FaceId o = 0; o < out.face_count(); ++o) {
-    const auto c = out.face(o);
-    if (c.size() != 4 || (result.sources[o][1] == kNoFace && result.sources[o][0] != kNoFace &&
-                          mesh.arity(result.sources[o][0]) != 3)) {
-      continue;
-    }
+  pairing.partner = {};  // freed before the quads' costs are measured beside the output
+  // Quality of the pairs' quads (every output face of four corners made from triangles): each
+  // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
+  // in face order, so the figures do not depend on the threads.
+  const FaceId out_faces = static_cast<FaceId>(out.face_count());
+  std::vector<double> costs(out_faces);
+  constexpr FaceId kBlock = 1 << 16;
+  run_parallel(options.threads, (out_faces + kBlock - 1) / kBlock, [&](std::uint32_t block) {
     const auto& p = out.positions;
-    costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
-  }
+    for (FaceId o = block * kBlock; o < std::min(out_faces, (block + 1) * kBlock); ++o) {
+      const auto c = out.face(o);
+      const bool pair_quad =
+          c.size() == 4 && (result.sources[o][1] != kNoFace || result.sources[o][0] == kNoFace ||
+                            mesh.arity(result.sources[o][0]) == 3);
+      costs[o] = pair_quad ? quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) : -1.0;
+    }
+  });
+  std::erase_if(costs, [](double c) { return c < 0; });
   const QualityFigures quality = quality_figures(std::move(costs));
   stats.quality_median = quality.median;
   stats.quality_p95 = quality.p95;

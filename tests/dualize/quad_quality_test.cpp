@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 
 #include "petersen/dualize/quads.hpp"
 #include "petersen/dualize/surface_generators.hpp"
@@ -17,6 +18,53 @@ namespace petersen {
 namespace {
 
 using P = std::array<double, 3>;
+
+// The measure as its definition reads, every corner's angle by atan2: the fast path (one atan2,
+// for the corner the diamond angle finds worst) must give the same cost.
+double reference_deviation(const P& a, const P& b, const P& c, const P& d) {
+  auto sub = [](const P& p, const P& q) { return P{p[0] - q[0], p[1] - q[1], p[2] - q[2]}; };
+  auto dot = [](const P& p, const P& q) { return p[0] * q[0] + p[1] * q[1] + p[2] * q[2]; };
+  auto cross = [](const P& p, const P& q) {
+    return P{p[1] * q[2] - p[2] * q[1], p[2] * q[0] - p[0] * q[2], p[0] * q[1] - p[1] * q[0]};
+  };
+  const P corners[4] = {a, b, c, d};
+  P n = cross(sub(c, a), sub(d, b));
+  const double length = std::sqrt(dot(n, n));
+  for (double& x : n) x /= length;
+  double worst = 0;
+  for (int k = 0; k < 4; ++k) {
+    auto project = [&](P p) {
+      const double along = dot(p, n);
+      return P{p[0] - along * n[0], p[1] - along * n[1], p[2] - along * n[2]};
+    };
+    const P u = project(sub(corners[(k + 1) % 4], corners[k]));
+    const P v = project(sub(corners[(k + 3) % 4], corners[k]));
+    double theta = std::atan2(dot(n, cross(u, v)), dot(u, v)) * 180.0 / std::numbers::pi;
+    if (theta < 0) theta += 360.0;
+    if (theta >= 360.0) theta = 0;
+    worst = std::max(worst, std::abs(90.0 - theta));
+  }
+  return worst;
+}
+
+TEST(QuadQuality, AgreesWithEveryCornersAngle) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> coordinate(-1.0, 1.0);
+  int nonconvex = 0;
+  for (int i = 0; i < 200000; ++i) {
+    P q[4];
+    // Near-planar quads around a unit square, and free ones in space.
+    const double spread = i % 2 ? 0.6 : 2.0;
+    const P square[4] = {P{0, 0, 0}, P{1, 0, 0}, P{1, 1, 0}, P{0, 1, 0}};
+    for (int k = 0; k < 4; ++k)
+      for (int d = 0; d < 3; ++d) q[k][d] = square[k][d] + spread * coordinate(rng);
+    const double fast = quad_corner_deviation(q[0], q[1], q[2], q[3]);
+    if (fast == kDegenerateQuadCost) continue;
+    nonconvex += fast > 90;
+    ASSERT_NEAR(fast, reference_deviation(q[0], q[1], q[2], q[3]), 1e-9) << "quad " << i;
+  }
+  EXPECT_GT(nonconvex, 1000);  // the reflex corners were reached too
+}
 
 TEST(QuadQuality, SquareAndRectangleCostNothing) {
   EXPECT_NEAR(quad_corner_deviation({0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}), 0, 1e-12);

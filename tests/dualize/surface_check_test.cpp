@@ -2,6 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "petersen/dualize/surface_generators.hpp"
 
 namespace petersen {
@@ -128,6 +131,39 @@ TEST(SurfaceCheck, DescribeListsCountsAndFirstElements) {
             std::string::npos)
       << text;
   EXPECT_NE(text.find("boundary edges: 3 ((0, 2), "), std::string::npos) << text;
+}
+
+// The scale series' layout: the same surface (every triangle, by its corners' positions, in the
+// same orientation), closed with the same genus, its triangles now in Morton order.
+TEST(SurfaceCheck, SpatialOrderKeepsTheSurface) {
+  const TriangleMesh mesh = randomize_triangulation(voxel_plate({2, 1, 6, false}), 500, 1500, 3);
+  const TriangleMesh ordered = spatially_ordered(mesh);
+  ASSERT_EQ(ordered.triangles.size(), mesh.triangles.size());
+  ASSERT_EQ(ordered.positions.size(), mesh.positions.size());
+  const SurfaceReport before = inspect_surface(mesh), after = inspect_surface(ordered);
+  EXPECT_TRUE(after.closed());
+  EXPECT_EQ(after.genus, before.genus);
+  EXPECT_EQ(after.genus, 2u);
+  // Each triangle as its corners' positions, rotated to start at the smallest: the same multiset.
+  auto as_positions = [](const TriangleMesh& m) {
+    std::vector<std::array<std::array<double, 3>, 3>> out;
+    for (const auto& t : m.triangles) {
+      std::array<std::array<double, 3>, 3> p = {m.positions[t[0]], m.positions[t[1]],
+                                                m.positions[t[2]]};
+      std::rotate(p.begin(), std::min_element(p.begin(), p.end()), p.end());
+      out.push_back(p);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(as_positions(ordered), as_positions(mesh));
+  // Vertices in order of first use.
+  VertexId next = 0;
+  for (const auto& t : ordered.triangles)
+    for (VertexId v : t) {
+      ASSERT_LE(v, next);
+      next = std::max(next, v + 1);
+    }
 }
 
 }  // namespace

@@ -7,8 +7,10 @@
 #include <rapidcheck/gtest.h>
 
 #include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "result_check.hpp"
 
@@ -440,4 +442,47 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
 }
 
 }  // namespace
+// Threads split the grouping into vertex slices and the quads' measure into blocks: the answer
+// (faces, sources, witness) and every count and quality figure are those of one thread.
+RC_GTEST_PROP(Quadrangulate, ThreadsDoNotChangeTheAnswer, ()) {
+  const PolygonMesh mesh = *testing::mixed_meshes();
+  const std::uint32_t threads = *rc::gen::inRange<std::uint32_t>(2, 6);
+  const bool all_quad = *rc::gen::arbitrary<bool>();
+  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
+  QuadOptions options{.all_quad = all_quad, .objective = objective};
+  QuadResult one, many;
+  try {
+    one = quadrangulate(mesh, options);
+  } catch (const MeshError&) {
+    RC_ASSERT(all_quad);
+    options.threads = threads;
+    RC_ASSERT_THROWS_AS(quadrangulate(mesh, options), MeshError);
+    return;
+  }
+  options.threads = threads;
+  many = quadrangulate(mesh, options);
+  RC_ASSERT(many.mesh.corners == one.mesh.corners);
+  RC_ASSERT(many.mesh.face_start == one.mesh.face_start);
+  RC_ASSERT(many.sources == one.sources);
+  RC_ASSERT(many.tutte_set == one.tutte_set);
+  const QuadStats &a = one.stats, &b = many.stats;
+  RC_ASSERT(b.pairs == a.pairs && b.triangles_left == a.triangles_left);
+  RC_ASSERT(b.mesh_edges == a.mesh_edges && b.cuts.by_cause == a.cuts.by_cause);
+  RC_ASSERT(b.inconsistent_edges == a.inconsistent_edges && b.components == a.components);
+  RC_ASSERT(b.euler_characteristic == a.euler_characteristic && b.genus == a.genus);
+  RC_ASSERT(b.quality_median == a.quality_median && b.quality_p95 == a.quality_p95);
+  RC_ASSERT(b.nonconvex_quads == a.nonconvex_quads && b.objective_total == a.objective_total);
+  if (objective == Objective::quality && !all_quad) {
+    // The certified optimum is the quads' own summed cost, each rounded to the solver's units.
+    double sum = 0;
+    for (FaceId o = 0; o < many.mesh.face_count(); ++o) {
+      if (many.sources[o][1] == kNoFace) continue;
+      const auto c = many.mesh.face(o);
+      const auto& p = many.mesh.positions;
+      sum += quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]);
+    }
+    RC_ASSERT(std::abs(b.objective_total - sum) <= double(b.pairs + 1) / kDefaultCostScale);
+  }
+}
+
 }  // namespace petersen

@@ -7,6 +7,7 @@
 
 #include "../stopwatch.hpp"
 #include "blossom_solver.hpp"
+#include "breadth_first_order.hpp"
 
 namespace petersen {
 
@@ -25,21 +26,38 @@ void check_costs(std::span<const Cost> costs, std::uint32_t edge_count, Cost lim
   }
 }
 
+// The solver runs on the breadth-first copy (breadth_first_order.hpp says why: 4x fewer cache
+// misses per scanned neighbour on subdivided meshes); the matching and the node duals are
+// mapped back to the input's ids, the odd sets need no mapping.
 template <class Graph>
 MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
                     const MinCostOptions& options) {
   MinCostResult result;
   Stopwatch init;
-  weighted_detail::BlossomSolver<Graph> solver(graph, costs, result.matching.mate_edge,
-                                               result.stats);
+  const weighted_detail::BreadthFirstCopy copy = weighted_detail::breadth_first_copy(graph);
+  HugeVector<EdgeId> mate;
+  weighted_detail::BlossomSolver<CsrGraph> solver(copy.graph, costs, mate, result.stats);
   if (options.greedy_start) solver.greedy_start();
   result.stats.init_seconds = init.seconds();
-  result.stats.free_after_init = result.matching.unmatched_count();
+  result.stats.free_after_init =
+      static_cast<std::uint32_t>(std::count(mate.begin(), mate.end(), kNoEdge));
   Stopwatch searches;
   solver.run();
   result.stats.search_seconds = searches.seconds();
   Stopwatch certificate;
-  result.certificate = solver.certificate();
+  MatchingCertificate ordered = solver.certificate();
+  const std::uint32_t n = graph.node_count();
+  result.matching = Matching(n);
+  result.certificate.node_dual.resize(n);
+  result.certificate.node_set.resize(n);
+  for (NodeId v = 0; v < n; ++v) {
+    const NodeId w = copy.new_node[v];
+    result.matching.mate_edge[v] = mate[w];
+    result.certificate.node_dual[v] = ordered.node_dual[w];
+    result.certificate.node_set[v] = ordered.node_set[w];
+  }
+  result.certificate.set_parent = std::move(ordered.set_parent);
+  result.certificate.set_dual = std::move(ordered.set_dual);
   result.stats.certificate_seconds = certificate.seconds();
   for (NodeId v = 0; v < graph.node_count(); ++v) {
     const EdgeId e = result.matching.mate_edge[v];

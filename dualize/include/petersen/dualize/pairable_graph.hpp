@@ -90,7 +90,10 @@ struct PairableGraph {
 /// Builds the pairable graph of any polygon mesh, with the extra cuts of `cuts`. Throws MeshError
 /// naming the face when a corner is out of range or a face has fewer than three corners, when a
 /// span of `cuts` has the wrong size, and for meshes past 32-bit ids. O(C log d) for C corners and
-/// maximum vertex degree d, plus O(u log u) for u user edges; no hashing.
-PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts = {});
+/// maximum vertex degree d, plus O(u log u) for u user edges; no hashing. The vertices are
+/// grouped and the edges classified in slices, on up to `threads` threads (0: every core); the
+/// graph is the same for any number.
+PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts = {},
+                                   std::uint32_t threads = 1);
 
 }  // namespace petersen

@@ -47,6 +47,12 @@ TriangleMesh voxel_plate(const PlateSpec& spec);
 TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
                                      std::uint64_t seed);
 
+/// The mesh renumbered the way scanners and subdivisions store theirs: triangles in Morton
+/// (Z-order) of their centroids, vertices in order of first use, orientation kept. Neighbours then
+/// sit near each other in memory, where random splits and flips leave them scattered over the
+/// arrays. O(F log F).
+TriangleMesh spatially_ordered(const TriangleMesh& mesh);
+
 /// An irregular closed triangulation of genus `genus`: a thin plate with `genus` holes (a cube for
 /// genus 0), then `splits` random 1-to-3 triangle splits, then about `flips` random edge flips
 /// that keep it a simplicial triangulation. Positions of new vertices are triangle centroids.

@@ -70,7 +70,7 @@ struct MinCostStats {
   std::uint64_t blossoms_expanded = 0;
   std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
   std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
-  std::uint64_t released_scans = 0;  ///< nodes scanned when their tree augmented
+  std::uint64_t released_scans = 0;  ///< nodes scanned on leaving an expanded odd blossom
 };
 
 struct MinCostResult {
@@ -84,9 +84,11 @@ struct MinCostResult {
 /// kMaxCost), with its certificate. Edmonds' primal-dual blossom algorithm: from the greedy
 /// start, the alternating trees of all free nodes grow at once under one lazy dual clock; the
 /// next event (an edge turning tight, an odd blossom's dual reaching zero) comes from a radix
-/// priority queue keyed by slack; two trees meeting augment and are released. In the worst case
-/// O(n) augmentations, each after O(n) shrinks and expansions that rescan up to m edges: O(n² m);
-/// in practice the work follows the regions the trees cover (armadillo's dual, 86k nodes: 0.2 s).
+/// priority queue keyed by slack; two trees meeting augment and are released. It runs on a
+/// breadth-first renumbering of the graph (meshes' own orders scatter neighbours; the answer is
+/// in the input's ids). In the worst case O(n) augmentations, each after O(n) shrinks and
+/// expansions that rescan up to m edges: O(n² m); in practice the work follows the regions the
+/// trees cover (armadillo's dual, 86k nodes: 0.13 s of CPU time).
 /// Iterative throughout. Throws GraphError when the graph has no perfect matching,
 /// std::invalid_argument when costs has the wrong size or a cost out of range.
 MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,

@@ -78,6 +78,10 @@ struct QuadOptions {
   /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
   /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
   PeerMatcher peer = nullptr;
+  /// Threads for the phases that split into independent parts (grouping the halfedges and
+  /// classifying the edges, the quads' measure); 0: every core. Threads are started for the call
+  /// and joined before it returns. The result does not depend on it.
+  std::uint32_t threads = 1;
 };
 
 struct QuadStats {
