@@ -255,6 +255,7 @@ TEST(Quadrangulate, AttributeCutsCompareValues) {
   result = quadrangulate(mesh, {.cuts = {.face_material = one_material}});
   EXPECT_EQ(result.stats.pairs, 1u);
   EXPECT_THROW(quadrangulate(mesh, {.cross = {CutCause::boundary}}), std::invalid_argument);
+  EXPECT_THROW(quadrangulate(mesh, {.cross = {CutCause::shape}}), std::invalid_argument);
   a.face_material = {0, 5};  // no such name
   EXPECT_THROW(quadrangulate(mesh), MeshError);
 }

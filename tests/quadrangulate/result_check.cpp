@@ -455,85 +455,100 @@ std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& re
     for (std::size_t k = 0; k < face.size(); ++k) {
       const VertexId v = face[k];
       const std::size_t oc = first_corner(out, o) + k;
-      // The input vertices v was made from: itself, an edge of the sources (their shared edge
-      // excepted), or all the sources' vertices (a quad's centre).
-      std::vector<VertexId> parents;
-      if (v < n) {
-        parents = {v};
-      } else {
-        const auto& p = out.positions[v];
-        auto at = [&](const std::vector<VertexId>& us) {
-          for (int d = 0; d < 3; ++d) {
+      // The values corner k must have when v was made from `parents` (itself, an edge's ends, a
+      // quad's corners): empty when it has them, else what differs.
+      auto mismatch = [&](const std::vector<VertexId>& parents) -> std::string {
+        std::string of;
+        for (VertexId u : parents) of += " " + std::to_string(u);
+        const std::string where = " of vertex " + std::to_string(v) + " in output face " +
+                                  std::to_string(o) + ", made from vertices" + of;
+        if (v >= n) {
+          for (std::size_t c = 0; c < a.vertex_properties.size(); ++c) {
+            const PropertyColumn& column = a.vertex_properties[c];
             double sum = 0;
-            for (VertexId u : us) sum += input.positions[u][d];
-            if (!close(sum / double(us.size()), p[d])) return false;
-          }
-          return true;
-        };
-        std::vector<VertexId> all;
-        for (FaceId s : {f, g}) {
-          if (s == kNoFace) continue;
-          const auto c = input.face(s);
-          for (std::size_t i = 0; i < c.size(); ++i) {
-            const VertexId u = c[i], w = c[(i + 1) % c.size()];
-            const bool shared = g != kNoFace && corner_at(input, f, u) && corner_at(input, f, w) &&
-                                corner_at(input, g, u) && corner_at(input, g, w);
-            if (parents.empty() && !shared && at({u, w})) parents = {u, w};
-            if (std::find(all.begin(), all.end(), u) == all.end()) all.push_back(u);
-          }
-        }
-        if (parents.empty() && all.size() == 4 && at(all)) parents = all;
-        if (parents.empty()) {
-          return "new vertex " + std::to_string(v) + " of output face " + std::to_string(o) +
-                 " is no midpoint of a side nor the centre of its sources";
-        }
-        for (std::size_t c = 0; c < a.vertex_properties.size(); ++c) {
-          const PropertyColumn& column = a.vertex_properties[c];
-          double sum = 0;
-          for (VertexId u : parents) sum += column.values[u];
-          double expected = sum / double(parents.size());
-          if (column.type != ScalarType::float32 && column.type != ScalarType::float64) {
-            expected = std::round(expected);
-          }
-          if (!close(expected, b.vertex_properties[c].values[v])) {
-            return "vertex property " + column.name + " of new vertex " + std::to_string(v) +
-                   " is not its parents' average";
-          }
-        }
-      }
-      for (CutCause cause : kCornerCauses) {
-        Value expected;
-        if (as_it_was) {
-          expected = corner_value(a, cause, first_corner(input, f) + k);
-        } else {
-          std::array<double, 3> sum{0, 0, 0};
-          bool all_have = true;
-          for (VertexId u : parents) {
-            const auto corner = source_corner(u);
-            if (!corner) {
-              return "vertex " + std::to_string(u) + " of output face " + std::to_string(o) +
-                     " is in none of its source faces";
+            for (VertexId u : parents) sum += column.values[u];
+            double expected = sum / double(parents.size());
+            if (column.type != ScalarType::float32 && column.type != ScalarType::float64) {
+              expected = std::round(expected);
             }
-            const Value x = corner_value(a, cause, *corner);
-            all_have &= x.has_value();
-            if (x)
-              for (int d = 0; d < 3; ++d) sum[d] += (*x)[d];
+            if (!close(expected, b.vertex_properties[c].values[v])) {
+              return "vertex property " + column.name + where + ", is " +
+                     std::to_string(b.vertex_properties[c].values[v]) + ", not their average " +
+                     std::to_string(expected);
+            }
           }
-          for (double& x : sum) x /= double(parents.size());
-          if (cause == CutCause::normal_seam && parents.size() > 1) {
-            const double length = std::hypot(sum[0], sum[1], sum[2]);
-            if (length > 0)
-              for (double& x : sum) x /= length;
-          }
-          if (all_have) expected = sum;
         }
-        if (!close(expected, corner_value(b, cause, oc))) {
-          return "corner " + std::to_string(k) + " (vertex " + std::to_string(v) +
-                 ") of output face " + std::to_string(o) + " has another " +
-                 (cause == CutCause::uv_seam ? "texture coordinate" : "normal") +
-                 " than the source corners it was made from";
+        for (CutCause cause : kCornerCauses) {
+          Value expected;
+          if (as_it_was) {
+            expected = corner_value(a, cause, first_corner(input, f) + k);
+          } else {
+            std::array<double, 3> sum{0, 0, 0};
+            bool all_have = true;
+            for (VertexId u : parents) {
+              const auto corner = source_corner(u);
+              if (!corner) return "vertex " + std::to_string(u) + " is in no source face" + where;
+              const Value x = corner_value(a, cause, *corner);
+              all_have &= x.has_value();
+              if (x)
+                for (int d = 0; d < 3; ++d) sum[d] += (*x)[d];
+            }
+            for (double& x : sum) x /= double(parents.size());
+            if (cause == CutCause::normal_seam && parents.size() > 1) {
+              const double length = std::hypot(sum[0], sum[1], sum[2]);
+              if (length > 0)
+                for (double& x : sum) x /= length;
+            }
+            if (all_have) expected = sum;
+          }
+          if (!close(expected, corner_value(b, cause, oc))) {
+            return std::string(cause == CutCause::uv_seam ? "texture coordinate" : "normal") +
+                   " of corner " + std::to_string(k) + where +
+                   ", is not the value of the source corners";
+          }
+        }
+        return {};
+      };
+      if (v < n) {
+        if (std::string problem = mismatch({v}); !problem.empty()) return problem;
+        continue;
+      }
+      // A new vertex: the midpoint of a side of its sources (their shared edge excepted) or the
+      // centre of their four vertices, found by its position; where a flat or folded quad puts
+      // two of these on one point, either may be the one.
+      const auto& p = out.positions[v];
+      auto at = [&](const std::vector<VertexId>& us) {
+        for (int d = 0; d < 3; ++d) {
+          double sum = 0;
+          for (VertexId u : us) sum += input.positions[u][d];
+          if (!close(sum / double(us.size()), p[d])) return false;
+        }
+        return true;
+      };
+      std::vector<std::vector<VertexId>> candidates;
+      std::vector<VertexId> all;
+      for (FaceId s : {f, g}) {
+        if (s == kNoFace) continue;
+        const auto c = input.face(s);
+        for (std::size_t i = 0; i < c.size(); ++i) {
+          const VertexId u = c[i], w = c[(i + 1) % c.size()];
+          const bool shared = g != kNoFace && corner_at(input, f, u) && corner_at(input, f, w) &&
+                              corner_at(input, g, u) && corner_at(input, g, w);
+          if (!shared && at({u, w})) candidates.push_back({u, w});
+          if (std::find(all.begin(), all.end(), u) == all.end()) all.push_back(u);
         }
       }
+      if (all.size() == 4 && at(all)) candidates.push_back(all);
+      if (candidates.empty()) {
+        return "new vertex " + std::to_string(v) + " of output face " + std::to_string(o) +
+               " is no midpoint of a side nor the centre of its sources";
+      }
+      std::string problem;
+      for (const auto& parents : candidates) {
+        problem = mismatch(parents);
+        if (problem.empty()) break;
+      }
+      if (!problem.empty()) return problem;
     }
   }
   return {};
