@@ -307,6 +307,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
     out.attributes =
         derived_attributes(mesh.attributes, input_vertices, face_of, corner_from, new_vertices);
   }
+  out.attributes.position_type = mesh.attributes.position_type;
   out.positions = std::move(mesh.positions);
   result.stats.added_vertices = out.positions.size() - input_vertices;
   result.stats.split_quads = pieces;

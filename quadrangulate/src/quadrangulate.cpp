@@ -165,6 +165,8 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   if (!mesh.attributes.empty()) {
     out.attributes = quad_detail::attributes_of_pairs(mesh, out, result.sources);
   }
+  // Not an attribute, but what the input's coordinates were: a float PLY is written back as float.
+  out.attributes.position_type = mesh.attributes.position_type;
   stats.quads_seconds = clock.lap();
 
   if (options.all_quad && stats.triangles_left > 0) {

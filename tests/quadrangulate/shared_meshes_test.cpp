@@ -115,5 +115,20 @@ TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
   }
 }
 
+// Issue 13 on a real textured mesh: spot's 288 UV seams cut, every triangle still paired, every
+// quad corner with its triangle corner's texture coordinates, and all quads on request.
+TEST(SharedMeshes, SpotKeepsItsTextureCoordinates) {
+  const auto dir = testing::shared_mesh_dir();
+  if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  const PolygonMesh mesh = read_mesh(*dir + "/spot.obj.gz");
+  ASSERT_FALSE(mesh.attributes.corner_texcoord.empty());
+  for (bool all_quad : {false, true}) {
+    const QuadResult result = quadrangulate(mesh, {.all_quad = all_quad});
+    EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::uv_seam)], 0u);
+    EXPECT_EQ(testing::check_quad_result(mesh, result, all_quad, false), "");
+    EXPECT_EQ(testing::check_attributes_kept(mesh, result), "");
+  }
+}
+
 }  // namespace
 }  // namespace petersen
