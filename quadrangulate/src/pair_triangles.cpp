@@ -372,6 +372,9 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
     // its size maximum, the minimum-cost one included.
     MaximumMatchingResult result = maximum_matching(open, options.augment);
+    // Its greedy pass is the initial pairing here; each augmenting path then paired two more.
+    stats.matching.unpaired_after_initial += static_cast<std::uint32_t>(
+        open.node_count() - 2 * (result.size - result.stats.augmenting_paths));
     stats.matching.augmenting_paths += result.stats.augmenting_paths;
     stats.matching.blossoms += result.stats.blossoms;
     stats.matching.nodes_labelled += result.stats.nodes_labelled;

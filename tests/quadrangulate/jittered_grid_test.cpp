@@ -76,7 +76,9 @@ TEST(JitteredGrid, QualityGivesBackAtLeast99PercentOfTheQuads) {
                   100 * by_quality, 100 * by_ps);
       EXPECT_GE(by_quality, 0.99);
       EXPECT_GE(by_quality, by_ps);
-      if (torus) EXPECT_LT(by_ps, 0.9);
+      if (torus) {
+        EXPECT_LT(by_ps, 0.9);
+      }
     }
   }
 }

@@ -439,6 +439,12 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
       mesh, result, all_quad, algorithm == Algorithm::lrs && objective == Objective::pairs);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
+  // The summary's initial pairing: what the greedy passes left, each augmenting path pairing two
+  // of them (ps and sg: their paths are the only step after the initial pairing).
+  if ((algorithm == Algorithm::ps || algorithm == Algorithm::sg) && objective == Objective::pairs) {
+    RC_ASSERT(result.stats.matching.unpaired_after_initial ==
+              result.stats.triangles_left + 2 * result.stats.matching.augmenting_paths);
+  }
 }
 
 }  // namespace
