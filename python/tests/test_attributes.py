@@ -1,0 +1,188 @@
+"""What a mesh carries besides positions and faces, through read_mesh, quadrangulate and
+write_mesh: texture coordinates and normals per corner, materials and groups per face, PLY vertex
+colours. The corner values of every quad are checked here against the triangles it came from."""
+
+import numpy as np
+import pytest
+
+import petersen
+from conftest import open_grid
+
+
+def grid_obj(path, seam, uniform=False):
+    """A 2 by 2 grid of squares (open_grid: faces 0-3 the squares' first triangles, 4-7 their
+    second) as an OBJ with vt, vn, mtllib, usemtl and g. The triangles of `seam` (face ids) take
+    their texture coordinates from a second copy shifted in u, so every edge between one of them
+    and another triangle is a UV seam. The left column is material "red" in group "left", the
+    right one "blue" in "right"; with `uniform` all is "skin" in "body"."""
+    V, F = open_grid(2, 2)
+    lines = ["mtllib grid.mtl"]
+    lines += [f"v {x:g} {y:g} {z:g}" for x, y, z in V]
+    lines += [f"vt {x / 2:g} {y / 2:g}" for x, y, _ in V]
+    lines += [f"vt {x / 2 + 0.5:g} {y / 2:g}" for x, y, _ in V]
+    lines += ["vn 0 0 1"]
+    current = None
+    for f, face in enumerate(F):
+        names = ("skin", "body") if uniform else \
+            ("red", "left") if f % 4 < 2 else ("blue", "right")
+        if names != current:
+            lines += [f"usemtl {names[0]}", f"g {names[1]}"]
+            current = names
+        shift = len(V) if f in seam else 0
+        lines.append("f " + " ".join(f"{v + 1}/{v + 1 + shift}/1" for v in face))
+    path.write_text("\n".join(lines) + "\n")
+
+
+def corner_values(values, index, F):
+    """For each face of F (a list), the value of each corner: values[index[corner]]."""
+    out, start = [], 0
+    for face in F:
+        out.append([tuple(values[index[start + c]]) for c in range(len(face))])
+        start += len(face)
+    return out
+
+
+def check_carried(mesh, r):
+    """Every output face's corners have the texture coordinate and normal of the source triangle
+    corner at the same vertex (the first triangle's where both have the vertex) and its material
+    and group are its first source's."""
+    a, b = mesh.attributes, r.attributes
+    in_faces = [list(f) for f in mesh.F]
+    in_uv = corner_values(a["texcoords"], a["corner_texcoord"], in_faces)
+    in_n = corner_values(a["normals"], a["corner_normal"], in_faces)
+    out_uv = corner_values(b["texcoords"], b["corner_texcoord"], r.faces)
+    out_n = corner_values(b["normals"], b["corner_normal"], r.faces)
+    assert len(b["face_material"]) == len(r.faces) == len(r.sources)
+    for k, (face, (t1, t2)) in enumerate(zip(r.faces, r.sources)):
+        for c, v in enumerate(face):
+            sources = [t for t in (t1, t2) if t >= 0 and v in in_faces[t]]
+            assert sources, f"face {k} corner {c}: vertex {v} is in no source triangle"
+            t = sources[0]
+            tc = in_faces[t].index(v)
+            assert out_uv[k][c] == in_uv[t][tc], (k, c)
+            assert out_n[k][c] == in_n[t][tc], (k, c)
+        assert b["material_names"][b["face_material"][k]] == \
+            a["material_names"][a["face_material"][t1]]
+        assert b["group_names"][b["face_group"][k]] == a["group_names"][a["face_group"][t1]]
+
+
+def test_an_obj_round_trips_with_its_attributes(tmp_path):
+    grid_obj(tmp_path / "g.obj", {0, 4})
+    m = petersen.read_mesh(tmp_path / "g.obj")
+    a = m.attributes
+    assert a["texcoords"].shape == (18, 2) and a["normals"].tolist() == [[0, 0, 1]]
+    assert a["material_names"] == ["red", "blue"] and a["group_names"] == ["left", "right"]
+    assert a["face_material"].tolist() == [0, 0, 1, 1] * 2
+    assert a["material_libraries"] == ["grid.mtl"]
+    # Face 0 (vertices 0 3 4) takes the shifted copy (vt 9 onwards), face 2 (3 6 7) the first.
+    assert a["corner_texcoord"][:3].tolist() == [9, 12, 13]
+    assert a["corner_texcoord"][6:9].tolist() == [3, 6, 7]
+    assert m.dropped == []
+    assert petersen.write_mesh(tmp_path / "h.obj", m) == []
+    back = petersen.read_mesh(tmp_path / "h.obj")
+    assert np.array_equal(back.V, m.V) and np.array_equal(back.F, m.F)
+    assert back.attributes.keys() == a.keys()
+    for key, value in a.items():
+        assert np.array_equal(back.attributes[key], value), key
+    # PLY has no place for corner normals, materials or groups: said, and warned.
+    with pytest.warns(petersen.DroppedWarning, match="vn"):
+        dropped = petersen.write_mesh(tmp_path / "h.ply", m.V, m.F, a)
+    assert any("vn" in line for line in dropped)
+    ply = petersen.read_mesh(tmp_path / "h.ply")
+    # The corner texture coordinates survive by value (PLY's texcoord list).
+    assert corner_values(ply.attributes["texcoords"], ply.attributes["corner_texcoord"],
+                         list(ply.F)) == \
+        corner_values(a["texcoords"], a["corner_texcoord"], list(m.F))
+
+
+def test_quads_keep_their_triangles_corner_values(tmp_path):
+    grid_obj(tmp_path / "g.obj", {0, 4})
+    m = petersen.read_mesh(tmp_path / "g.obj")
+    r = petersen.quadrangulate(m)
+    # The column border is a material border (one of its edges is counted as a UV seam).
+    assert len(r.quads) == 4 and r.stats["cut_edges_by_cause"]["material"] >= 1
+    check_carried(m, r)
+    written = petersen.write_mesh(tmp_path / "q.obj", r.V, r.faces, r.attributes)
+    assert written == []
+    back = petersen.read_mesh(tmp_path / "q.obj")
+    assert corner_values(back.attributes["texcoords"], back.attributes["corner_texcoord"],
+                         list(back.F)) == \
+        corner_values(r.attributes["texcoords"], r.attributes["corner_texcoord"], r.faces)
+
+
+def test_a_seam_is_not_crossed_unless_asked(tmp_path):
+    # Faces 0 and 1 (the first triangles of the left column's squares) have every edge on the
+    # seam, which leaves their partners 4 and 5 nothing to pair with either.
+    grid_obj(tmp_path / "g.obj", {0, 1}, uniform=True)
+    m = petersen.read_mesh(tmp_path / "g.obj")
+    assert m.attributes["material_names"] == ["skin"]
+    seam = {0, 1}
+    r = petersen.quadrangulate(m)
+    check_carried(m, r)
+    assert r.stats["cut_edges_by_cause"]["uv_seam"] > 0
+    assert all((s0 in seam) == (s1 in seam) for s0, s1 in r.sources if s1 >= 0)
+    assert r.stats["triangles_left"] == 4
+    assert sorted(r.sources[len(r.quads):, 0]) == [0, 1, 4, 5]
+    crossed = petersen.quadrangulate(m, cross=["uv_seam"])
+    check_carried(m, crossed)
+    assert crossed.stats["triangles_left"] == 0
+    assert any((s0 in seam) != (s1 in seam) for s0, s1 in crossed.sources)
+    # Without the attributes there is no seam; with them given explicitly, the same as the Mesh.
+    plain = petersen.quadrangulate(m.V, m.F)
+    assert plain.stats["triangles_left"] == 0 and plain.attributes == {}
+    explicit = petersen.quadrangulate(m.V, m.F, attributes=m.attributes)
+    assert np.array_equal(explicit.quads, r.quads)
+    # The structure's cuts are never crossed; unknown names are refused.
+    with pytest.raises(ValueError, match="boundary"):
+        petersen.quadrangulate(m, cross=["boundary"])
+    with pytest.raises(ValueError, match="unknown cause 'uv'"):
+        petersen.quadrangulate(m, cross=["uv"])
+
+
+def test_a_ply_keeps_its_vertex_colours(tmp_path):
+    V, F = open_grid(3, 2)
+    rgb = (np.arange(len(V) * 3).reshape(-1, 3) * 7 % 256).astype(np.uint8)
+    header = ["ply", "format ascii 1.0", f"element vertex {len(V)}", "property float x",
+              "property float y", "property float z", "property uchar red", "property uchar green",
+              "property uchar blue", f"element face {len(F)}",
+              "property list uchar int vertex_indices", "end_header"]
+    body = [f"{x:g} {y:g} {z:g} {r} {g} {b}" for (x, y, z), (r, g, b) in zip(V, rgb)]
+    body += ["3 " + " ".join(str(v) for v in f) for f in F]
+    (tmp_path / "c.ply").write_text("\n".join(header + body) + "\n")
+    m = petersen.read_mesh(tmp_path / "c.ply")
+    props = m.attributes["vertex_properties"]
+    assert list(props) == ["red", "green", "blue"]
+    assert all(props[k].dtype == np.uint8 for k in props)
+    assert np.array_equal(np.stack([props["red"], props["green"], props["blue"]], 1), rgb)
+    assert "position_type" not in m.attributes  # ascii positions keep their digits
+    r = petersen.quadrangulate(m, all_quad=True)
+    out = r.attributes["vertex_properties"]
+    assert all(len(out[k]) == len(r.V) and out[k].dtype == np.uint8 for k in out)
+    assert np.array_equal(np.stack([out[k][:len(V)] for k in ("red", "green", "blue")], 1), rgb)
+    assert petersen.write_mesh(tmp_path / "q.ply", r.V, r.faces, r.attributes) == []
+    back = petersen.read_mesh(tmp_path / "q.ply")
+    for k in ("red", "green", "blue"):
+        assert back.attributes["vertex_properties"][k].dtype == np.uint8
+        assert np.array_equal(back.attributes["vertex_properties"][k], out[k])
+    # A binary float PLY stays float.
+    petersen.write_mesh(tmp_path / "f.ply", V, F, {"position_type": "float32"})
+    assert petersen.read_mesh(tmp_path / "f.ply").attributes == {"position_type": "float32"}
+    # Colours made in numpy (int64) are written as the nearest PLY type.
+    made = {"vertex_properties": {"red": np.full(len(V), 200)}}
+    petersen.write_mesh(tmp_path / "n.ply", V, F, made)
+    assert petersen.read_mesh(tmp_path / "n.ply").attributes["vertex_properties"]["red"].tolist() \
+        == [200] * len(V)
+
+
+def test_bad_attributes_are_refused(tmp_path):
+    V, F = open_grid(1, 1)
+    with pytest.raises(ValueError, match="unknown attribute 'colour'"):
+        petersen.write_mesh(tmp_path / "x.ply", V, F, {"colour": [1, 2, 3, 4]})
+    with pytest.raises(ValueError):  # one value per vertex, not three
+        petersen.write_mesh(tmp_path / "x.ply", V, F, {"vertex_properties": {"red": [1, 2, 3]}})
+    with pytest.raises(ValueError, match="-1 means none"):
+        petersen.quadrangulate(V, F, attributes={"face_material": [-2, 0],
+                                                 "material_names": ["a"]})
+    with pytest.raises(ValueError, match="texcoords"):
+        petersen.quadrangulate(V, F, attributes={"texcoords": np.zeros((4, 5))})
+    assert not (tmp_path / "x.ply").exists()
