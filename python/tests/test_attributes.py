@@ -139,6 +139,33 @@ def test_a_seam_is_not_crossed_unless_asked(tmp_path):
         petersen.quadrangulate(m, cross=["uv"])
 
 
+def test_every_corner_its_own_value_through_quads_triangles_and_polygons():
+    # 7 triangles of a grid (one is left) and a quad beside them, each corner with its own
+    # random texture coordinate and normal: every edge a seam, crossed by request, so each quad
+    # takes the shared edge's values from its first triangle. The output's attributes follow
+    # r.faces (quads, the triangle left, the polygon), checked corner by corner.
+    V, F = open_grid(2, 2)
+    V = np.vstack([V, [[5, 0, 0], [6, 0, 0], [6, 1, 0], [5, 1, 0]]])
+    faces = [[9, 10, 11, 12]] + [list(f) for f in F[:-1]]
+    corners = sum(len(f) for f in faces)
+    rng = np.random.default_rng(13)
+    attributes = {
+        "texcoords": rng.random((corners, 2)), "corner_texcoord": rng.permutation(corners),
+        "normals": rng.random((corners, 3)), "corner_normal": rng.permutation(corners),
+        "material_names": ["a", "b", "c"], "face_material": np.arange(len(faces)) % 3,
+        "group_names": ["g"], "face_group": np.zeros(len(faces), int),
+    }
+    mesh = petersen.Mesh(V, [np.array(f) for f in faces], attributes)
+    r = petersen.quadrangulate(mesh, cross=["uv_seam", "normal_seam", "material"])
+    assert len(r.quads) == 3 and len(r.triangles) == 1 and len(r.polygons) == 1
+    check_carried(mesh, r)
+    assert len(r.attributes["corner_texcoord"]) == 3 * 4 + 3 + 4
+    # Not crossed, the seams leave every triangle alone.
+    alone = petersen.quadrangulate(mesh)
+    assert len(alone.quads) == 0 and alone.stats["cut_edges_by_cause"]["uv_seam"] > 0
+    check_carried(mesh, alone)
+
+
 def test_a_ply_keeps_its_vertex_colours(tmp_path):
     V, F = open_grid(3, 2)
     rgb = (np.arange(len(V) * 3).reshape(-1, 3) * 7 % 256).astype(np.uint8)
