@@ -2,6 +2,8 @@
 write_mesh: texture coordinates and normals per corner, materials and groups per face, PLY vertex
 colours. The corner values of every quad are checked here against the triangles it came from."""
 
+import subprocess
+
 import numpy as np
 import pytest
 
@@ -43,27 +45,28 @@ def corner_values(values, index, F):
 
 
 def check_carried(mesh, r):
-    """Every output face's corners have the texture coordinate and normal of the source triangle
-    corner at the same vertex (the first triangle's where both have the vertex) and its material
-    and group are its first source's."""
+    """Every output face's corners have the texture coordinate and normal (where the mesh has
+    them) of the source triangle corner at the same vertex (the first triangle's where both have
+    the vertex), and its material and group are its first source's."""
     a, b = mesh.attributes, r.attributes
     in_faces = [list(f) for f in mesh.F]
-    in_uv = corner_values(a["texcoords"], a["corner_texcoord"], in_faces)
-    in_n = corner_values(a["normals"], a["corner_normal"], in_faces)
-    out_uv = corner_values(b["texcoords"], b["corner_texcoord"], r.faces)
-    out_n = corner_values(b["normals"], b["corner_normal"], r.faces)
-    assert len(b["face_material"]) == len(r.faces) == len(r.sources)
+    corner_keys = [(v, i) for v, i in (("texcoords", "corner_texcoord"),
+                                       ("normals", "corner_normal")) if i in a]
+    assert corner_keys and [i for _, i in corner_keys if i not in b] == []
+    ins = [corner_values(a[v], a[i], in_faces) for v, i in corner_keys]
+    outs = [corner_values(b[v], b[i], r.faces) for v, i in corner_keys]
     for k, (face, (t1, t2)) in enumerate(zip(r.faces, r.sources)):
         for c, v in enumerate(face):
             sources = [t for t in (t1, t2) if t >= 0 and v in in_faces[t]]
             assert sources, f"face {k} corner {c}: vertex {v} is in no source triangle"
             t = sources[0]
             tc = in_faces[t].index(v)
-            assert out_uv[k][c] == in_uv[t][tc], (k, c)
-            assert out_n[k][c] == in_n[t][tc], (k, c)
-        assert b["material_names"][b["face_material"][k]] == \
-            a["material_names"][a["face_material"][t1]]
-        assert b["group_names"][b["face_group"][k]] == a["group_names"][a["face_group"][t1]]
+            for values_in, values_out in zip(ins, outs):
+                assert values_out[k][c] == values_in[t][tc], (k, c)
+        for names, ids in (("material_names", "face_material"), ("group_names", "face_group")):
+            if ids in a:
+                assert len(b[ids]) == len(r.faces)
+                assert b[names][b[ids][k]] == a[names][a[ids][t1]], (k, ids)
 
 
 def test_an_obj_round_trips_with_its_attributes(tmp_path):
@@ -213,3 +216,30 @@ def test_bad_attributes_are_refused(tmp_path):
     with pytest.raises(ValueError, match="texcoords"):
         petersen.quadrangulate(V, F, attributes={"texcoords": np.zeros((4, 5))})
     assert not (tmp_path / "x.ply").exists()
+
+
+@pytest.mark.parametrize("cross", [[], ["uv_seam"]])
+def test_spot_as_the_cli_makes_it(tmp_path, cli, shared_meshes, cross):
+    # spot.obj has UV seams: the module and `petersen quad --cross` make the same faces with the
+    # same corner texture coordinates, each its triangle corner's.
+    mesh_path = shared_meshes / "spot.obj.gz"
+    if not mesh_path.exists():
+        pytest.skip(f"{mesh_path} is absent")
+    out = tmp_path / "q.obj"
+    subprocess.run([cli, "quad", str(mesh_path), str(out)] +
+                   (["--cross", ",".join(cross)] if cross else []), check=True,
+                   capture_output=True)
+    mesh = petersen.read_mesh(mesh_path)
+    r = petersen.quadrangulate(mesh, cross=cross)
+    check_carried(mesh, r)
+    assert (r.stats["cut_edges_by_cause"]["uv_seam"] > 0) == (not cross)
+    written = petersen.read_mesh(out)
+    w = written.attributes
+    faces = list(written.F)
+
+    def keyed(F, uv):
+        return sorted((tuple(int(v) for v in f), tuple(u)) for f, u in zip(F, uv))
+
+    assert keyed(faces, corner_values(w["texcoords"], w["corner_texcoord"], faces)) == \
+        keyed(r.faces, corner_values(r.attributes["texcoords"], r.attributes["corner_texcoord"],
+                                     r.faces))
