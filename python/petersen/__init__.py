@@ -62,8 +62,7 @@ Attributes = Dict[str, Any]
 
 #: The attribute causes ``quadrangulate(..., cross=[...])`` may let quads cross; the names are
 #: those of ``stats["cut_edges_by_cause"]``.
-CROSSABLE = ("uv_seam", "normal_seam", "material", "group", "object", "smoothing",
-             "face_property")
+CROSSABLE = tuple(_petersen.CROSSABLE)
 
 
 class DroppedWarning(UserWarning):

@@ -4,6 +4,8 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
+CROSSABLE: List[str]
+
 def quadrangulate(
     V: npt.ArrayLike,
     F: Any,

@@ -50,13 +50,26 @@ PolygonMesh mesh_from(const py::handle& V, const py::handle& F, const py::handle
   return mesh;
 }
 
+// The causes QuadOptions::cross accepts, by name: petersen.CROSSABLE and the error messages.
+std::vector<std::string> crossable_names() {
+  std::vector<std::string> names;
+  for (int c = 0; c < kCutCauses; ++c) {
+    if (is_attribute_cause(CutCause(c))) names.emplace_back(to_string(CutCause(c)));
+  }
+  return names;
+}
+
 std::vector<CutCause> causes_from(const py::handle& cross) {
   std::vector<CutCause> causes;
   if (cross.is_none()) return causes;
   for (py::handle item : py::reinterpret_borrow<py::iterable>(cross)) {
     const std::string name = py::cast<std::string>(item);
     const std::optional<CutCause> cause = parse_cut_cause(name);
-    if (!cause) throw py::value_error("cross: unknown cause '" + name + "'");
+    if (!cause) {
+      std::string known;
+      for (const std::string& c : crossable_names()) known += (known.empty() ? "" : ", ") + c;
+      throw py::value_error("cross: unknown cause '" + name + "' (crossable: " + known + ")");
+    }
     causes.push_back(*cause);
   }
   return causes;
@@ -255,5 +268,6 @@ PYBIND11_MODULE(_petersen, m) {
         py::arg("attributes"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
+  m.attr("CROSSABLE") = crossable_names();
   add_render(m);
 }

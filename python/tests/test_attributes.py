@@ -130,6 +130,9 @@ def test_a_seam_is_not_crossed_unless_asked(tmp_path):
     check_carried(m, crossed)
     assert crossed.stats["triangles_left"] == 0
     assert any((s0 in seam) != (s1 in seam) for s0, s1 in crossed.sources)
+    assert set(petersen.CROSSABLE) >= {"uv_seam", "normal_seam", "material", "group"}
+    every = petersen.quadrangulate(m, cross=petersen.CROSSABLE)
+    assert np.array_equal(every.quads, crossed.quads)
     # Without the attributes there is no seam; with them given explicitly, the same as the Mesh.
     plain = petersen.quadrangulate(m.V, m.F)
     assert plain.stats["triangles_left"] == 0 and plain.attributes == {}
@@ -138,7 +141,7 @@ def test_a_seam_is_not_crossed_unless_asked(tmp_path):
     # The structure's cuts are never crossed; unknown names are refused.
     with pytest.raises(ValueError, match="boundary"):
         petersen.quadrangulate(m, cross=["boundary"])
-    with pytest.raises(ValueError, match="unknown cause 'uv'"):
+    with pytest.raises(ValueError, match="unknown cause 'uv' .crossable: uv_seam, normal_seam"):
         petersen.quadrangulate(m, cross=["uv"])
 
 
