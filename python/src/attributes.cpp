@@ -93,6 +93,7 @@ std::vector<PropertyColumn> columns_from(const py::handle& obj, const std::strin
   if (!py::isinstance<py::dict>(obj)) throw py::type_error(what + " must be a dict {name: array}");
   std::vector<PropertyColumn> columns;
   for (const auto& [key, value] : py::reinterpret_borrow<py::dict>(obj)) {
+    if (!py::isinstance<py::str>(key)) throw py::type_error(what + ": a name is not a str");
     PropertyColumn column;
     column.name = py::cast<std::string>(key);
     const std::string name = what + "['" + column.name + "']";
@@ -105,6 +106,21 @@ std::vector<PropertyColumn> columns_from(const py::handle& obj, const std::strin
     columns.push_back(std::move(column));
   }
   return columns;
+}
+
+// A list of str; anything else is a TypeError naming `what` rather than pybind11's bare cast error.
+std::vector<std::string> names_from(const py::handle& obj, const std::string& what) {
+  if (py::isinstance<py::str>(obj) || !py::isinstance<py::sequence>(obj)) {
+    throw py::type_error(what + " must be a list of str");
+  }
+  std::vector<std::string> names;
+  for (py::handle item : py::reinterpret_borrow<py::sequence>(obj)) {
+    if (!py::isinstance<py::str>(item)) {
+      throw py::type_error(what + "[" + std::to_string(names.size()) + "] is not a str");
+    }
+    names.push_back(py::cast<std::string>(item));
+  }
+  return names;
 }
 
 HugeVector<std::uint32_t> indices_from(const py::handle& obj, const std::string& what) {
@@ -167,6 +183,8 @@ void attributes_from(const py::handle& obj, PolygonMesh& mesh) {
   if (!py::isinstance<py::dict>(obj)) throw py::type_error("attributes must be a dict");
   MeshAttributes& a = mesh.attributes;
   for (const auto& [key_object, value] : py::reinterpret_borrow<py::dict>(obj)) {
+    if (!py::isinstance<py::str>(key_object))
+      throw py::type_error("an attribute name is not a str");
     const std::string key = py::cast<std::string>(key_object);
     const std::string what = "attributes['" + key + "']";
     if (key == "texcoords") {
@@ -179,11 +197,11 @@ void attributes_from(const py::handle& obj, PolygonMesh& mesh) {
     } else if (key == "corner_normal") {
       a.corner_normal = indices_from(value, what);
     } else if (key == "material_names") {
-      a.material_names = py::cast<std::vector<std::string>>(value);
+      a.material_names = names_from(value, what);
     } else if (key == "group_names") {
-      a.group_names = py::cast<std::vector<std::string>>(value);
+      a.group_names = names_from(value, what);
     } else if (key == "object_names") {
-      a.object_names = py::cast<std::vector<std::string>>(value);
+      a.object_names = names_from(value, what);
     } else if (key == "face_material") {
       a.face_material = indices_from(value, what);
     } else if (key == "face_group") {
@@ -193,7 +211,7 @@ void attributes_from(const py::handle& obj, PolygonMesh& mesh) {
     } else if (key == "face_smoothing") {
       a.face_smoothing = indices_from(value, what);
     } else if (key == "material_libraries") {
-      a.material_libraries = py::cast<std::vector<std::string>>(value);
+      a.material_libraries = names_from(value, what);
     } else if (key == "vertex_properties") {
       a.vertex_properties = columns_from(value, what);
     } else if (key == "face_properties") {

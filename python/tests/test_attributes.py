@@ -218,6 +218,11 @@ def test_bad_attributes_are_refused(tmp_path):
                                                  "material_names": ["a"]})
     with pytest.raises(ValueError, match="texcoords"):
         petersen.quadrangulate(V, F, attributes={"texcoords": np.zeros((4, 5))})
+    with pytest.raises(TypeError, match=r"attributes\['material_names'\]\[0\] is not a str"):
+        petersen.write_mesh(tmp_path / "x.ply", V, F,
+                            {"material_names": [3], "face_material": [0, 0]})
+    with pytest.raises(TypeError, match="must hold integers"):
+        petersen.quadrangulate(V, F, attributes={"face_group": [0.5, 0], "group_names": ["g"]})
     assert not (tmp_path / "x.ply").exists()
 
 
