@@ -12,8 +12,9 @@ the face, edge or node) raised as ``ValueError``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from typing import Any, List, Optional, Sequence, Tuple, Union
+import warnings
+from dataclasses import dataclass, field
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -22,6 +23,9 @@ from . import _petersen
 
 __all__ = [
     "ALGORITHMS",
+    "Attributes",
+    "CROSSABLE",
+    "DroppedWarning",
     "Mesh",
     "QuadResult",
     "perfect_matching",
@@ -39,6 +43,37 @@ ALGORITHMS = ("sg", "ps", "ds", "gw", "frink", "lemon", "lrs")
 #: Faces: an (m, k) integer array (every face k corners) or a sequence of faces of any length >= 3.
 Faces = Union[npt.ArrayLike, Sequence[Sequence[int]]]
 
+#: What a mesh carries besides positions and faces, as ``read_mesh`` gives it: a key only where
+#: the mesh has that attribute (an empty dict for none).
+#:
+#: - ``texcoords``: (t, 2) or (t, 3) float64 (OBJ ``vt``); ``normals``: (n, 3) float64 (``vn``).
+#: - ``corner_texcoord``, ``corner_normal``: int64, one per corner in face order (the corners of
+#:   ``F`` one face after the other), an index into ``texcoords`` / ``normals``, -1 for none.
+#: - ``material_names``, ``group_names``, ``object_names``: lists of str (``usemtl``, ``g``,
+#:   ``o``); ``face_material``, ``face_group``, ``face_object``: int64 per face, an index into
+#:   them, -1 for none; ``face_smoothing``: int64 per face (OBJ ``s``, 0 for off);
+#:   ``material_libraries``: list of str (``mtllib``).
+#: - ``vertex_properties``, ``face_properties``: ``{name: array}``, one value per vertex / face
+#:   (PLY properties such as ``red``, OFF colours), the array's dtype the file's type (uint8,
+#:   float32, ...); int64 arrays are written as int32, bool as uint8.
+#: - ``position_type``: "float32" (or another PLY type) when a PLY stored x, y, z so; absent for
+#:   float64.
+Attributes = Dict[str, Any]
+
+#: The attribute causes ``quadrangulate(..., cross=[...])`` may let quads cross; the names are
+#: those of ``stats["cut_edges_by_cause"]``.
+CROSSABLE = tuple(_petersen.CROSSABLE)
+
+
+class DroppedWarning(UserWarning):
+    """Something of a mesh that ``read_mesh`` read past or ``write_mesh``'s format has no place
+    for (the message says what, e.g. "corner normals (vn): PLY has no place for them")."""
+
+
+def _warn_dropped(path: Any, dropped: List[str], doing: str) -> None:
+    for line in dropped:
+        warnings.warn(f"{path}: {doing}: {line}", DroppedWarning, stacklevel=3)
+
 
 @dataclass(frozen=True)
 class Mesh:
@@ -47,10 +82,15 @@ class Mesh:
     ``V``: (n, 3) float64 positions, every vertex of the file (referenced or not).
     ``F``: an (m, 3) int64 array when every face is a triangle, else a list of int64 arrays, one
     per face, corners in the file's order.
+    ``attributes``: texture coordinates, normals, materials, groups, properties (``Attributes``).
+    ``dropped``: one line per kind of thing the reader read past (also warned as
+    ``DroppedWarning``).
     """
 
     V: np.ndarray
     F: Union[np.ndarray, List[np.ndarray]]
+    attributes: Attributes = field(default_factory=dict)
+    dropped: List[str] = field(default_factory=list)
 
 
 @dataclass(frozen=True)
@@ -80,6 +120,10 @@ class QuadResult:
     sources: np.ndarray
     tutte_set: np.ndarray
     stats: dict
+    #: The output's attributes (``Attributes``), faces and corners in the order of ``faces``: each
+    #: quad corner has the texture coordinate and normal of the triangle corner it came from, each
+    #: face the material, group, ... of its first source; empty when the input had none.
+    attributes: Attributes = field(default_factory=dict)
 
     @property
     def faces(self) -> List[np.ndarray]:
@@ -88,8 +132,8 @@ class QuadResult:
 
 
 def quadrangulate(
-    V: npt.ArrayLike,
-    F: Faces,
+    V: Union[npt.ArrayLike, Mesh],
+    F: Optional[Faces] = None,
     algorithm: str = "ps",
     all_quad: bool = False,
     seed: int = 1,
@@ -98,6 +142,8 @@ def quadrangulate(
     sharp_angle: Optional[float] = None,
     keep_edges: Optional[npt.ArrayLike] = None,
     max_corner_deviation: Optional[float] = None,
+    attributes: Optional[Attributes] = None,
+    cross: Sequence[str] = (),
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -117,34 +163,74 @@ def quadrangulate(
     the cheapest with ``objective="quality"``). Same options, same seed: same
     answer as ``petersen quad``. The GIL is released while the library works.
 
+    ``V`` may be a ``Mesh`` (``F`` then omitted): its faces and attributes are used. With
+    ``attributes`` (``Attributes``, as ``read_mesh`` gives them) no quad crosses a texture or
+    normal seam or a border between materials, groups, objects, smoothing groups or face property
+    values, unless ``cross`` names that cause (``CROSSABLE``, e.g. ``cross=["uv_seam"]``); the
+    result's ``attributes`` carry them to the quads.
+
     Raises ``ValueError`` with the library's message for a bad mesh (a vertex index out of range,
     a face of fewer than three corners, a leftover triangle ``all_quad`` cannot reach), an
     unknown algorithm, augment or objective; ``TypeError`` for faces that are not integers.
     """
+    V, F, attributes = _mesh_parts(V, F, attributes, "quadrangulate")
+    if isinstance(cross, str):
+        raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         None if sharp_angle is None else float(sharp_angle), keep_edges,
-        None if max_corner_deviation is None else float(max_corner_deviation))
+        None if max_corner_deviation is None else float(max_corner_deviation), attributes,
+        [str(c) for c in cross])
     return QuadResult(**r)
 
 
+def _mesh_parts(
+    V: Any, F: Any, attributes: Optional[Attributes], what: str
+) -> Tuple[Any, Any, Any]:
+    """V, F and attributes, from a Mesh in V (whose attributes an explicit ``attributes``
+    replaces) or as given."""
+    if isinstance(V, Mesh):
+        if F is not None:
+            raise TypeError(f"{what}: pass a Mesh or V and F, not both")
+        return V.V, V.F, V.attributes if attributes is None else attributes
+    if F is None:
+        raise TypeError(f"{what}: F is missing")
+    return V, F, attributes
+
+
 def read_mesh(path: str) -> Mesh:
-    """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity.
+    """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity,
+    with its attributes (``Mesh.attributes``).
 
-    Raises ``ValueError`` naming the file and line (text) or element (binary) for a bad file.
+    What the reader reads past (OBJ ``l`` lines, other PLY elements) is in ``Mesh.dropped`` and
+    warned as ``DroppedWarning``. Raises ``ValueError`` naming the file and line (text) or element
+    (binary) for a bad file.
     """
-    V, F = _petersen.read_mesh(str(path))
-    return Mesh(V, F)
+    V, F, attributes, dropped = _petersen.read_mesh(str(path))
+    _warn_dropped(path, dropped, "read past")
+    return Mesh(V, F, attributes, dropped)
 
 
-def write_mesh(path: str, V: npt.ArrayLike, F: Faces) -> None:
+def write_mesh(
+    path: str,
+    V: Union[npt.ArrayLike, Mesh],
+    F: Optional[Faces] = None,
+    attributes: Optional[Attributes] = None,
+) -> List[str]:
     """Writes a mesh as OFF, OBJ or PLY by the extension of ``path`` (``.gz`` compresses).
 
-    Atomic: written to a temporary file beside ``path`` and renamed into place. Reading it back
-    gives the same positions and faces. Raises ``ValueError`` for an unknown extension, an index
-    out of range or a path that cannot be written.
+    ``V`` may be a ``Mesh`` (``F`` then omitted). ``attributes`` (``Attributes``, as ``read_mesh``
+    gives them) are written as the format can: returns one line per kind of thing it has no place
+    for (e.g. corner normals in a PLY), each also warned as ``DroppedWarning``; empty when
+    everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
+    place. Reading it back gives the same positions, faces and written attributes. Raises
+    ``ValueError`` for an unknown extension, an index out of range, attributes of the wrong size
+    or a path that cannot be written.
     """
-    _petersen.write_mesh(str(path), V, F)
+    V, F, attributes = _mesh_parts(V, F, attributes, "write_mesh")
+    dropped = _petersen.write_mesh(str(path), V, F, attributes)
+    _warn_dropped(path, dropped, "not written")
+    return dropped
 
 
 def perfect_matching(

@@ -4,6 +4,8 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple
 import numpy as np
 import numpy.typing as npt
 
+CROSSABLE: List[str]
+
 def quadrangulate(
     V: npt.ArrayLike,
     F: Any,
@@ -15,9 +17,13 @@ def quadrangulate(
     sharp_angle: Optional[float],
     keep_edges: Optional[npt.ArrayLike],
     max_corner_deviation: Optional[float],
+    attributes: Optional[Dict[str, Any]],
+    cross: List[str],
 ) -> Dict[str, Any]: ...
-def read_mesh(path: str) -> Tuple[np.ndarray, Any]: ...
-def write_mesh(path: str, V: npt.ArrayLike, F: Any) -> None: ...
+def read_mesh(path: str) -> Tuple[np.ndarray, Any, Dict[str, Any], List[str]]: ...
+def write_mesh(
+    path: str, V: npt.ArrayLike, F: Any, attributes: Optional[Dict[str, Any]]
+) -> List[str]: ...
 def perfect_matching(
     n: int, edges: npt.ArrayLike, algorithm: str, augment: str, seed: int
 ) -> np.ndarray: ...

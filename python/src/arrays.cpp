@@ -6,9 +6,6 @@
 
 namespace petersen::python {
 
-namespace {
-
-// A C-contiguous int64 view of an integer array, copying only when dtype or order differ.
 py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& obj,
                                                             const char* what) {
   py::array array = py::array::ensure(obj);
@@ -20,6 +17,8 @@ py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& ob
   }
   return py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(array);
 }
+
+namespace {
 
 VertexId vertex_id(std::int64_t v, std::size_t face) {
   if (v < 0 || v >= std::int64_t{std::numeric_limits<VertexId>::max()}) {

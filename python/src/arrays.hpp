@@ -16,6 +16,11 @@ namespace petersen::python {
 
 namespace py = pybind11;
 
+/// A C-contiguous int64 view of an integer array-like, copying only when dtype or order differ;
+/// `what` names it in the TypeError for another dtype.
+py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& obj,
+                                                            const char* what);
+
 /// V, an (n, 3) array-like of numbers, as positions. Throws ValueError for another shape.
 Positions positions_from(const py::handle& V);
 

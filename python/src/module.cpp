@@ -6,6 +6,7 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -13,6 +14,8 @@
 #include <vector>
 
 #include "arrays.hpp"
+#include "attributes.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
@@ -39,11 +42,37 @@ Objective objective_of(const std::string& name) {
   throw py::value_error("unknown objective '" + name + "': pairs or quality");
 }
 
-PolygonMesh mesh_from(const py::handle& V, const py::handle& F) {
+PolygonMesh mesh_from(const py::handle& V, const py::handle& F, const py::handle& attributes) {
   PolygonMesh mesh;
   mesh.positions = positions_from(V);
   add_faces_from(F, mesh);
+  attributes_from(attributes, mesh);
   return mesh;
+}
+
+// The causes QuadOptions::cross accepts, by name: petersen.CROSSABLE and the error messages.
+std::vector<std::string> crossable_names() {
+  std::vector<std::string> names;
+  for (int c = 0; c < kCutCauses; ++c) {
+    if (is_attribute_cause(CutCause(c))) names.emplace_back(to_string(CutCause(c)));
+  }
+  return names;
+}
+
+std::vector<CutCause> causes_from(const py::handle& cross) {
+  std::vector<CutCause> causes;
+  if (cross.is_none()) return causes;
+  for (py::handle item : py::reinterpret_borrow<py::iterable>(cross)) {
+    const std::string name = py::cast<std::string>(item);
+    const std::optional<CutCause> cause = parse_cut_cause(name);
+    if (!cause) {
+      std::string known;
+      for (const std::string& c : crossable_names()) known += (known.empty() ? "" : ", ") + c;
+      throw py::value_error("cross: unknown cause '" + name + "' (crossable: " + known + ")");
+    }
+    causes.push_back(*cause);
+  }
+  return causes;
 }
 
 py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
@@ -68,8 +97,8 @@ py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
 py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::string& algorithm,
                           const std::string& augment, std::uint64_t seed, bool all_quad,
                           const std::string& objective, std::optional<double> sharp_angle,
-                          const py::handle& keep_edges,
-                          std::optional<double> max_corner_deviation) {
+                          const py::handle& keep_edges, std::optional<double> max_corner_deviation,
+                          const py::handle& attributes, const py::handle& cross) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -92,7 +121,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.cuts.sharp_angle_degrees = sharp_angle;
   options.max_corner_deviation = max_corner_deviation;
   options.cuts.user_edges = kept_edges;
-  const PolygonMesh mesh = mesh_from(V, F);
+  options.cross = causes_from(cross);
+  const PolygonMesh mesh = mesh_from(V, F, attributes);
   QuadResult result;
   {
     py::gil_scoped_release release;
@@ -143,28 +173,35 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   std::copy(result.tutte_set.begin(), result.tutte_set.end(), tutte.mutable_data());
   d["tutte_set"] = tutte;
   d["stats"] = stats_dict(result.stats, options);
+  d["attributes"] = attributes_dict(attributes_in_order(out, order));
   return d;
 }
 
 py::tuple read_mesh_py(const std::string& path) {
   PolygonMesh mesh;
+  std::vector<std::string> dropped;
   {
     py::gil_scoped_release release;
-    mesh = read_mesh(path);
+    mesh = read_mesh(path, &dropped);
   }
-  return py::make_tuple(positions_array(mesh.positions), faces_object(mesh));
+  return py::make_tuple(positions_array(mesh.positions), faces_object(mesh),
+                        attributes_dict(mesh.attributes), dropped);
 }
 
-void write_mesh_py(const std::string& path, const py::handle& V, const py::handle& F) {
-  const PolygonMesh mesh = mesh_from(V, F);
+std::vector<std::string> write_mesh_py(const std::string& path, const py::handle& V,
+                                       const py::handle& F, const py::handle& attributes) {
+  PolygonMesh mesh;
+  mesh.positions = positions_from(V);
+  add_faces_from(F, mesh);
   for (VertexId v : mesh.corners) {
     if (v >= mesh.positions.size()) {
       throw py::value_error("vertex index " + std::to_string(v) + " is out of range (" +
                             std::to_string(mesh.positions.size()) + " vertices)");
     }
   }
+  attributes_from(attributes, mesh);
   py::gil_scoped_release release;
-  write_mesh(path, mesh);
+  return write_mesh(path, mesh);
 }
 
 py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
@@ -224,10 +261,13 @@ PYBIND11_MODULE(_petersen, m) {
   });
   m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
-        py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"));
+        py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"),
+        py::arg("attributes"), py::arg("cross"));
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
-  m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"));
+  m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
+        py::arg("attributes"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
+  m.attr("CROSSABLE") = crossable_names();
   add_render(m);
 }
