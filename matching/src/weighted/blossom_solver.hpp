@@ -73,17 +73,11 @@ class BlossomSolver {
     mate_.assign(n_, kNoEdge);
     for (NodeId v = 0; v < n_; ++v) base_[v] = v;
     for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
-    // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
-    for (NodeId v = 0; v < n_; ++v) {
-      if (graph_.incident_edges(v).empty())
-        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
-      Cost cheapest = kNoCost;
-      for (EdgeId e : graph_.incident_edges(v)) cheapest = std::min(cheapest, cost_[e]);
-      rec_[v].y = cheapest;
-    }
     // The solver's own adjacency, each node's slots in a row with the far end and the doubled
     // cost: a scan reads one run of memory per node instead of an edge id, then the edge's ends,
-    // then its cost, at three random places.
+    // then its cost, at three random places. Built straight from the graph (a renumbered view,
+    // see breadth_first_order.hpp); each node's slots are sorted by edge id, so the order scans
+    // meet ties in does not depend on the order the input lists a node's edges in.
     first_slot_.resize(std::size_t{n_} + 1);
     std::size_t slots = 0;
     for (NodeId v = 0; v < n_; ++v) {
@@ -93,8 +87,19 @@ class BlossomSolver {
     first_slot_[n_] = slots;
     slots_.resize(slots);
     for (NodeId v = 0; v < n_; ++v) {
-      Slot* slot = slots_.data() + first_slot_[v];
-      for (EdgeId e : graph_.incident_edges(v)) *slot++ = {2 * cost_[e], e, graph_.other_end(e, v)};
+      Slot* const first = slots_.data() + first_slot_[v];
+      Slot* last = first;
+      for (EdgeId e : graph_.incident_edges(v)) {
+        *last++ = {2 * cost_[e], e, graph_.other_end(e, v)};
+        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
+          std::swap(at[-1], *at);
+      }
+      if (first == last)
+        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
+      // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
+      Cost cheapest = kNoCost;
+      for (const Slot* at = first; at != last; ++at) cheapest = std::min(cheapest, at->cost2 / 2);
+      rec_[v].y = cheapest;
     }
   }
 
@@ -104,14 +109,14 @@ class BlossomSolver {
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
       Cost least = kNoCost;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        least = std::min(least, 2 * cost_[e] - rec_[v].y - rec_[graph_.other_end(e, v)].y);
+      for (const Slot& slot : slots_of(v)) {
+        least = std::min(least, slot.cost2 - rec_[v].y - rec_[slot.other].y);
       }
       rec_[v].y += least;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        const NodeId w = graph_.other_end(e, v);
-        if (mate_[w] == kNoEdge && 2 * cost_[e] - rec_[v].y - rec_[w].y == 0) {
-          mate_[v] = mate_[w] = e;
+      for (const Slot& slot : slots_of(v)) {
+        const NodeId w = slot.other;
+        if (mate_[w] == kNoEdge && slot.cost2 - rec_[v].y - rec_[w].y == 0) {
+          mate_[v] = mate_[w] = slot.edge;
           break;
         }
       }
@@ -163,8 +168,12 @@ class BlossomSolver {
       label_even(top(roots[t]), kNone, roots[t], kNoEdge, t);
     }
     mates_.resize(n_);
-    for (NodeId v = 0; v < n_; ++v)
-      mates_[v] = {mate_[v], mate_[v] == kNoEdge ? kNone : graph_.other_end(mate_[v], v)};
+    for (NodeId v = 0; v < n_; ++v) {
+      mates_[v] = {mate_[v], kNone};
+      for (const Slot& slot : slots_of(v)) {
+        if (slot.edge == mate_[v]) mates_[v].node = slot.other;
+      }
+    }
     while (alive_trees_ > 0) step();
     for (NodeId v = 0; v < n_; ++v) mate_[v] = mates_[v].edge;
   }
@@ -460,8 +469,8 @@ class BlossomSolver {
         shrink(u, v, e);
       } else {
         const std::uint32_t tu = rec_[bu].tree, tv = rec_[bv].tree;
-        augment_from(u, e);
-        augment_from(v, e);
+        augment_from(u, e, v);
+        augment_from(v, e, u);
         ++stats_.searches;
         release(tu);
         release(tv);
@@ -634,20 +643,22 @@ class BlossomSolver {
 
   // ---- augmentation
 
-  void set_mate(NodeId v, EdgeId e) { mates_[v] = {e, graph_.other_end(e, v)}; }
+  void set_mate(NodeId v, EdgeId e, NodeId w) { mates_[v] = {e, w}; }
 
-  // Edge `along` joins even node s to another tree: flips the path from s up to its root.
-  void augment_from(NodeId s, EdgeId along) {
+  // Edge `along` joins even node s to node `across` in another tree: flips the path from s up
+  // to its root.
+  void augment_from(NodeId s, EdgeId along, NodeId across) {
     for (;;) {
       const std::uint32_t bs = top(s);
       rebase(bs, s);
-      set_mate(s, along);
+      set_mate(s, along, across);
       if (tree_edge_[bs] == kNoEdge) break;  // the root
       const std::uint32_t bt = top(tree_from_[bs]);
       rebase(bt, tree_to_[bt]);
-      set_mate(tree_to_[bt], tree_edge_[bt]);
+      set_mate(tree_to_[bt], tree_edge_[bt], tree_from_[bt]);
       s = tree_from_[bt];
       along = tree_edge_[bt];
+      across = tree_to_[bt];
     }
   }
 
