@@ -61,18 +61,27 @@ class BlossomSolver {
         stats_(stats),
         n_(graph.node_count()),
         ids_(std::size_t{n_} + n_ / 2 + 1),
-        rec_(ids_),
-        base_(ids_),
-        tree_from_(ids_, kNone),
-        tree_to_(ids_, kNone),
-        tree_edge_(ids_, kNoEdge),
-        mark_(ids_, 0),
-        up_(ids_),
-        children_(ids_ - n_),
-        conn_(ids_ - n_) {
+        rec_(n_),
+        base_(n_),
+        tree_from_(n_, kNone),
+        tree_to_(n_, kNone),
+        tree_edge_(n_, kNoEdge),
+        mark_(n_, 0),
+        up_(n_) {
+    // Blossom ids get their entries when first handed out (new_blossom): reserving leaves the
+    // pages untouched, and few of the n/2 ids are ever used (freed ids are reused first), where
+    // filling them all up front first-touched 116 bytes per id.
+    rec_.reserve(ids_);
+    base_.reserve(ids_);
+    tree_from_.reserve(ids_);
+    tree_to_.reserve(ids_);
+    tree_edge_.reserve(ids_);
+    mark_.reserve(ids_);
+    up_.reserve(ids_);
+    children_.reserve(ids_ - n_);
+    conn_.reserve(ids_ - n_);
     mate_.assign(n_, kNoEdge);
     for (NodeId v = 0; v < n_; ++v) base_[v] = v;
-    for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
     // The solver's own adjacency, each node's slots in a row with the far end and the doubled
     // cost: a scan reads one run of memory per node instead of an edge id, then the edge's ends,
     // then its cost, at three random places. Built straight from the graph (a renumbered view,
@@ -183,8 +192,9 @@ class BlossomSolver {
     MatchingCertificate c;
     c.node_dual.resize(n_);
     for (NodeId v = 0; v < n_; ++v) c.node_dual[v] = rec_[v].y;
-    std::vector<std::uint32_t> index(ids_, kNoSet);
-    for (std::uint32_t b = n_; b < ids_; ++b) {
+    const auto ids = static_cast<std::uint32_t>(rec_.size());  // the blossom ids ever used
+    std::vector<std::uint32_t> index(ids, kNoSet);
+    for (std::uint32_t b = n_; b < ids; ++b) {
       if (children_[b - n_].empty() || rec_[b].y == 0) continue;
       index[b] = static_cast<std::uint32_t>(c.set_dual.size());
       c.set_dual.push_back(rec_[b].y);
@@ -192,7 +202,7 @@ class BlossomSolver {
     // above[x]: the innermost set strictly holding blossom x; filled by walking up to a known
     // entry (or the top), then back down the walked chain.
     constexpr std::uint32_t kUnknown = kNoSet - 1;
-    std::vector<std::uint32_t> above(ids_, kUnknown);
+    std::vector<std::uint32_t> above(ids, kUnknown);
     std::vector<std::uint32_t> chain;
     auto set_above = [&](std::uint32_t x) {
       chain.clear();
@@ -212,7 +222,7 @@ class BlossomSolver {
     c.node_set.resize(n_);
     for (NodeId v = 0; v < n_; ++v) c.node_set[v] = set_above(v);
     c.set_parent.resize(c.set_dual.size());
-    for (std::uint32_t b = n_; b < ids_; ++b)
+    for (std::uint32_t b = n_; b < ids; ++b)
       if (index[b] != kNoSet) c.set_parent[index[b]] = set_above(b);
     return c;
   }
@@ -336,7 +346,22 @@ class BlossomSolver {
     return c;
   }
 
+  // A freed id if there is one (the last freed first), else the next fresh one, whose entries
+  // are appended here (the arrays hold ids_ without reallocating: see the constructor).
   std::uint32_t new_blossom() {
+    if (free_ids_.empty()) {
+      const auto b = static_cast<std::uint32_t>(rec_.size());
+      rec_.emplace_back();
+      base_.push_back(0);
+      tree_from_.push_back(kNone);
+      tree_to_.push_back(kNone);
+      tree_edge_.push_back(kNoEdge);
+      mark_.push_back(0);
+      up_.emplace_back();
+      children_.emplace_back();
+      conn_.emplace_back();
+      return b;
+    }
     const std::uint32_t b = free_ids_.back();
     free_ids_.pop_back();
     return b;
@@ -708,7 +733,7 @@ class BlossomSolver {
   HugeVector<Mate> mates_;
   MinCostStats& stats_;
   std::uint32_t n_;
-  std::size_t ids_;
+  std::size_t ids_;  // the most ids: n nodes and n/2 blossoms (the arrays below are reserved so)
   // What finding a blossom and its current dual reads, in one cache line's half: the stored
   // dual y, the clock at its last label change, the parent blossom (kNone at the top level),
   // the tree of a labelled blossom, the generation its shortcuts are checked against, and the
