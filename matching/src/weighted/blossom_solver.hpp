@@ -61,29 +61,32 @@ class BlossomSolver {
         stats_(stats),
         n_(graph.node_count()),
         ids_(std::size_t{n_} + n_ / 2 + 1),
-        rec_(ids_),
-        base_(ids_),
-        tree_from_(ids_, kNone),
-        tree_to_(ids_, kNone),
-        tree_edge_(ids_, kNoEdge),
-        mark_(ids_, 0),
-        up_(ids_),
-        children_(ids_ - n_),
-        conn_(ids_ - n_) {
+        rec_(n_),
+        base_(n_),
+        tree_from_(n_, kNone),
+        tree_to_(n_, kNone),
+        tree_edge_(n_, kNoEdge),
+        mark_(n_, 0),
+        up_(n_) {
+    // Blossom ids get their entries when first handed out (new_blossom): reserving leaves the
+    // pages untouched, and few of the n/2 ids are ever used (freed ids are reused first), where
+    // filling them all up front first-touched 116 bytes per id.
+    rec_.reserve(ids_);
+    base_.reserve(ids_);
+    tree_from_.reserve(ids_);
+    tree_to_.reserve(ids_);
+    tree_edge_.reserve(ids_);
+    mark_.reserve(ids_);
+    up_.reserve(ids_);
+    children_.reserve(ids_ - n_);
+    conn_.reserve(ids_ - n_);
     mate_.assign(n_, kNoEdge);
     for (NodeId v = 0; v < n_; ++v) base_[v] = v;
-    for (std::uint32_t b = static_cast<std::uint32_t>(ids_); b-- > n_;) free_ids_.push_back(b);
-    // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
-    for (NodeId v = 0; v < n_; ++v) {
-      if (graph_.incident_edges(v).empty())
-        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
-      Cost cheapest = kNoCost;
-      for (EdgeId e : graph_.incident_edges(v)) cheapest = std::min(cheapest, cost_[e]);
-      rec_[v].y = cheapest;
-    }
     // The solver's own adjacency, each node's slots in a row with the far end and the doubled
     // cost: a scan reads one run of memory per node instead of an edge id, then the edge's ends,
-    // then its cost, at three random places.
+    // then its cost, at three random places. Built straight from the graph (a renumbered view,
+    // see breadth_first_order.hpp); each node's slots are sorted by edge id, so the order scans
+    // meet ties in does not depend on the order the input lists a node's edges in.
     first_slot_.resize(std::size_t{n_} + 1);
     std::size_t slots = 0;
     for (NodeId v = 0; v < n_; ++v) {
@@ -93,8 +96,19 @@ class BlossomSolver {
     first_slot_[n_] = slots;
     slots_.resize(slots);
     for (NodeId v = 0; v < n_; ++v) {
-      Slot* slot = slots_.data() + first_slot_[v];
-      for (EdgeId e : graph_.incident_edges(v)) *slot++ = {2 * cost_[e], e, graph_.other_end(e, v)};
+      Slot* const first = slots_.data() + first_slot_[v];
+      Slot* last = first;
+      for (EdgeId e : graph_.incident_edges(v)) {
+        *last++ = {2 * cost_[e], e, graph_.other_end(e, v)};
+        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
+          std::swap(at[-1], *at);
+      }
+      if (first == last)
+        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
+      // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
+      Cost cheapest = kNoCost;
+      for (const Slot* at = first; at != last; ++at) cheapest = std::min(cheapest, at->cost2 / 2);
+      rec_[v].y = cheapest;
     }
   }
 
@@ -104,14 +118,14 @@ class BlossomSolver {
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
       Cost least = kNoCost;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        least = std::min(least, 2 * cost_[e] - rec_[v].y - rec_[graph_.other_end(e, v)].y);
+      for (const Slot& slot : slots_of(v)) {
+        least = std::min(least, slot.cost2 - rec_[v].y - rec_[slot.other].y);
       }
       rec_[v].y += least;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        const NodeId w = graph_.other_end(e, v);
-        if (mate_[w] == kNoEdge && 2 * cost_[e] - rec_[v].y - rec_[w].y == 0) {
-          mate_[v] = mate_[w] = e;
+      for (const Slot& slot : slots_of(v)) {
+        const NodeId w = slot.other;
+        if (mate_[w] == kNoEdge && slot.cost2 - rec_[v].y - rec_[w].y == 0) {
+          mate_[v] = mate_[w] = slot.edge;
           break;
         }
       }
@@ -163,8 +177,12 @@ class BlossomSolver {
       label_even(top(roots[t]), kNone, roots[t], kNoEdge, t);
     }
     mates_.resize(n_);
-    for (NodeId v = 0; v < n_; ++v)
-      mates_[v] = {mate_[v], mate_[v] == kNoEdge ? kNone : graph_.other_end(mate_[v], v)};
+    for (NodeId v = 0; v < n_; ++v) {
+      mates_[v] = {mate_[v], kNone};
+      for (const Slot& slot : slots_of(v)) {
+        if (slot.edge == mate_[v]) mates_[v].node = slot.other;
+      }
+    }
     while (alive_trees_ > 0) step();
     for (NodeId v = 0; v < n_; ++v) mate_[v] = mates_[v].edge;
   }
@@ -174,8 +192,9 @@ class BlossomSolver {
     MatchingCertificate c;
     c.node_dual.resize(n_);
     for (NodeId v = 0; v < n_; ++v) c.node_dual[v] = rec_[v].y;
-    std::vector<std::uint32_t> index(ids_, kNoSet);
-    for (std::uint32_t b = n_; b < ids_; ++b) {
+    const auto ids = static_cast<std::uint32_t>(rec_.size());  // the blossom ids ever used
+    std::vector<std::uint32_t> index(ids, kNoSet);
+    for (std::uint32_t b = n_; b < ids; ++b) {
       if (children_[b - n_].empty() || rec_[b].y == 0) continue;
       index[b] = static_cast<std::uint32_t>(c.set_dual.size());
       c.set_dual.push_back(rec_[b].y);
@@ -183,7 +202,7 @@ class BlossomSolver {
     // above[x]: the innermost set strictly holding blossom x; filled by walking up to a known
     // entry (or the top), then back down the walked chain.
     constexpr std::uint32_t kUnknown = kNoSet - 1;
-    std::vector<std::uint32_t> above(ids_, kUnknown);
+    std::vector<std::uint32_t> above(ids, kUnknown);
     std::vector<std::uint32_t> chain;
     auto set_above = [&](std::uint32_t x) {
       chain.clear();
@@ -203,7 +222,7 @@ class BlossomSolver {
     c.node_set.resize(n_);
     for (NodeId v = 0; v < n_; ++v) c.node_set[v] = set_above(v);
     c.set_parent.resize(c.set_dual.size());
-    for (std::uint32_t b = n_; b < ids_; ++b)
+    for (std::uint32_t b = n_; b < ids; ++b)
       if (index[b] != kNoSet) c.set_parent[index[b]] = set_above(b);
     return c;
   }
@@ -327,7 +346,22 @@ class BlossomSolver {
     return c;
   }
 
+  // A freed id if there is one (the last freed first), else the next fresh one, whose entries
+  // are appended here (the arrays hold ids_ without reallocating: see the constructor).
   std::uint32_t new_blossom() {
+    if (free_ids_.empty()) {
+      const auto b = static_cast<std::uint32_t>(rec_.size());
+      rec_.emplace_back();
+      base_.push_back(0);
+      tree_from_.push_back(kNone);
+      tree_to_.push_back(kNone);
+      tree_edge_.push_back(kNoEdge);
+      mark_.push_back(0);
+      up_.emplace_back();
+      children_.emplace_back();
+      conn_.emplace_back();
+      return b;
+    }
     const std::uint32_t b = free_ids_.back();
     free_ids_.pop_back();
     return b;
@@ -460,8 +494,8 @@ class BlossomSolver {
         shrink(u, v, e);
       } else {
         const std::uint32_t tu = rec_[bu].tree, tv = rec_[bv].tree;
-        augment_from(u, e);
-        augment_from(v, e);
+        augment_from(u, e, v);
+        augment_from(v, e, u);
         ++stats_.searches;
         release(tu);
         release(tv);
@@ -634,20 +668,22 @@ class BlossomSolver {
 
   // ---- augmentation
 
-  void set_mate(NodeId v, EdgeId e) { mates_[v] = {e, graph_.other_end(e, v)}; }
+  void set_mate(NodeId v, EdgeId e, NodeId w) { mates_[v] = {e, w}; }
 
-  // Edge `along` joins even node s to another tree: flips the path from s up to its root.
-  void augment_from(NodeId s, EdgeId along) {
+  // Edge `along` joins even node s to node `across` in another tree: flips the path from s up
+  // to its root.
+  void augment_from(NodeId s, EdgeId along, NodeId across) {
     for (;;) {
       const std::uint32_t bs = top(s);
       rebase(bs, s);
-      set_mate(s, along);
+      set_mate(s, along, across);
       if (tree_edge_[bs] == kNoEdge) break;  // the root
       const std::uint32_t bt = top(tree_from_[bs]);
       rebase(bt, tree_to_[bt]);
-      set_mate(tree_to_[bt], tree_edge_[bt]);
+      set_mate(tree_to_[bt], tree_edge_[bt], tree_from_[bt]);
       s = tree_from_[bt];
       along = tree_edge_[bt];
+      across = tree_to_[bt];
     }
   }
 
@@ -697,7 +733,7 @@ class BlossomSolver {
   HugeVector<Mate> mates_;
   MinCostStats& stats_;
   std::uint32_t n_;
-  std::size_t ids_;
+  std::size_t ids_;  // the most ids: n nodes and n/2 blossoms (the arrays below are reserved so)
   // What finding a blossom and its current dual reads, in one cache line's half: the stored
   // dual y, the clock at its last label change, the parent blossom (kNone at the top level),
   // the tree of a labelled blossom, the generation its shortcuts are checked against, and the
