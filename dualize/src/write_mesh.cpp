@@ -24,6 +24,16 @@ struct MeshView {
   FaceAt face;
 };
 
+/// "x y z\n", the coordinates of a vertex line in both text formats.
+void put_position(Buffer& out, const std::array<double, 3>& p) {
+  out.number(p[0]);
+  out.put(' ');
+  out.number(p[1]);
+  out.put(' ');
+  out.number(p[2]);
+  out.put('\n');
+}
+
 template <class FaceAt>
 Buffer off_text(const MeshView<FaceAt>& mesh) {
   constexpr std::size_t n = Buffer::kLongestNumber;
@@ -35,12 +45,7 @@ Buffer off_text(const MeshView<FaceAt>& mesh) {
   out.number(mesh.face_count);
   out.word(" 0\n");
   for (const auto& p : mesh.positions) {
-    out.number(p[0]);
-    out.put(' ');
-    out.number(p[1]);
-    out.put(' ');
-    out.number(p[2]);
-    out.put('\n');
+    put_position(out, p);
   }
   for (std::size_t f = 0; f < mesh.face_count; ++f) {
     const std::span<const VertexId> face = mesh.face(f);
@@ -61,12 +66,7 @@ Buffer obj_text(const MeshView<FaceAt>& mesh) {
              mesh.corner_count * (n + 1));
   for (const auto& p : mesh.positions) {
     out.word("v ");
-    out.number(p[0]);
-    out.put(' ');
-    out.number(p[1]);
-    out.put(' ');
-    out.number(p[2]);
-    out.put('\n');
+    put_position(out, p);
   }
   for (std::size_t f = 0; f < mesh.face_count; ++f) {
     out.put('f');
