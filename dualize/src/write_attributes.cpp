@@ -168,7 +168,21 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
   const MeshAttributes& a = mesh.attributes;
   // OBJ colours are reals from 0 to 1; a byte colour (PLY's usual uchar) is scaled to that.
   const std::vector<const PropertyColumn*> colour = colour_of(a.vertex_properties, false);
-  drop_columns_but(a.vertex_properties, colour, "vertex", "OBJ", dropped);
+  // PLY's and OFF's vertex normals and texture coordinates, when the mesh has no corner ones:
+  // a vn and a vt per vertex, each corner naming its vertex's (read back as corner attributes).
+  const std::vector<const PropertyColumn*> vertex_normal =
+      a.normals.empty() ? all_of(a.vertex_properties, {"nx", "ny", "nz"})
+                        : std::vector<const PropertyColumn*>{};
+  std::vector<const PropertyColumn*> vertex_texcoord;
+  for (auto names :
+       {std::pair{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}) {
+    if (!a.texcoords.empty() || !vertex_texcoord.empty()) break;
+    vertex_texcoord = all_of(a.vertex_properties, {names.first, names.second});
+  }
+  std::vector<const PropertyColumn*> written = colour;
+  written.insert(written.end(), vertex_normal.begin(), vertex_normal.end());
+  written.insert(written.end(), vertex_texcoord.begin(), vertex_texcoord.end());
+  drop_columns_but(a.vertex_properties, written, "vertex", "OBJ", dropped);
   drop_columns_but(a.face_properties, {}, "face", "OBJ", dropped);
   std::size_t longest_name = 0;
   for (const auto& [names, what] : {std::pair{&a.material_names, "material"},
@@ -204,20 +218,33 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     }
     out.put('\n');
   }
-  for (const auto& [values, keyword] : {std::pair{&a.texcoords, "vt "}, {&a.normals, "vn "}}) {
-    const int components = values == &a.texcoords ? a.texcoord_components : 3;
-    for (const std::array<double, 3>& value : *values) {
-      out.ensure(3 + 3 * kNumber);
-      out.word(keyword);
-      for (int k = 0; k < components; ++k) {
-        if (k > 0) out.put(' ');
-        if (!std::isfinite(value[k])) {
-          throw MeshError(std::string("a texture coordinate or normal is not finite (") +
-                          std::to_string(value[k]) + "); OBJ cannot hold it");
-        }
-        out.number(value[k]);
+  auto put_line = [&](const char* keyword, const double* value, int components) {
+    out.ensure(3 + 3 * kNumber);
+    out.word(keyword);
+    for (int k = 0; k < components; ++k) {
+      if (k > 0) out.put(' ');
+      if (!std::isfinite(value[k])) {
+        throw MeshError(std::string("a texture coordinate or normal is not finite (") +
+                        std::to_string(value[k]) + "); OBJ cannot hold it");
       }
-      out.put('\n');
+      out.number(value[k]);
+    }
+    out.put('\n');
+  };
+  struct Lines {
+    const decltype(a.texcoords)* values;
+    const std::vector<const PropertyColumn*>* columns;
+    const char* keyword;
+  };
+  for (const auto& [values, columns, keyword] :
+       {Lines{&a.texcoords, &vertex_texcoord, "vt "}, Lines{&a.normals, &vertex_normal, "vn "}}) {
+    const int components = values == &a.texcoords ? a.texcoord_components : 3;
+    for (const std::array<double, 3>& value : *values) put_line(keyword, value.data(), components);
+    if (columns->empty()) continue;
+    for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
+      double value[3];
+      for (std::size_t k = 0; k < columns->size(); ++k) value[k] = (*columns)[k]->values[v];
+      put_line(keyword, value, static_cast<int>(columns->size()));
     }
   }
   // The statements that set a face attribute, written where the value changes from the face
@@ -260,10 +287,12 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     for (std::size_t k = 0; k < corners.size(); ++k) {
       out.put(' ');
       out.number(std::uint64_t{corners[k]} + 1);  // OBJ counts from 1
-      const std::uint32_t texcoord =
-          a.corner_texcoord.empty() ? kNoAttribute : a.corner_texcoord[first + k];
-      const std::uint32_t normal =
-          a.corner_normal.empty() ? kNoAttribute : a.corner_normal[first + k];
+      const std::uint32_t texcoord = !vertex_texcoord.empty()    ? corners[k]
+                                     : a.corner_texcoord.empty() ? kNoAttribute
+                                                                 : a.corner_texcoord[first + k];
+      const std::uint32_t normal = !vertex_normal.empty()    ? corners[k]
+                                   : a.corner_normal.empty() ? kNoAttribute
+                                                             : a.corner_normal[first + k];
       if (texcoord == kNoAttribute && normal == kNoAttribute) continue;
       out.put('/');
       if (texcoord != kNoAttribute) out.number(std::uint64_t{texcoord} + 1);

@@ -444,18 +444,59 @@ TEST(AttributeConversions, OffIntoObjAndPly) {
       "CNOFF\n3 1 0\n0 0 0 0 0 1 255 0 0 7\n1 0 0 0 0 1 0 255 0 7\n0 1 0 0 0 1 0 0 255 7\n"
       "3 0 1 2 1 2 3\n",
       MeshFormat::off, "in");
+  // The vertex normals become a vn per vertex, each corner naming its vertex's.
   EXPECT_EQ(joined(write_mesh((dir / "c.obj").string(), off)),
-            "vertex property 'nx': OBJ has no place for it\n"
-            "vertex property 'ny': OBJ has no place for it\n"
-            "vertex property 'nz': OBJ has no place for it\n"
             "vertex property 'alpha': OBJ has no place for it\n"
             "face property 'red': OBJ has no place for it\n"
             "face property 'green': OBJ has no place for it\n"
             "face property 'blue': OBJ has no place for it\n");
   EXPECT_NE(slurp(dir / "c.obj").find("v 1 0 0 0 1 0\n"), std::string::npos);
+  EXPECT_NE(slurp(dir / "c.obj").find("vn 0 0 1\nvn 0 0 1\nvn 0 0 1\nf 1//1 2//2 3//3\n"),
+            std::string::npos)
+      << slurp(dir / "c.obj");
   // PLY holds every OFF property with its type.
   EXPECT_TRUE(write_mesh((dir / "c.ply").string(), off).empty());
   EXPECT_EQ(difference(off, read_mesh((dir / "c.ply").string())), "");
+}
+
+// A scan's per-vertex normals and texture coordinates (PLY nx ny nz and u v) survive into OBJ:
+// read back, every corner has its vertex's values, and nothing is reported dropped.
+TEST(AttributeConversions, PlyVertexNormalsAndTexcoordsIntoObj) {
+  const fs::path dir = scratch_dir();
+  const std::string text =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+      "property float z\nproperty float nx\nproperty float ny\nproperty float nz\n"
+      "property float u\nproperty float v\nelement face 2\n"
+      "property list uchar int vertex_indices\nend_header\n"
+      "0 0 0 0 0 1 0 0\n1 0 0 0 0.6 0.8 1 0\n1 1 0 0 -0.6 0.8 1 1\n0 1 0 1 0 0 0 0.5\n"
+      "3 0 1 2\n3 0 2 3\n";
+  const PolygonMesh ply = parse_mesh(text, MeshFormat::ply, "in");
+  EXPECT_TRUE(write_mesh((dir / "n.obj").string(), ply).empty());
+  const PolygonMesh obj = read_mesh((dir / "n.obj").string());
+  const MeshAttributes& a = obj.attributes;
+  ASSERT_EQ(a.corner_normal.size(), ply.corners.size());
+  ASSERT_EQ(a.corner_texcoord.size(), ply.corners.size());
+  auto column = [&](const char* name) {
+    for (const PropertyColumn& c : ply.attributes.vertex_properties)
+      if (c.name == name) return &c;
+    return static_cast<const PropertyColumn*>(nullptr);
+  };
+  for (std::size_t k = 0; k < ply.corners.size(); ++k) {
+    const VertexId v = ply.corners[k];
+    const std::array<double, 3>& n = a.normals[a.corner_normal[k]];
+    const std::array<double, 3>& t = a.texcoords[a.corner_texcoord[k]];
+    EXPECT_FLOAT_EQ(n[0], column("nx")->values[v]) << "corner " << k;
+    EXPECT_FLOAT_EQ(n[1], column("ny")->values[v]) << "corner " << k;
+    EXPECT_FLOAT_EQ(n[2], column("nz")->values[v]) << "corner " << k;
+    EXPECT_FLOAT_EQ(t[0], column("u")->values[v]) << "corner " << k;
+    EXPECT_FLOAT_EQ(t[1], column("v")->values[v]) << "corner " << k;
+  }
+  // With corner normals of its own the mesh keeps those, and the vertex columns are dropped.
+  PolygonMesh both = obj;
+  both.attributes.vertex_properties = ply.attributes.vertex_properties;
+  const std::string dropped = joined(write_mesh((dir / "b.obj").string(), both));
+  EXPECT_NE(dropped.find("vertex property 'nx'"), std::string::npos) << dropped;
+  EXPECT_NE(dropped.find("vertex property 'u'"), std::string::npos) << dropped;
 }
 
 TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
