@@ -1,6 +1,7 @@
 // The writers of meshes with attributes: each format gets back what its reader keeps, spelled the
 // way that reader reads it, and whatever it has no place for is listed as dropped.
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -62,19 +63,67 @@ void drop_columns_but(const std::vector<PropertyColumn>& columns,
   }
 }
 
-// Lists the OBJ attributes a format has no place for; PLY keeps corner texture coordinates.
+// Lists the OBJ attributes a format has no place for; PLY keeps corner texture coordinates, and
+// both keep corner normals and texture coordinates that are per vertex (vertex_columns_of).
 void drop_obj_attributes(const MeshAttributes& a, const char* format, bool keeps_texcoords,
-                         std::vector<std::string>& dropped) {
+                         bool keeps_normals, std::vector<std::string>& dropped) {
   auto drop = [&](bool has, const char* what) {
     if (has) dropped.push_back(std::string(what) + ": " + format + " has no place for them");
   };
   drop(!keeps_texcoords && !a.texcoords.empty(), "texture coordinates (vt)");
-  drop(!a.normals.empty(), "corner normals (vn)");
+  drop(!keeps_normals && !a.normals.empty(), "corner normals (vn)");
   drop(!a.face_material.empty(), "face materials (usemtl)");
   drop(!a.face_group.empty(), "face groups (g)");
   drop(!a.face_object.empty(), "face objects (o)");
   drop(!a.face_smoothing.empty(), "smoothing groups (s)");
   drop(!a.material_libraries.empty(), "material libraries (mtllib)");
+}
+
+// OBJ's corner normals or texture coordinates as vertex columns of the given names (PLY's and
+// OFF's nx ny nz, OFF's s t), when every corner has one, the corners of each vertex agree on it,
+// and the mesh has no columns of those names; else none. A vertex no corner uses gets zeros.
+// float32 when every value is one exactly (as OBJ text written from floats is), else float64.
+std::vector<PropertyColumn> vertex_columns_of(const PolygonMesh& mesh,
+                                              const HugeVector<std::uint32_t>& corner_index,
+                                              const HugeVector<std::array<double, 3>>& values,
+                                              std::initializer_list<const char*> names) {
+  const std::vector<PropertyColumn>& existing = mesh.attributes.vertex_properties;
+  const std::size_t count = names.size();
+  if (corner_index.empty() || find_column(existing, *names.begin())) return {};
+  std::vector<std::uint32_t> chosen(mesh.positions.size(), kNoAttribute);
+  for (std::size_t k = 0; k < mesh.corners.size(); ++k) {
+    const std::uint32_t index = corner_index[k];
+    if (index == kNoAttribute) return {};
+    std::uint32_t& first = chosen[mesh.corners[k]];
+    if (first == kNoAttribute) {
+      first = index;
+    } else if (first != index && !std::equal(values[first].begin(), values[first].begin() + count,
+                                             values[index].begin())) {
+      return {};
+    }
+  }
+  // What the count leaves out (a third texture coordinate) must be zero: else it would be lost.
+  for (const std::array<double, 3>& value : values) {
+    for (std::size_t j = count; j < 3; ++j) {
+      if (value[j] != 0) return {};
+    }
+  }
+  std::vector<PropertyColumn> columns;
+  bool all_float = true;
+  for (const char* name : names) {
+    const auto j = columns.size();
+    PropertyColumn& column = columns.emplace_back();
+    column.name = name;
+    column.values.resize(mesh.positions.size());
+    for (std::size_t v = 0; v < chosen.size(); ++v) {
+      const double value = chosen[v] == kNoAttribute ? 0 : values[chosen[v]][j];
+      column.values[v] = value;
+      all_float = all_float && double(float(value)) == value;
+    }
+  }
+  for (PropertyColumn& column : columns)
+    column.type = all_float ? ScalarType::float32 : ScalarType::float64;
+  return columns;
 }
 
 // A property value in text: a whole number for an integer type, a real one otherwise (see
@@ -100,11 +149,25 @@ void put_value(Buffer& out, const PropertyColumn& column, double value) {
 
 Buffer off_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped) {
   const MeshAttributes& a = mesh.attributes;
-  drop_obj_attributes(a, "OFF", false, dropped);
+  const std::vector<PropertyColumn> corner_normal =
+      vertex_columns_of(mesh, a.corner_normal, a.normals, {"nx", "ny", "nz"});
+  const std::vector<PropertyColumn> corner_st =
+      vertex_columns_of(mesh, a.corner_texcoord, a.texcoords, {"s", "t"});
+  drop_obj_attributes(a, "OFF", !corner_st.empty(), !corner_normal.empty(), dropped);
+  auto pointers = [](const std::vector<PropertyColumn>& columns) {
+    std::vector<const PropertyColumn*> all;
+    for (const PropertyColumn& column : columns) all.push_back(&column);
+    return all;
+  };
   // Geomview's order on a vertex line: normal, colour, texture coordinates.
-  const std::vector<const PropertyColumn*> normal = all_of(a.vertex_properties, {"nx", "ny", "nz"}),
+  const std::vector<const PropertyColumn*> normal =
+                                               corner_normal.empty()
+                                                   ? all_of(a.vertex_properties, {"nx", "ny", "nz"})
+                                                   : pointers(corner_normal),
                                            colour = colour_of(a.vertex_properties),
-                                           st = all_of(a.vertex_properties, {"s", "t"}),
+                                           st = corner_st.empty()
+                                                    ? all_of(a.vertex_properties, {"s", "t"})
+                                                    : pointers(corner_st),
                                            face_colour = colour_of(a.face_properties);
   std::vector<const PropertyColumn*> vertex_columns = normal;
   vertex_columns.insert(vertex_columns.end(), colour.begin(), colour.end());
@@ -366,7 +429,13 @@ void check_ply_name(const std::string& name) {
 
 Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped) {
   const MeshAttributes& a = mesh.attributes;
-  drop_obj_attributes(a, "PLY", true, dropped);
+  const std::vector<PropertyColumn> corner_normal =
+      vertex_columns_of(mesh, a.corner_normal, a.normals, {"nx", "ny", "nz"});
+  drop_obj_attributes(a, "PLY", true, !corner_normal.empty(), dropped);
+  std::vector<const PropertyColumn*> vertex_columns;
+  for (const auto* columns : {&a.vertex_properties, &corner_normal}) {
+    for (const PropertyColumn& column : *columns) vertex_columns.push_back(&column);
+  }
   const std::size_t faces = mesh.face_count();
   // MeshLab's per-corner texcoord list: u v for every corner of a face, or nothing for a face
   // with a corner that has none.
@@ -421,9 +490,9 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
   for (const char* axis : {"x", "y", "z"}) {
     header += std::string("property ") + ply_type_name(position_type) + " " + axis + "\n";
   }
-  for (const PropertyColumn& column : a.vertex_properties) {
-    header += std::string("property ") + ply_type_name(column.type) + " " + column.name + "\n";
-    vertex_bytes += ply_size_of(column.type);
+  for (const PropertyColumn* column : vertex_columns) {
+    header += std::string("property ") + ply_type_name(column->type) + " " + column->name + "\n";
+    vertex_bytes += ply_size_of(column->type);
   }
   header += "element face " + std::to_string(faces) + "\nproperty list " +
             (wide ? "uint" : "uchar") + " uint vertex_indices\n";
@@ -454,7 +523,7 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     } else {
       out.binary(mesh.positions[v].data(), 3);
     }
-    for (const PropertyColumn& column : a.vertex_properties) put_typed(out, column, v);
+    for (const PropertyColumn* column : vertex_columns) put_typed(out, *column, v);
   }
   auto put_count = [&](std::uint32_t count, bool wide_count) {
     if (wide_count) {

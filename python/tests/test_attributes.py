@@ -87,11 +87,16 @@ def test_an_obj_round_trips_with_its_attributes(tmp_path):
     assert back.attributes.keys() == a.keys()
     for key, value in a.items():
         assert np.array_equal(back.attributes[key], value), key
-    # PLY has no place for corner normals, materials or groups: said, and warned.
-    with pytest.warns(petersen.DroppedWarning, match="vn"):
+    # PLY has no place for materials or groups: said, and warned.
+    with pytest.warns(petersen.DroppedWarning, match="usemtl"):
         dropped = petersen.write_mesh(tmp_path / "h.ply", m.V, m.F, a)
-    assert any("vn" in line for line in dropped)
+    assert any("usemtl" in line for line in dropped)
+    assert not any("vn" in line for line in dropped)
     ply = petersen.read_mesh(tmp_path / "h.ply")
+    # The one normal every corner names is per vertex: it becomes PLY's nx ny nz.
+    columns = ply.attributes["vertex_properties"]
+    assert [columns[name].tolist() for name in ("nx", "ny", "nz")] == \
+        [[0.0] * len(m.V), [0.0] * len(m.V), [1.0] * len(m.V)]
     # The corner texture coordinates survive by value (PLY's texcoord list).
     assert corner_values(ply.attributes["texcoords"], ply.attributes["corner_texcoord"],
                          list(ply.F)) == \

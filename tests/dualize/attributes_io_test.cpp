@@ -6,6 +6,7 @@
 #include <rapidcheck/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -499,6 +500,45 @@ TEST(AttributeConversions, PlyVertexNormalsAndTexcoordsIntoObj) {
   EXPECT_NE(dropped.find("vertex property 'u'"), std::string::npos) << dropped;
 }
 
+// The other way: OBJ normals that are per vertex (every corner of a vertex has the same) become
+// PLY's and OFF's nx ny nz; per-vertex texture coordinates become OFF's s t. A flat-shaded mesh
+// (a vertex with two normals) keeps its normals only in OBJ, and says so.
+TEST(AttributeConversions, ObjVertexNormalsIntoPlyAndOff) {
+  const fs::path dir = scratch_dir();
+  const std::string smooth =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\n"
+      "vn 0 0 1\nvn 0 0.6 0.8\nvn 0.6 0 0.8\nvn 0 0 1\n"
+      "f 1/1/1 2/2/2 3/3/3\nf 1/1/4 3/3/3 4/4/2\n";
+  const PolygonMesh obj = parse_mesh(smooth, MeshFormat::obj, "in");
+  // Vertex 0's corners name normals 1 and 4, equal in value; vertex 3's normal is normal 2.
+  const std::vector<std::array<double, 3>> expected = {
+      {0, 0, 1}, {0, 0.6, 0.8}, {0.6, 0, 0.8}, {0, 0.6, 0.8}};
+  for (const char* name : {"s.ply", "s.off"}) {
+    const std::vector<std::string> dropped = write_mesh((dir / name).string(), obj);
+    EXPECT_TRUE(dropped.empty()) << name << ": " << joined(dropped);
+    const PolygonMesh back = read_mesh((dir / name).string());
+    const MeshAttributes& a = back.attributes;
+    ASSERT_GE(a.vertex_properties.size(), 3u) << name;
+    for (std::size_t v = 0; v < 4; ++v) {
+      for (std::size_t j = 0; j < 3; ++j) {
+        EXPECT_FLOAT_EQ(a.vertex_properties[j].values[v], expected[v][j]) << name << " " << v;
+      }
+    }
+  }
+  EXPECT_EQ(
+      columns_text(read_mesh((dir / "s.off").string()).attributes.vertex_properties).substr(0, 3),
+      "nx:");
+  EXPECT_NE(slurp(dir / "s.off").find("STNOFF"), std::string::npos) << slurp(dir / "s.off");
+
+  const std::string flat =
+      "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 -1\n"
+      "f 1//1 2//1 3//1\nf 1//2 3//2 4//2\n";
+  const PolygonMesh flat_obj = parse_mesh(flat, MeshFormat::obj, "in");
+  EXPECT_EQ(joined(write_mesh((dir / "f.ply").string(), flat_obj)),
+            "corner normals (vn): PLY has no place for them\n");
+  EXPECT_TRUE(read_mesh((dir / "f.ply").string()).attributes.vertex_properties.empty());
+}
+
 TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
   const fs::path dir = scratch_dir();
   PolygonMesh mesh = parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", MeshFormat::obj, "in");
@@ -614,16 +654,40 @@ RC_GTEST_PROP(AttributeRoundTrip, ConversionsKeepWhatTheFormatHolds, ()) {
     RC_ASSERT(back.positions == mesh.positions);
     const MeshAttributes& a = mesh.attributes;
     const bool obj = std::string(extension) == ".obj";
-    // Corner normals and materials live in OBJ alone, and a PLY property has no place in OBJ.
-    const bool obj_only = !a.normals.empty() || !a.face_material.empty() || !a.face_group.empty() ||
+    // Materials live in OBJ alone, and a PLY property has no place in OBJ.
+    const bool obj_only = !a.face_material.empty() || !a.face_group.empty() ||
                           !a.face_object.empty() || !a.face_smoothing.empty() ||
                           !a.material_libraries.empty();
     const bool properties = !a.vertex_properties.empty() || !a.face_properties.empty();
     if (obj) RC_ASSERT(dropped.empty() == !properties);
     if (!obj && obj_only) RC_ASSERT(!dropped.empty());
+    // Corner normals reach PLY and OFF as vertex normals, after the vertex's own columns, when
+    // every corner of each vertex has the same; else they are said to be dropped.
+    const std::vector<PropertyColumn>& back_columns = back.attributes.vertex_properties;
+    const bool has_nx = std::any_of(back_columns.begin(), back_columns.end(),
+                                    [](const PropertyColumn& c) { return c.name == "nx"; });
+    if (!obj && !a.normals.empty()) {
+      const bool said = std::any_of(dropped.begin(), dropped.end(), [](const std::string& line) {
+        return line.rfind("corner normals", 0) == 0;
+      });
+      RC_ASSERT(said != has_nx);
+      static constexpr const char* kNames[3] = {"nx", "ny", "nz"};
+      for (std::size_t k = 0; has_nx && k < mesh.corners.size(); ++k) {
+        const std::array<double, 3>& n = a.normals[a.corner_normal[k]];
+        for (std::size_t j = 0; j < 3; ++j) {
+          const PropertyColumn* column = nullptr;
+          for (const PropertyColumn& c : back_columns)
+            if (c.name == kNames[j]) column = &c;
+          RC_ASSERT(column != nullptr);
+          RC_ASSERT(float(column->values[mesh.corners[k]]) == float(n[j]));
+        }
+      }
+    }
     if (std::string(extension) == ".ply") {
-      RC_ASSERT(columns_text(back.attributes.vertex_properties) ==
-                columns_text(a.vertex_properties));
+      const std::vector<PropertyColumn> own(
+          back_columns.begin(),
+          back_columns.begin() + static_cast<std::ptrdiff_t>(a.vertex_properties.size()));
+      RC_ASSERT(columns_text(own) == columns_text(a.vertex_properties));
     }
     fs::remove(path);
   }

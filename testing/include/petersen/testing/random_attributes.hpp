@@ -85,8 +85,13 @@ inline void add_random_attributes(PolygonMesh& mesh, AttributeSet set, std::uint
         a.normals.push_back({real(-1, 1), real(-1, 1), real(-1, 1)});
       }
       a.corner_normal.assign(corners, kNoAttribute);
-      for (std::uint32_t& normal : a.corner_normal) {
-        if (chance(0.8)) normal = below(count);
+      if (chance(0.3)) {  // smooth shading: each vertex's corners share one normal
+        for (std::size_t k = 0; k < corners; ++k) a.corner_normal[k] = mesh.corners[k] % count;
+      } else {
+        const double share = chance(0.5) ? 1.0 : 0.8;  // of the corners that get a normal
+        for (std::uint32_t& normal : a.corner_normal) {
+          if (chance(share)) normal = below(count);
+        }
       }
     }
     const std::pair<std::vector<std::string>*, HugeVector<std::uint32_t>*> named[3] = {
