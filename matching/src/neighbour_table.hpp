@@ -44,7 +44,7 @@ class NeighbourTable {
         own_rows_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
         next_(own_rows_.get()),
         slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {
-    check_size();
+    check_size(graph.node_count());
     constexpr NodeId kReadAhead = 16;
     const NodeId n = graph.node_count();
     for (NodeId v = 0; v < n; ++v) {
@@ -64,11 +64,9 @@ class NeighbourTable {
   /// Over neighbour rows (CubicGraph::into_neighbour_rows) that the caller keeps alive and
   /// unchanged while the table lives; the search state is left for start_search() to write.
   explicit NeighbourTable(std::span<const NodeId> rows)
-      : node_count_(static_cast<std::uint32_t>(rows.size() / 3)),
+      : node_count_(static_cast<std::uint32_t>(check_size(rows.size() / 3))),
         next_(rows.data()),
-        slots_(make_huge_array<augment_detail::Slot>(rows.size() / 3)) {
-    check_size();
-  }
+        slots_(make_huge_array<augment_detail::Slot>(node_count_)) {}
 
   /// The graph behind the table; nullptr for a table over rows.
   const CubicGraph* graph() const { return graph_; }
@@ -95,11 +93,12 @@ class NeighbourTable {
   EdgeId graph_edge(EdgeId h) const { return graph_->incident_edges(h / 3)[h % 3]; }
 
  private:
-  // Half-edge ids 3v + i must stay below kNoEdge.
-  void check_size() const {
-    if (node_count_ > kNoEdge / 3)
+  // Half-edge ids 3v + i must stay below kNoEdge. Returns `nodes`.
+  static std::size_t check_size(std::size_t nodes) {
+    if (nodes > kNoEdge / 3)
       throw std::length_error("NeighbourTable: more than " + std::to_string(kNoEdge / 3) +
                               " nodes");
+    return nodes;
   }
 
   const CubicGraph* graph_ = nullptr;
