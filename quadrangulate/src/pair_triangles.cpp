@@ -104,6 +104,12 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
   Subgraph sub;
   std::vector<NodeId> local(graph.node_count, kNoNode);
   for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
+  // Counted first, so that the arrays are made at their size: grown by doubling, they held up to
+  // twice that, and three times while moving (an open mesh of 1.38M triangles: 203 MB peak).
+  std::size_t edges = 0;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) edges += local[graph.edge_ends[2 * e]] != kNoNode;
+  sub.edge_of.reserve(edges);
+  sub.edge_ends.reserve(2 * edges);
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId a = local[graph.edge_ends[2 * e]];
     if (a == kNoNode) continue;
@@ -354,7 +360,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   }
 
   pairing.partner.assign(n, kNoNode);
-  const Components components = components_of(graph);
+  Components components = components_of(graph);
   stats.components = components.closed.size();
   std::vector<NodeId> closed_nodes, open_nodes;
   for (NodeId v = 0; v < n; ++v) {
@@ -386,6 +392,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     // Beside its phases, lrs builds its triangulation and K's dual: set-up, like a dual.
     stats.dual_seconds += clock.lap() - (stats.matching.matching_seconds() - matching_before);
   }
+  components = Components();
 
   if (!closed_nodes.empty()) {
     Subgraph sub = induced(graph, std::move(closed_nodes));
@@ -410,11 +417,20 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
 
   if (!open_nodes.empty()) {
     Subgraph sub = induced(graph, std::move(open_nodes));
-    std::vector<std::array<NodeId, 2>> edges(sub.edge_of.size());
-    for (EdgeId i = 0; i < edges.size(); ++i) {
-      edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
+    // From here on the open components' own arrays are all that is read: each copy is freed as
+    // soon as the next is made, so that the search's state is not added to all of them.
+    graph.node_edges = HugeVector<EdgeId>();
+    graph.edge_ends = HugeVector<NodeId>();
+    CsrGraph open;
+    {
+      HugeVector<std::array<NodeId, 2>> edges(sub.edge_of.size());
+      for (EdgeId i = 0; i < edges.size(); ++i) {
+        edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
+      }
+      sub.edge_ends = HugeVector<NodeId>();
+      open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
     }
-    const CsrGraph open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
+    if (!quality) sub.edge_of = std::vector<EdgeId>();  // only the costs are looked up by it
     stats.dual_seconds += clock.lap();
     // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
     // its size maximum, the minimum-cost one included.
