@@ -40,12 +40,9 @@ class CsrGraph {
   std::uint32_t degree(NodeId v) const { return offsets_[v + 1] - offsets_[v]; }
 
  private:
-  // On huge pages like the cubic graphs' arrays: with the CLI's pool on, a CsrGraph built after
-  // the pairable graph is freed takes over its kept ranges (from malloc, an open mesh of 1.38M
-  // triangles peaked 45 MB higher, the kept ranges beside the CSR's fresh ones).
-  HugeVector<std::uint32_t> offsets_{0};
-  HugeVector<EdgeId> node_edges_;
-  HugeVector<NodeId> edge_ends_;
+  std::vector<std::uint32_t> offsets_{0};
+  std::vector<EdgeId> node_edges_;
+  std::vector<NodeId> edge_ends_;
 };
 
 }  // namespace petersen
