@@ -79,4 +79,25 @@ CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<
   return g;
 }
 
+HugeVector<NodeId> CubicGraph::into_neighbour_rows() && {
+  HugeVector<NodeId> rows = std::move(node_edges_);
+  // Each slot reads its edge's ends at random: the ends of the slots kReadAhead nodes on are
+  // fetched ahead, so the misses overlap (the same pass NeighbourTable makes from a graph).
+  constexpr std::size_t kReadAhead = 16;
+  const std::size_t n = rows.size() / 3;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (v + kReadAhead < n) {
+      for (std::size_t k = 0; k < 3; ++k)
+        __builtin_prefetch(&edge_ends_[2 * std::size_t{rows[3 * (v + kReadAhead) + k]}]);
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      const EdgeId e = rows[3 * v + k];
+      rows[3 * v + k] = edge_ends_[2 * std::size_t{e}] ^ edge_ends_[2 * std::size_t{e} + 1] ^
+                        static_cast<NodeId>(v);
+    }
+  }
+  edge_ends_ = HugeVector<NodeId>();  // `= {}` would keep the capacity
+  return rows;
+}
+
 }  // namespace petersen

@@ -1,6 +1,8 @@
 #include "petersen/matching/matching.hpp"
 
 #include <algorithm>
+#include <span>
+#include <string>
 
 namespace petersen {
 
@@ -66,6 +68,38 @@ MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching)
 
 MatchingCheck verify_matching(const CsrGraph& graph, const Matching& matching) {
   return check(graph, matching, false);
+}
+
+MatchingCheck verify_perfect_partners(std::span<const NodeId> rows,
+                                      std::span<const NodeId> partner) {
+  using Problem = MatchingCheck::Problem;
+  const std::size_t n = rows.size() / 3;
+  if (partner.size() != n || rows.size() % 3 != 0) {
+    return {Problem::wrong_size, kNoNode, kNoEdge,
+            "matching has " + std::to_string(partner.size()) + " partners for " +
+                std::to_string(rows.size()) + " neighbour slots (3 per node)"};
+  }
+  for (NodeId v = 0; v < n; ++v) {
+    const NodeId p = partner[v];
+    auto node = [v] { return "node " + std::to_string(v); };  // for a message only
+    if (p == kNoNode) return {Problem::unmatched, v, kNoEdge, node() + " is unmatched"};
+    if (p >= n) {
+      return {Problem::edge_out_of_range, v, p,
+              node() + " names partner " + std::to_string(p) + ", out of range (" +
+                  std::to_string(n) + " nodes)"};
+    }
+    const NodeId* row = &rows[3 * std::size_t{v}];
+    if (row[0] != p && row[1] != p && row[2] != p) {
+      return {Problem::not_incident, v, p,
+              node() + " names partner " + std::to_string(p) + ", which is not a neighbour"};
+    }
+    if (partner[p] != v) {
+      return {Problem::inconsistent, v, p,
+              node() + " names partner " + std::to_string(p) + ", whose partner is " +
+                  (partner[p] == kNoNode ? std::string("none") : std::to_string(partner[p]))};
+    }
+  }
+  return {};
 }
 
 }  // namespace petersen

@@ -16,6 +16,11 @@
 // edges are half-edges: h = 3v + i is v's i-th edge, seen from v, and its far end is at [h]. An
 // edge has two half-edges; the forest never compares edges, it only follows them, so either does.
 // graph_edge(h) names the CubicGraph edge behind h, for writing the matching back.
+//
+// A table built over neighbour rows the caller holds (perfect_partners) has no CubicGraph behind
+// it: it reads the rows in place, and the matching lives in the search state only (each slot's
+// mate). That is the lean form for a caller that needs only who is paired with whom: 12 bytes per
+// node of rows plus the 16 of the state, where a graph and its table take 24 + 28.
 
 #include <array>
 #include <span>
@@ -34,13 +39,12 @@ class NeighbourTable {
   /// With `mate` (a mate edge per node, kNoEdge when free), the search state starts from that
   /// matching; without it, it is left for start_search() to write, node by node.
   explicit NeighbourTable(const CubicGraph& graph, const HugeVector<EdgeId>* mate = nullptr)
-      : graph_(graph),
-        next_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
+      : graph_(&graph),
+        node_count_(graph.node_count()),
+        own_rows_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
+        next_(own_rows_.get()),
         slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {
-    // Half-edge ids 3v + i must stay below kNoEdge.
-    if (graph.node_count() > kNoEdge / 3)
-      throw std::length_error("NeighbourTable: more than " + std::to_string(kNoEdge / 3) +
-                              " nodes");
+    check_size(graph.node_count());
     constexpr NodeId kReadAhead = 16;
     const NodeId n = graph.node_count();
     for (NodeId v = 0; v < n; ++v) {
@@ -49,7 +53,7 @@ class NeighbourTable {
           __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{e}]);
       }
       const std::span<const EdgeId, 3> edges = graph.incident_edges(v);
-      for (int i = 0; i < 3; ++i) next_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
+      for (int i = 0; i < 3; ++i) own_rows_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
       if (mate != nullptr) {
         const EdgeId e = (*mate)[v];
         start_search(v, e == kNoEdge ? -1 : graph.edge_index(v, e));
@@ -57,8 +61,16 @@ class NeighbourTable {
     }
   }
 
-  const CubicGraph& graph() const { return graph_; }
-  std::uint32_t node_count() const { return graph_.node_count(); }
+  /// Over neighbour rows (CubicGraph::into_neighbour_rows) that the caller keeps alive and
+  /// unchanged while the table lives; the search state is left for start_search() to write.
+  explicit NeighbourTable(std::span<const NodeId> rows)
+      : node_count_(static_cast<std::uint32_t>(check_size(rows.size() / 3))),
+        next_(rows.data()),
+        slots_(make_huge_array<augment_detail::Slot>(node_count_)) {}
+
+  /// The graph behind the table; nullptr for a table over rows.
+  const CubicGraph* graph() const { return graph_; }
+  std::uint32_t node_count() const { return node_count_; }
 
   /// v's neighbours, the i-th across v's i-th incident edge.
   std::span<const NodeId, 3> neighbours(NodeId v) const {
@@ -77,11 +89,22 @@ class NeighbourTable {
   /// The far end of h seen from its own node, h / 3.
   NodeId far_end(EdgeId h) const { return next_[h]; }
   std::array<NodeId, 2> endpoints(EdgeId h) const { return {h / 3, next_[h]}; }
-  EdgeId graph_edge(EdgeId h) const { return graph_.incident_edges(h / 3)[h % 3]; }
+  /// The CubicGraph edge behind h; only for a table built from a graph.
+  EdgeId graph_edge(EdgeId h) const { return graph_->incident_edges(h / 3)[h % 3]; }
 
  private:
-  const CubicGraph& graph_;
-  HugeArray<NodeId> next_;
+  // Half-edge ids 3v + i must stay below kNoEdge. Returns `nodes`.
+  static std::size_t check_size(std::size_t nodes) {
+    if (nodes > kNoEdge / 3)
+      throw std::length_error("NeighbourTable: more than " + std::to_string(kNoEdge / 3) +
+                              " nodes");
+    return nodes;
+  }
+
+  const CubicGraph* graph_ = nullptr;
+  std::uint32_t node_count_;
+  HugeArray<NodeId> own_rows_;  // the rows, when built from a graph
+  const NodeId* next_;
   HugeArray<augment_detail::Slot> slots_;
 };
 

@@ -9,6 +9,7 @@
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/matching/perfect_partners.hpp"
 #include "petersen/matching/tutte_berge.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 
@@ -69,6 +70,28 @@ Components components_of(const PairableGraph& graph) {
   return components;
 }
 
+// The number of components of the pairable graph (those of components_of), from the disjoint
+// sets alone: 4 bytes per node where components_of keeps 12, beside the graph (24) and the mesh
+// (24) on a closed mesh, where the count is all that is wanted.
+std::uint32_t component_count(const PairableGraph& graph) {
+  const std::uint32_t n = graph.node_count;
+  HugeVector<NodeId> parent(n);
+  for (NodeId v = 0; v < n; ++v) parent[v] = v;
+  auto find = [&](NodeId v) {
+    while (parent[v] != v) v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  std::uint32_t count = n;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const NodeId a = find(graph.edge_ends[2 * e]), b = find(graph.edge_ends[2 * e + 1]);
+    if (a != b) {
+      parent[std::max(a, b)] = std::min(a, b);
+      --count;
+    }
+  }
+  return count;
+}
+
 // The subgraph induced by `nodes` (whole components, ascending), renumbered in their order.
 // Its edges keep their relative order; local edge i is graph edge edge_of[i].
 struct Subgraph {
@@ -81,6 +104,12 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
   Subgraph sub;
   std::vector<NodeId> local(graph.node_count, kNoNode);
   for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
+  // Counted first, so that the arrays are made at their size: grown by doubling, they held up to
+  // twice that, and three times while moving (part of an open mesh's 149 bytes per triangle).
+  std::size_t edges = 0;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) edges += local[graph.edge_ends[2 * e]] != kNoNode;
+  sub.edge_of.reserve(edges);
+  sub.edge_ends.reserve(2 * edges);
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId a = local[graph.edge_ends[2 * e]];
     if (a == kNoNode) continue;
@@ -275,6 +304,27 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
   stats.verify_seconds += clock.lap();
 }
 
+// The common case, ps on a closed mesh, on one adjacency: the graph becomes its neighbour rows
+// in place and the matching runs on them alone, so at its peak it holds the mesh (24 bytes per
+// triangle), the rows (12), the search state (16) and the partners (4). perfect_matching holds
+// the graph (24), its table (28) and the mate edges (4) at once, 80 bytes per triangle with the
+// mesh before PS's own sets: over the 64 the tool aims at (issue 15). The same pairs, checked
+// against the same adjacency.
+void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePairing& pairing,
+                      QuadStats& stats, LapClock& clock) {
+  const HugeVector<NodeId> rows = std::move(cubic).into_neighbour_rows();
+  stats.dual_seconds += clock.lap();
+  PartnerResult result = perfect_partners(rows, {.augment = options.augment, .seed = options.seed});
+  add_run(stats.matching, result.stats);
+  clock.lap();
+  if (MatchingCheck check = verify_perfect_partners(rows, result.partner); !check.ok()) {
+    throw std::logic_error("internal error: ps returned a matching that is not perfect: " +
+                           check.message);
+  }
+  pairing.partner = std::move(result.partner);
+  stats.verify_seconds += clock.lap();
+}
+
 }  // namespace
 
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
@@ -295,19 +345,22 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.
   if (graph.cubic && !use_lrs) {
-    // Only their number: the per-node ids are freed before the matching's arrays are made.
-    stats.components = stats.closed_components = components_of(graph).closed.size();
+    stats.components = stats.closed_components = component_count(graph);
     CubicGraph cubic =
         CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
-    stats.dual_seconds += clock.lap();
-    pair_closed(cubic, {}, costs, options, closed_algorithm, pairing, stats, clock);
+    if (closed_algorithm == Algorithm::ps && costs.empty()) {
+      pair_by_partners(std::move(cubic), options, pairing, stats, clock);
+    } else {
+      stats.dual_seconds += clock.lap();
+      pair_closed(cubic, {}, costs, options, closed_algorithm, pairing, stats, clock);
+    }
     stats.maximum_certified = true;
     stats.optimality_certified = quality;
     return pairing;
   }
 
   pairing.partner.assign(n, kNoNode);
-  const Components components = components_of(graph);
+  Components components = components_of(graph);
   stats.components = components.closed.size();
   std::vector<NodeId> closed_nodes, open_nodes;
   for (NodeId v = 0; v < n; ++v) {
@@ -339,6 +392,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     // Beside its phases, lrs builds its triangulation and K's dual: set-up, like a dual.
     stats.dual_seconds += clock.lap() - (stats.matching.matching_seconds() - matching_before);
   }
+  components = Components();
 
   if (!closed_nodes.empty()) {
     Subgraph sub = induced(graph, std::move(closed_nodes));
@@ -363,11 +417,23 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
 
   if (!open_nodes.empty()) {
     Subgraph sub = induced(graph, std::move(open_nodes));
-    std::vector<std::array<NodeId, 2>> edges(sub.edge_of.size());
-    for (EdgeId i = 0; i < edges.size(); ++i) {
-      edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
+    // From here on the open components' own arrays are all that is read: each copy is freed as
+    // soon as the next is made, so that the search's state is not added to all of them.
+    graph.node_edges = HugeVector<EdgeId>();
+    graph.edge_ends = HugeVector<NodeId>();
+    // And given back to the kernel, not kept by the pool: the CSR graph comes from malloc, which
+    // would not reuse them (an open mesh of 1.38M triangles peaked 33 MB higher with them kept).
+    huge_pages::release_retained();
+    CsrGraph open;
+    {
+      std::vector<std::array<NodeId, 2>> edges(sub.edge_of.size());
+      for (EdgeId i = 0; i < edges.size(); ++i) {
+        edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
+      }
+      sub.edge_ends = HugeVector<NodeId>();
+      open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
     }
-    const CsrGraph open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
+    if (!quality) sub.edge_of = std::vector<EdgeId>();  // only the costs are looked up by it
     stats.dual_seconds += clock.lap();
     // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
     // its size maximum, the minimum-cost one included.

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "petersen/graph/generators.hpp"
+
 namespace petersen {
 namespace {
 
@@ -70,6 +72,22 @@ TEST(CubicGraph, FromIncidenceRejectsInconsistentSlots) {
                GraphError);
   EXPECT_THROW(CubicGraph::from_incidence({0, 1, 2, 0, 1, 2}, {0, 0, 0, 1, 0, 1}), GraphError);
   EXPECT_THROW(CubicGraph::from_incidence({0, 1}, {0, 1}), GraphError);
+}
+
+TEST(CubicGraph, NeighbourRowsNameTheOtherEndOfEachSlot) {
+  // Large enough for the read-ahead, with parallel edges (the configuration model keeps them).
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+    CubicGraph g = random_cubic_bridgeless(1000, seed);
+    std::vector<NodeId> expected;
+    for (NodeId v = 0; v < g.node_count(); ++v)
+      for (EdgeId e : g.incident_edges(v)) expected.push_back(g.other_end(e, v));
+    const HugeVector<NodeId> rows = std::move(g).into_neighbour_rows();
+    EXPECT_EQ(std::vector<NodeId>(rows.begin(), rows.end()), expected);
+  }
+  const HugeVector<NodeId> theta =
+      CubicGraph::from_incidence({0, 1, 2, 2, 1, 0}, {0, 1, 0, 1, 0, 1}).into_neighbour_rows();
+  EXPECT_EQ(std::vector<NodeId>(theta.begin(), theta.end()),
+            (std::vector<NodeId>{1, 1, 1, 0, 0, 0}));
 }
 
 }  // namespace

@@ -52,13 +52,15 @@ inline constexpr std::uint32_t kMaxTrees = 1u << (32 - kTreeShift);
 
 template <class Graph>
 class AlternatingForest {
+  static constexpr bool kStateInGraph = requires(const Graph& g) { g.slot(NodeId{}); };
+
  public:
   /// Reads the matching (mate edge per node), which each augmentation then updates; the free
   /// nodes, in id order, become free_nodes(). Throws std::length_error past kMaxTrees free nodes.
   /// A graph that keeps the search state (NeighbourTable) must hold fresh slots for `mate`.
   AlternatingForest(const Graph& graph, HugeVector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
-        mate_edge_(mate),
+        mate_edge_(&mate),
         stats_(stats),
         n_(mate.size()),
         slot_(kStateInGraph ? HugeArray<Slot>() : make_huge_array<Slot>(n_)) {
@@ -79,9 +81,16 @@ class AlternatingForest {
         if (free) free_.push_back(v);
       }
     }
-    if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
-    tree_alive_.resize(free_.size());
-    blocked_head_.resize(free_.size());
+    make_trees();
+  }
+
+  /// Over a graph that keeps the search state (a NeighbourTable on rows), the matching being
+  /// that state alone: its fresh slots' mates. Augmentations update the slots only.
+  AlternatingForest(const Graph& graph, AugmentStats& stats) requires(kStateInGraph)
+      : graph_(graph), stats_(stats), n_(graph.node_count()) {
+    for (NodeId v = 0; v < n_; ++v)
+      if (slot(v).mate == kNoNode) free_.push_back(v);
+    make_trees();
   }
 
   const std::vector<NodeId>& free_nodes() const { return free_; }
@@ -185,7 +194,6 @@ class AlternatingForest {
     std::uint32_t next;
   };
 
-  static constexpr bool kStateInGraph = requires(const Graph& g) { g.slot(NodeId{}); };
   Slot& slot(NodeId v) const {
     if constexpr (kStateInGraph) {
       return graph_.slot(v);
@@ -255,6 +263,13 @@ class AlternatingForest {
         if (m != kNoNode) __builtin_prefetch(&slot(m));
       }
     }
+  }
+
+  // One tree per free node, at most kMaxTrees.
+  void make_trees() {
+    if (free_.size() > kMaxTrees) throw std::length_error("augment_matching: too many free nodes");
+    tree_alive_.resize(free_.size());
+    blocked_head_.resize(free_.size());
   }
 
   // The consumed front of the queue is dropped once it is half the queue, so the queue holds
@@ -334,7 +349,7 @@ class AlternatingForest {
       auto [a, c] = graph_.endpoints(f);
       slot(a).mate = c;
       slot(c).mate = a;
-      mate_edge_[a] = mate_edge_[c] = graph_edge(f);
+      if (mate_edge_ != nullptr) (*mate_edge_)[a] = (*mate_edge_)[c] = graph_edge(f);
     }
     release(tree_x);
     if (y_in_tree) release(tree_y);
@@ -391,7 +406,7 @@ class AlternatingForest {
   }
 
   const Graph& graph_;
-  HugeVector<EdgeId>& mate_edge_;
+  HugeVector<EdgeId>* mate_edge_ = nullptr;  // nullptr: the matching is the slots' mates only
   AugmentStats& stats_;
   std::size_t n_;
   HugeArray<Slot> slot_;  // unless the graph keeps the search state

@@ -12,4 +12,8 @@ namespace petersen {
 AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching,
                               Augment variant = Augment::local);
 
+/// The same over a table on neighbour rows, whose search state is the matching: fresh for it on
+/// entry (written by puli_segal_on_rows), each slot's mate updated by every augmenting path.
+AugmentStats augment_on_rows(const NeighbourTable& table, Augment variant = Augment::local);
+
 }  // namespace petersen

@@ -12,12 +12,11 @@ namespace petersen {
 
 namespace {
 
+// Runs the searches on a forest set up from the matching; `stats` is the forest's.
 template <class Graph>
-AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
-  AugmentStats stats;
-  augment_detail::AlternatingForest<Graph> forest(graph, matching.mate_edge, stats);
+void grow(augment_detail::AlternatingForest<Graph>& forest, AugmentStats& stats, Augment variant) {
   const std::vector<NodeId>& free_nodes = forest.free_nodes();
-  if (free_nodes.size() < 2) return stats;
+  if (free_nodes.size() < 2) return;
   if (variant == Augment::faithful) {
     // The paper's: one search per free node, each after a full reset. A node whose search fails
     // can never be matched later (Edmonds), so one pass suffices.
@@ -36,6 +35,13 @@ AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
     stats.searches = free_nodes.size();
     forest.grow(/*stop_at_first=*/false);
   }
+}
+
+template <class Graph>
+AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
+  AugmentStats stats;
+  augment_detail::AlternatingForest<Graph> forest(graph, matching.mate_edge, stats);
+  grow(forest, stats, variant);
   return stats;
 }
 
@@ -43,6 +49,13 @@ AugmentStats augment(const Graph& graph, Matching& matching, Augment variant) {
 
 AugmentStats augment_matching(const NeighbourTable& graph, Matching& matching, Augment variant) {
   return augment(graph, matching, variant);
+}
+
+AugmentStats augment_on_rows(const NeighbourTable& table, Augment variant) {
+  AugmentStats stats;
+  augment_detail::AlternatingForest<NeighbourTable> forest(table, stats);
+  grow(forest, stats, variant);
+  return stats;
 }
 
 // Straight on the graph: a table costs a pass over the nodes, which pays only when the searches

@@ -19,5 +19,8 @@ void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
 /// PS over a table the caller keeps, for the augmentation that follows: the table's search state
 /// ends up fresh for the matching PS returns (augment_cubic.hpp).
 void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
+/// PS over a table built on neighbour rows (no CubicGraph, so no mate edges): the matching is
+/// the table's search state, each slot's mate node. Returns the number of nodes left unpaired.
+std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed);
 
 }  // namespace petersen

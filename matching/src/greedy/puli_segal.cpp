@@ -43,14 +43,15 @@ constexpr std::uint8_t kStart = 3;
 
 class PuliSegal {
  public:
-  PuliSegal(NeighbourTable& table, Matching& matching, std::uint64_t seed)
+  PuliSegal(NeighbourTable& table, HugeVector<EdgeId>* mate, std::uint64_t seed)
       : table_(table),
-        mate_(matching.mate_edge),
+        mate_(mate),
         state_(table.node_count(), kStart),
         random_(seed),
         cursor_(table.node_count() == 0 ? 0 : random_.below(table.node_count())) {}
 
-  void run() {
+  // Returns the number of nodes left unpaired.
+  std::uint32_t run() {
     for (NodeId v = draw(); v != kNoNode; v = draw()) {
       // A highest-priority neighbour over a free edge (the first one met on ties).
       int best = -1;
@@ -85,12 +86,15 @@ class PuliSegal {
     }
     // The mate edges, and the table's fresh search state, in one sequential pass: looked up at
     // pairing time, v's incidence list was a cache miss of its own on every pairing.
+    std::uint32_t unpaired = 0;
     for (NodeId v = 0; v < table_.node_count(); ++v) {
       const bool paired = state_[v] & kPaired;
       const int i = state_[v] & kFreeMask;
-      if (paired) mate_[v] = table_.graph().incident_edge(v, i);
+      if (paired && mate_ != nullptr) (*mate_)[v] = table_.graph()->incident_edge(v, i);
+      unpaired += !paired;
       table_.start_search(v, paired ? i : -1);
     }
+    return unpaired;
   }
 
  private:
@@ -98,13 +102,15 @@ class PuliSegal {
   std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
 
   // The index, among u's three edges, of the edge that v's edge `at` names: the one place in
-  // u's row that holds v, except across parallel edges, where the edge ids decide.
+  // u's row that holds v, except across parallel edges, where the edge ids decide. Over rows
+  // alone (no mate edges to write) any copy does: each leads to the same mate node.
   int index_of(NodeId v, int at, NodeId u) const {
     const std::span<const NodeId, 3> row = neighbours(u);
-    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1) {
+    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1 || mate_ == nullptr) {
       return row[0] == v ? 0 : row[1] == v ? 1 : 2;
     }
-    return table_.graph().edge_index(u, table_.graph().incident_edge(v, at));
+    const CubicGraph& graph = *table_.graph();
+    return graph.edge_index(u, graph.incident_edge(v, at));
   }
 
   void enter(NodeId v, std::uint8_t state, int p) {
@@ -170,7 +176,7 @@ class PuliSegal {
   }
 
   NeighbourTable& table_;
-  HugeVector<EdgeId>& mate_;
+  HugeVector<EdgeId>* mate_;                 // nullptr: the matching is the table's state only
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;
@@ -181,7 +187,11 @@ class PuliSegal {
 }  // namespace
 
 void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed) {
-  PuliSegal(table, matching, seed).run();
+  PuliSegal(table, &matching.mate_edge, seed).run();
+}
+
+std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed) {
+  return PuliSegal(table, nullptr, seed).run();
 }
 
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed) {

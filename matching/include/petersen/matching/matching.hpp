@@ -1,6 +1,7 @@
 #pragma once
 // A matching of a cubic graph, and the verifier every algorithm's answer goes through.
 
+#include <span>
 #include <string>
 
 #include "petersen/graph/csr_graph.hpp"
@@ -53,5 +54,12 @@ MatchingCheck verify_perfect_matching(const CubicGraph& graph, const Matching& m
 MatchingCheck verify_matching(const CubicGraph& graph, const Matching& matching);
 /// The same check on a general graph. O(n).
 MatchingCheck verify_matching(const CsrGraph& graph, const Matching& matching);
+
+/// Checks that `partner` (a node per node, perfect_partners) is a perfect matching of the cubic
+/// graph whose neighbour rows are `rows` (rows[3v..3v+2]: v's neighbours): every node's partner
+/// is in range, is one of its neighbours, and has it as its own partner. Reports the first
+/// problem with its node (`edge` names the partner). O(n).
+MatchingCheck verify_perfect_partners(std::span<const NodeId> rows,
+                                      std::span<const NodeId> partner);
 
 }  // namespace petersen

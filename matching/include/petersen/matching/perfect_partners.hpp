@@ -1,0 +1,35 @@
+#pragma once
+// A perfect matching as partner nodes, computed on neighbour rows alone: the lean form of
+// perfect_matching for a caller that needs only who is paired with whom (quadrangulate).
+
+#include <span>
+
+#include "petersen/graph/cubic_graph.hpp"
+#include "petersen/matching/options.hpp"
+
+namespace petersen {
+
+struct PartnerOptions {
+  Augment augment = Augment::local;
+  std::uint64_t seed = 1;
+};
+
+struct PartnerResult {
+  /// partner[v]: the node matched to v; kNoNode for a node left free (only when the graph is not
+  /// bridgeless: Petersen's theorem matches every node of a cubic bridgeless graph).
+  HugeVector<NodeId> partner;
+  Stats stats;
+};
+
+/// PS and Tarjan's augmenting paths (Algorithm::ps of perfect_matching, the same pairs for the
+/// same seed) on a cubic multigraph given by its neighbour rows, `rows[3v..3v+2]` being v's
+/// neighbours (CubicGraph::into_neighbour_rows); the rows are read, never copied. It holds the
+/// rows (12 bytes per node, the caller's) and the search state (16) where perfect_matching holds
+/// the graph (24), its table (28) and the mate edges (4): what lets quadrangulate stay within 64
+/// bytes per triangle. The rows are trusted to be a loop-free cubic graph (each node in the row
+/// of each neighbour as often as that neighbour is in its own); no bridge test is made. Check the
+/// answer with verify_perfect_partners. Θ(n) for PS; the augmentation's cost follows the regions
+/// its searches explore.
+PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options = {});
+
+}  // namespace petersen
