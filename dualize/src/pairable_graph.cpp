@@ -248,11 +248,8 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   // groups only its own halfedges, so the grouping's scratch is a slice's, not the whole mesh's,
   // and slices are classified in parallel. A wave of slices, one per thread, is classified, then
   // numbered in order, so edges keep the order of their mesh edge (min, max).
-  const auto from = [&](std::uint32_t h) { return half.from(h); };
-  const auto to = [&](std::uint32_t h) { return half.to(h); };
-  const auto used = [&](std::uint32_t h) { return half.from(h) != half.to(h); };
-  const HugeVector<std::uint32_t> starts =
-      bucket_starts(mesh.positions.size(), halfedge_count, from, to, used);
+  const auto halfedges = [&](auto visit) { half.for_each(visit); };
+  const HugeVector<std::uint32_t> starts = bucket_starts(mesh.positions.size(), halfedges);
   const std::uint32_t threads = resolve_threads(threads_wanted);
   constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
   std::uint64_t slices =
@@ -276,8 +273,8 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
         static_cast<std::uint32_t>(std::min<std::uint64_t>(threads, slices - wave));
     std::vector<Slice> wave_slices(count);
     run_parallel(threads, count, [&](std::uint32_t i) {
-      wave_slices[i].groups = group_halfedges_in(
-          starts, slice_start[wave + i], slice_start[wave + i + 1], halfedge_count, from, to, used);
+      wave_slices[i].groups =
+          group_halfedges_in(starts, slice_start[wave + i], slice_start[wave + i + 1], halfedges);
       classify(wave_slices[i]);
     });
     std::vector<EdgeId> first_edge(count);
