@@ -56,17 +56,20 @@ EdgeGroups group_halfedges_in(std::span<const std::uint32_t> all_starts, std::si
                               std::size_t last_vertex, ForEachHalfedge for_each_halfedge) {
   EdgeGroups groups;
   const std::uint32_t base = all_starts[first_vertex];
-  groups.start.resize(last_vertex - first_vertex + 1);
-  for (std::size_t i = 0; i < groups.start.size(); ++i) {
-    groups.start[i] = all_starts[first_vertex + i] - base;
+  const std::size_t vertices = last_vertex - first_vertex;
+  groups.start.resize(vertices + 1);
+  groups.entries.resize(all_starts[last_vertex] - base);
+  // Bucket v's next free entry is kept in start[v + 1], which the bucket's last entry moves to
+  // its end, the next bucket's start: no separate array of cursors (a fresh one per slice was
+  // most of the grouping's page faults).
+  groups.start[0] = 0;
+  for (std::size_t i = 0; i < vertices; ++i) {
+    groups.start[i + 1] = all_starts[first_vertex + i] - base;
   }
-  groups.entries.resize(groups.start.back());
-  // Each bucket's next free entry, moved along as the bucket fills.
-  HugeVector<std::uint32_t> cursor(groups.start.begin(), groups.start.end() - 1);
   for_each_halfedge([&](std::uint32_t h, VertexId a, VertexId b) {
     const std::size_t low = std::min(a, b);
     if (low < first_vertex || low >= last_vertex) return;
-    groups.entries[cursor[low - first_vertex]++] = {std::max(a, b), h};
+    groups.entries[groups.start[low - first_vertex + 1]++] = {std::max(a, b), h};
   });
   for (std::size_t v = 0; v + 1 < groups.start.size(); ++v) {
     sort_bucket(groups.entries.data() + groups.start[v],

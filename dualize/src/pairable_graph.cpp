@@ -268,14 +268,19 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     slice_start[k] =
         std::size_t(std::lower_bound(starts.begin(), starts.end() - 1, target) - starts.begin());
   }
+  // Kept from wave to wave, so that each slice's flags reuse the previous wave's memory.
+  std::vector<Slice> wave_slices(std::min<std::uint64_t>(threads, slices));
   for (std::uint64_t wave = 0; wave < slices; wave += threads) {
     const std::uint32_t count =
         static_cast<std::uint32_t>(std::min<std::uint64_t>(threads, slices - wave));
-    std::vector<Slice> wave_slices(count);
     run_parallel(threads, count, [&](std::uint32_t i) {
-      wave_slices[i].groups =
+      Slice& slice = wave_slices[i];
+      slice.cuts = {};
+      slice.mesh_edges = slice.inconsistent_edges = 0;
+      slice.edges = 0;
+      slice.groups =
           group_halfedges_in(starts, slice_start[wave + i], slice_start[wave + i + 1], halfedges);
-      classify(wave_slices[i]);
+      classify(slice);
     });
     std::vector<EdgeId> first_edge(count);
     for (std::uint32_t i = 0; i < count; ++i) {

@@ -129,6 +129,10 @@ std::vector<double> quad_costs(const PolygonMesh& mesh) {
 }
 
 QualityFigures quality_figures(std::vector<double> costs) {
+  return quality_figures_in_place(costs);
+}
+
+QualityFigures quality_figures_in_place(std::span<double> costs) {
   QualityFigures figures;
   figures.quads = costs.size();
   if (costs.empty()) return figures;

@@ -142,7 +142,8 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
   // in face order, so the figures do not depend on the threads.
   const FaceId out_faces = static_cast<FaceId>(out.face_count());
-  std::vector<double> costs(out_faces);
+  // Written in full below; from the pool, not fresh pages.
+  const HugeArray<double> costs = make_huge_array<double>(out_faces);
   constexpr FaceId kBlock = 1 << 16;
   run_parallel(options.threads, (out_faces + kBlock - 1) / kBlock, [&](std::uint32_t block) {
     const auto& p = out.positions;
@@ -164,8 +165,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
       costs[o] = pair_quad ? quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) : -1.0;
     }
   });
-  std::erase_if(costs, [](double c) { return c < 0; });
-  const QualityFigures quality = quality_figures(std::move(costs));
+  const std::span<double> all_costs(costs.get(), out_faces);
+  const auto quad_costs_end =
+      std::remove_if(all_costs.begin(), all_costs.end(), [](double c) { return c < 0; });
+  const QualityFigures quality = quality_figures_in_place({all_costs.begin(), quad_costs_end});
   stats.quality_median = quality.median;
   stats.quality_p95 = quality.p95;
   stats.nonconvex_quads = quality.nonconvex;
