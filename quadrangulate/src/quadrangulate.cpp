@@ -114,6 +114,13 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     if (options.all_quad) kinds.push_back(kind);
   };
   for (FaceId f = 0; f < face_count; ++f) {
+    // A pair's second triangle is anywhere in the mesh: its corners are fetched a few faces
+    // ahead (armadillo-sub2, this loop, medians of 5 alternated at load 3: 0.029 -> 0.022 s).
+    if (constexpr FaceId kAhead = 8; f + kAhead < face_count) {
+      const NodeId ahead = face_node.empty() ? f + kAhead : face_node[f + kAhead];
+      const NodeId partner = ahead == kNoNode ? kNoNode : pairing.partner[ahead];
+      if (partner < graph.node_count) __builtin_prefetch(mesh.face(graph.face_of(partner)).data());
+    }
     const NodeId v = face_node.empty() ? f : face_node[f];
     const NodeId partner = v == kNoNode ? kNoNode : pairing.partner[v];
     if (v == kNoNode || partner == kNoNode) {
