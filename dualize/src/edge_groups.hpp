@@ -21,15 +21,16 @@ struct EdgeGroups {
   HugeVector<std::array<std::uint32_t, 2>> entries;
 };
 
-/// Sorts one bucket: a vertex has a handful of edges, where an insertion sort on the entries read
-/// as one 64-bit key (larger vertex, then halfedge) beats std::sort's call and set-up.
+/// Sorts one bucket by (larger vertex, halfedge), its entries being in ascending halfedge order
+/// already (as group_halfedges_in fills them): a vertex has a handful of edges, where an
+/// insertion sort beats std::sort's call and set-up, and, being stable, it need only compare the
+/// larger vertex.
 inline void sort_bucket(std::array<std::uint32_t, 2>* first, std::array<std::uint32_t, 2>* last) {
   if (last - first > 16) return std::sort(first, last);
-  auto key = [](const std::array<std::uint32_t, 2>& e) { return std::uint64_t{e[0]} << 32 | e[1]; };
   for (auto* i = first + 1; i < last; ++i) {
     const std::array<std::uint32_t, 2> entry = *i;
     auto* j = i;
-    for (; j != first && key(*(j - 1)) > key(entry); --j) *j = *(j - 1);
+    for (; j != first && (j - 1)->front() > entry[0]; --j) *j = *(j - 1);
     *j = entry;
   }
 }

@@ -129,7 +129,11 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     for (FaceId f = 0; f < face_count; ++f) degenerate_face[f] = repeats_a_vertex(mesh.face(f));
   }
   auto degenerate = [&](FaceId f) {
-    return triangles_only ? repeats_a_vertex(mesh.face(f)) : bool(degenerate_face[f]);
+    if (!triangles_only) return bool(degenerate_face[f]);
+    // Three comparisons, not repeats_a_vertex's loops over a span of unknown size: those were a
+    // sixth of the pairable graph's instructions on armadillo-sub2 (callgrind).
+    const VertexId* c = mesh.corners.data() + 3 * std::size_t{f};
+    return c[0] == c[1] || c[1] == c[2] || c[2] == c[0];
   };
   if (triangles_only) {
     graph.node_count = face_count;
@@ -155,6 +159,11 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     std::uint64_t mesh_edges = 0, inconsistent_edges = 0;
     std::uint32_t edges = 0;
   };
+  // Whether any attribute array can cut an edge: tested once, not per edge.
+  const bool attribute_cuts = !cuts.corner_uv.empty() || !cuts.corner_normal.empty() ||
+                              !cuts.face_material.empty() || !cuts.face_group.empty() ||
+                              !cuts.face_object.empty() || !cuts.face_smoothing.empty() ||
+                              !cuts.face_property.empty();
   // Decides each edge of the slice's groups: a cut (counted by cause) or pairable (marked).
   auto classify = [&](Slice& slice) {
     const auto& entries = slice.groups.entries;
@@ -209,19 +218,21 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
       // f2 runs along the edge the same way, else the next one.
       const std::uint32_t a2 = same_way ? h2 : half.next(h2), b2 = same_way ? half.next(h2) : h2;
-      auto seam = [&](std::span<const std::uint32_t> id) {
-        return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
-      };
-      if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
-      if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
-      auto border = [&](std::span<const std::uint32_t> id) {
-        return !id.empty() && id[f1] != id[f2];
-      };
-      if (border(cuts.face_material)) return cut(CutCause::material);
-      if (border(cuts.face_group)) return cut(CutCause::group);
-      if (border(cuts.face_object)) return cut(CutCause::object);
-      if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
-      if (border(cuts.face_property)) return cut(CutCause::face_property);
+      if (attribute_cuts) {
+        auto seam = [&](std::span<const std::uint32_t> id) {
+          return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
+        };
+        if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
+        if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
+        auto border = [&](std::span<const std::uint32_t> id) {
+          return !id.empty() && id[f1] != id[f2];
+        };
+        if (border(cuts.face_material)) return cut(CutCause::material);
+        if (border(cuts.face_group)) return cut(CutCause::group);
+        if (border(cuts.face_object)) return cut(CutCause::object);
+        if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
+        if (border(cuts.face_property)) return cut(CutCause::face_property);
+      }
       slice.inconsistent_edges += same_way;
       slice.pairable[first] = 1;
       ++slice.edges;
