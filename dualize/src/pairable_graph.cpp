@@ -265,12 +265,17 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
   std::uint64_t slices =
       std::max<std::uint64_t>(threads, (starts.back() + kSliceEntries - 1) / kSliceEntries);
-  // A large mesh gets four slices per thread at least, so that a wave's scratch (8 + 1 bytes per
-  // entry) is a quarter of the whole mesh's: the grouping was the front door's peak, beside the
-  // mesh and the graph (7M triangles: 88 bytes per triangle). Each slice reads the corners once
-  // more, sequentially, which costs little beside the grouping's random writes.
+  // A large mesh gets four slices at least, and two per thread, so that a wave's scratch (8 + 1
+  // bytes per entry) is at most half the whole mesh's, a quarter at one thread: the grouping was
+  // the front door's peak, beside the mesh and the graph (7M triangles: 88 bytes per triangle).
+  // Each slice reads every halfedge once more: four per thread made armadillo-sub2's 2-thread
+  // check read them 8 times, 0.2G more instructions than at 1 thread (callgrind); two per
+  // thread read them 4 times, at 13.5 bytes of scratch per triangle there (6.7 before), under
+  // the matching's peak.
   constexpr std::uint64_t kLargeEntries = std::uint64_t{1} << 20;
-  if (starts.back() >= kLargeEntries) slices = std::max<std::uint64_t>(slices, 4 * threads);
+  if (starts.back() >= kLargeEntries) {
+    slices = std::max<std::uint64_t>(slices, std::max<std::uint64_t>(4, 2 * threads));
+  }
   std::vector<std::size_t> slice_start(slices + 1, mesh.positions.size());
   slice_start[0] = 0;
   for (std::uint64_t k = 1; k < slices; ++k) {
