@@ -129,7 +129,11 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     for (FaceId f = 0; f < face_count; ++f) degenerate_face[f] = repeats_a_vertex(mesh.face(f));
   }
   auto degenerate = [&](FaceId f) {
-    return triangles_only ? repeats_a_vertex(mesh.face(f)) : bool(degenerate_face[f]);
+    if (!triangles_only) return bool(degenerate_face[f]);
+    // Three comparisons, not repeats_a_vertex's loops over a span of unknown size: those were a
+    // sixth of the pairable graph's instructions on armadillo-sub2 (callgrind).
+    const VertexId* c = mesh.corners.data() + 3 * std::size_t{f};
+    return c[0] == c[1] || c[1] == c[2] || c[2] == c[0];
   };
   if (triangles_only) {
     graph.node_count = face_count;
@@ -155,6 +159,11 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     std::uint64_t mesh_edges = 0, inconsistent_edges = 0;
     std::uint32_t edges = 0;
   };
+  // Whether any attribute array can cut an edge: tested once, not per edge.
+  const bool attribute_cuts = !cuts.corner_uv.empty() || !cuts.corner_normal.empty() ||
+                              !cuts.face_material.empty() || !cuts.face_group.empty() ||
+                              !cuts.face_object.empty() || !cuts.face_smoothing.empty() ||
+                              !cuts.face_property.empty();
   // Decides each edge of the slice's groups: a cut (counted by cause) or pairable (marked).
   auto classify = [&](Slice& slice) {
     const auto& entries = slice.groups.entries;
@@ -209,19 +218,21 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
       // f2 runs along the edge the same way, else the next one.
       const std::uint32_t a2 = same_way ? h2 : half.next(h2), b2 = same_way ? half.next(h2) : h2;
-      auto seam = [&](std::span<const std::uint32_t> id) {
-        return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
-      };
-      if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
-      if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
-      auto border = [&](std::span<const std::uint32_t> id) {
-        return !id.empty() && id[f1] != id[f2];
-      };
-      if (border(cuts.face_material)) return cut(CutCause::material);
-      if (border(cuts.face_group)) return cut(CutCause::group);
-      if (border(cuts.face_object)) return cut(CutCause::object);
-      if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
-      if (border(cuts.face_property)) return cut(CutCause::face_property);
+      if (attribute_cuts) {
+        auto seam = [&](std::span<const std::uint32_t> id) {
+          return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
+        };
+        if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
+        if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
+        auto border = [&](std::span<const std::uint32_t> id) {
+          return !id.empty() && id[f1] != id[f2];
+        };
+        if (border(cuts.face_material)) return cut(CutCause::material);
+        if (border(cuts.face_group)) return cut(CutCause::group);
+        if (border(cuts.face_object)) return cut(CutCause::object);
+        if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
+        if (border(cuts.face_property)) return cut(CutCause::face_property);
+      }
       slice.inconsistent_edges += same_way;
       slice.pairable[first] = 1;
       ++slice.edges;
@@ -248,21 +259,23 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   // groups only its own halfedges, so the grouping's scratch is a slice's, not the whole mesh's,
   // and slices are classified in parallel. A wave of slices, one per thread, is classified, then
   // numbered in order, so edges keep the order of their mesh edge (min, max).
-  const auto from = [&](std::uint32_t h) { return half.from(h); };
-  const auto to = [&](std::uint32_t h) { return half.to(h); };
-  const auto used = [&](std::uint32_t h) { return half.from(h) != half.to(h); };
-  const HugeVector<std::uint32_t> starts =
-      bucket_starts(mesh.positions.size(), halfedge_count, from, to, used);
+  const auto halfedges = [&](auto visit) { half.for_each(visit); };
+  const HugeVector<std::uint32_t> starts = bucket_starts(mesh.positions.size(), halfedges);
   const std::uint32_t threads = resolve_threads(threads_wanted);
   constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
   std::uint64_t slices =
       std::max<std::uint64_t>(threads, (starts.back() + kSliceEntries - 1) / kSliceEntries);
-  // A large mesh gets four slices per thread at least, so that a wave's scratch (8 + 1 bytes per
-  // entry) is a quarter of the whole mesh's: the grouping was the front door's peak, beside the
-  // mesh and the graph (7M triangles: 88 bytes per triangle). Each slice reads the corners once
-  // more, sequentially, which costs little beside the grouping's random writes.
+  // A large mesh gets four slices at least, and two per thread, so that a wave's scratch (8 + 1
+  // bytes per entry) is at most half the whole mesh's, a quarter at one thread: the grouping was
+  // the front door's peak, beside the mesh and the graph (7M triangles: 88 bytes per triangle).
+  // Each slice reads every halfedge once more: four per thread made armadillo-sub2's 2-thread
+  // check read them 8 times, 0.2G more instructions than at 1 thread (callgrind); two per
+  // thread read them 4 times, at 13.5 bytes of scratch per triangle there (6.7 before), under
+  // the matching's peak.
   constexpr std::uint64_t kLargeEntries = std::uint64_t{1} << 20;
-  if (starts.back() >= kLargeEntries) slices = std::max<std::uint64_t>(slices, 4 * threads);
+  if (starts.back() >= kLargeEntries) {
+    slices = std::max<std::uint64_t>(slices, std::max<std::uint64_t>(4, 2 * threads));
+  }
   std::vector<std::size_t> slice_start(slices + 1, mesh.positions.size());
   slice_start[0] = 0;
   for (std::uint64_t k = 1; k < slices; ++k) {
@@ -271,14 +284,19 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     slice_start[k] =
         std::size_t(std::lower_bound(starts.begin(), starts.end() - 1, target) - starts.begin());
   }
+  // Kept from wave to wave, so that each slice's flags reuse the previous wave's memory.
+  std::vector<Slice> wave_slices(std::min<std::uint64_t>(threads, slices));
   for (std::uint64_t wave = 0; wave < slices; wave += threads) {
     const std::uint32_t count =
         static_cast<std::uint32_t>(std::min<std::uint64_t>(threads, slices - wave));
-    std::vector<Slice> wave_slices(count);
     run_parallel(threads, count, [&](std::uint32_t i) {
-      wave_slices[i].groups = group_halfedges_in(
-          starts, slice_start[wave + i], slice_start[wave + i + 1], halfedge_count, from, to, used);
-      classify(wave_slices[i]);
+      Slice& slice = wave_slices[i];
+      slice.cuts = {};
+      slice.mesh_edges = slice.inconsistent_edges = 0;
+      slice.edges = 0;
+      slice.groups =
+          group_halfedges_in(starts, slice_start[wave + i], slice_start[wave + i + 1], halfedges);
+      classify(slice);
     });
     std::vector<EdgeId> first_edge(count);
     for (std::uint32_t i = 0; i < count; ++i) {

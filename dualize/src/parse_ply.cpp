@@ -565,6 +565,13 @@ class PlyParser {
           }
         }
         in.pos += 4 * items;
+        if (items == 3 && mesh_.all_triangles()) {
+          // A triangle among triangles, appended here (check_corner_count has checked that the
+          // corners fit): armadillo-sub2's faces took 314M instructions with add_face, 267M
+          // without (callgrind).
+          mesh_.corners.insert(mesh_.corners.end(), face_.begin(), face_.end());
+          continue;
+        }
         mesh_.add_face(face_);
       }
       return true;

@@ -129,6 +129,10 @@ std::vector<double> quad_costs(const PolygonMesh& mesh) {
 }
 
 QualityFigures quality_figures(std::vector<double> costs) {
+  return quality_figures_in_place(costs);
+}
+
+QualityFigures quality_figures_in_place(std::span<double> costs) {
   QualityFigures figures;
   figures.quads = costs.size();
   if (costs.empty()) return figures;
@@ -136,13 +140,18 @@ QualityFigures quality_figures(std::vector<double> costs) {
     figures.total += c;
     figures.nonconvex += c > 90;
   }
-  std::sort(costs.begin(), costs.end());
-  auto rank = [&](double p) {  // nearest rank: the smallest cost with at least p of them at most
+  // Nearest rank: the smallest cost with at least p of them at most, the k-th smallest. Two
+  // selections instead of a sort (armadillo-sub2's 691,856 quads: the sort was 4 % of a whole
+  // `petersen quad` run); the p95 selection only looks above the median.
+  auto rank_index = [&](double p) {
     const auto k = static_cast<std::size_t>(std::ceil(p * double(costs.size())));
-    return costs[std::max<std::size_t>(k, 1) - 1];
+    return std::max<std::size_t>(k, 1) - 1;
   };
-  figures.median = rank(0.5);
-  figures.p95 = rank(0.95);
+  const std::size_t median = rank_index(0.5), p95 = rank_index(0.95);
+  std::nth_element(costs.begin(), costs.begin() + median, costs.end());
+  figures.median = costs[median];
+  std::nth_element(costs.begin() + median, costs.begin() + p95, costs.end());
+  figures.p95 = costs[p95];
   return figures;
 }
 

@@ -6,6 +6,7 @@
 
 #include "lap_clock.hpp"
 #include "petersen/graph/csr_graph.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
@@ -37,18 +38,38 @@ struct Components {
   std::vector<std::uint8_t> closed;
 };
 
+// Disjoint sets over the graph's edges: each node's parent, a root being its own. On huge pages,
+// so that a run takes it from the pool's freed ranges rather than from fresh memory.
+class ComponentForest {
+ public:
+  /// The forest of the graph on `node_count` nodes whose edge e joins edge_ends[2e] and
+  /// edge_ends[2e + 1].
+  ComponentForest(std::uint32_t node_count, std::span<const NodeId> edge_ends)
+      : parent_(node_count) {
+    for (NodeId v = 0; v < node_count; ++v) parent_[v] = v;
+    for (std::size_t i = 0; i < edge_ends.size(); i += 2) {
+      const NodeId a = find(edge_ends[i]), b = find(edge_ends[i + 1]);
+      if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+    }
+  }
+  NodeId find(NodeId v) {
+    while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
+    return v;
+  }
+  std::uint32_t root_count() const {
+    std::uint32_t roots = 0;
+    for (NodeId v = 0; v < parent_.size(); ++v) roots += parent_[v] == v;
+    return roots;
+  }
+
+ private:
+  HugeVector<NodeId> parent_;
+};
+
 Components components_of(const PairableGraph& graph) {
   const std::uint32_t n = graph.node_count;
-  std::vector<NodeId> parent(n);
-  for (NodeId v = 0; v < n; ++v) parent[v] = v;
-  auto find = [&](NodeId v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    const NodeId a = find(graph.edge_ends[2 * e]), b = find(graph.edge_ends[2 * e + 1]);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
+  ComponentForest forest(n, graph.edge_ends);
+  auto find = [&](NodeId v) { return forest.find(v); };
   Components components;
   components.of_node.resize(n);
   std::vector<std::uint32_t> id_of_root(n, kNoNode);
@@ -68,28 +89,6 @@ Components components_of(const PairableGraph& graph) {
     }
   }
   return components;
-}
-
-// The number of components of the pairable graph (those of components_of), from the disjoint
-// sets alone: 4 bytes per node where components_of keeps 12, beside the graph (24) and the mesh
-// (24) on a closed mesh, where the count is all that is wanted.
-std::uint32_t component_count(const PairableGraph& graph) {
-  const std::uint32_t n = graph.node_count;
-  HugeVector<NodeId> parent(n);
-  for (NodeId v = 0; v < n; ++v) parent[v] = v;
-  auto find = [&](NodeId v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  std::uint32_t count = n;
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    const NodeId a = find(graph.edge_ends[2 * e]), b = find(graph.edge_ends[2 * e + 1]);
-    if (a != b) {
-      parent[std::max(a, b)] = std::min(a, b);
-      --count;
-    }
-  }
-  return count;
 }
 
 // The subgraph induced by `nodes` (whole components, ascending), renumbered in their order.
@@ -247,10 +246,14 @@ bool pair_by_lrs(const PolygonMesh& mesh, const PairableGraph& graph, std::span<
 }
 
 // Closed components by `algorithm` (perfect, by Petersen's theorem), or with `costs` by the
-// exact minimum-cost perfect matching; verified, and its certificate checked.
+// exact minimum-cost perfect matching; verified, and its certificate checked. `beside_verifier`
+// runs on another thread (given options.threads > 1) while the matching is verified: work that
+// needs neither the matching nor the matching's memory, which is freed by then.
+template <class BesideVerifier>
 void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
                  std::span<const Cost> costs, const QuadOptions& options, Algorithm algorithm,
-                 TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                 TrianglePairing& pairing, QuadStats& stats, LapClock& clock,
+                 BesideVerifier beside_verifier) {
   Matching matching;
   std::string name(to_string(algorithm));
   if (costs.empty()) {
@@ -285,7 +288,15 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
     pairing.objective_units += result.total_cost;
     matching = std::move(result.matching);
   }
-  if (MatchingCheck check = verify_perfect_matching(cubic, matching); !check.ok()) {
+  MatchingCheck check;
+  run_parallel(options.threads, 2, [&](std::uint32_t task) {
+    if (task == 0) {
+      check = verify_perfect_matching(cubic, matching);
+    } else {
+      beside_verifier();
+    }
+  });
+  if (!check.ok()) {
     throw std::logic_error("internal error: " + name +
                            " returned a matching that is not perfect: " + check.message);
   }
@@ -345,14 +356,24 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.
   if (graph.cubic && !use_lrs) {
-    stats.components = stats.closed_components = component_count(graph);
-    CubicGraph cubic =
-        CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
     if (closed_algorithm == Algorithm::ps && costs.empty()) {
-      pair_by_partners(std::move(cubic), options, pairing, stats, clock);
+      // Counted first: the neighbour rows the matching runs on replace the edge list.
+      stats.components = stats.closed_components =
+          ComponentForest(graph.node_count, graph.edge_ends).root_count();
+      pair_by_partners(
+          CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends)),
+          options, pairing, stats, clock);
     } else {
+      CubicGraph cubic =
+          CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
       stats.dual_seconds += clock.lap();
-      pair_closed(cubic, {}, costs, options, closed_algorithm, pairing, stats, clock);
+      // Only their number, without per-node ids (on armadillo-sub2 their two fresh arrays were
+      // most of the run's 4 KiB page faults), counted while the matching is verified: on
+      // armadillo-sub2 each takes about 0.02 s, and the count was most of the dual phase.
+      pair_closed(cubic, {}, costs, options, closed_algorithm, pairing, stats, clock, [&] {
+        stats.components = stats.closed_components =
+            ComponentForest(cubic.node_count(), cubic.edge_ends()).root_count();
+      });
     }
     stats.maximum_certified = true;
     stats.optimality_certified = quality;
@@ -412,7 +433,8 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
       for (EdgeId e : sub.edge_of) local_costs.push_back(costs[e]);
     }
     stats.dual_seconds += clock.lap();
-    pair_closed(cubic, sub.nodes, local_costs, options, closed_algorithm, pairing, stats, clock);
+    pair_closed(cubic, sub.nodes, local_costs, options, closed_algorithm, pairing, stats, clock,
+                [] {});
   }
 
   if (!open_nodes.empty()) {

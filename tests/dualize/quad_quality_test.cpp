@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -175,6 +176,31 @@ TEST(QuadQuality, FiguresAreNearestRankOverTheQuadsOnly) {
   EXPECT_EQ(describe(f),
             "3 quads, worst corner median 30.0\xc2\xb0, p95 45.0\xc2\xb0, 0 non-convex, total "
             "75.0\xc2\xb0");
+}
+
+// The selections give the nearest-rank elements of the sorted costs, with ties and any count.
+TEST(QuadQuality, FiguresBySelectionMatchTheSortedCosts) {
+  std::mt19937 random(7);
+  for (std::size_t count : {1, 2, 3, 19, 20, 21, 1000, 1001}) {
+    std::vector<double> costs(count);
+    // Few distinct values, so that ranks fall on ties.
+    for (double& c : costs) c = double(std::uniform_int_distribution<int>(0, 9)(random)) * 12.5;
+    std::vector<double> sorted = costs;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[std::size_t(std::ceil(0.5 * double(count))) - 1];
+    const double p95 = sorted[std::size_t(std::ceil(0.95 * double(count))) - 1];
+    const QualityFigures by_copy = quality_figures(costs);
+    EXPECT_EQ(by_copy.median, median) << count;
+    EXPECT_EQ(by_copy.p95, p95) << count;
+    std::vector<double> reordered = costs;
+    const QualityFigures in_place = quality_figures_in_place(reordered);
+    EXPECT_EQ(in_place.median, median) << count;
+    EXPECT_EQ(in_place.p95, p95) << count;
+    EXPECT_EQ(in_place.quads, count);
+    EXPECT_EQ(in_place.nonconvex, by_copy.nonconvex);
+    std::sort(reordered.begin(), reordered.end());
+    EXPECT_EQ(reordered, sorted) << "the same costs, reordered";
+  }
 }
 
 }  // namespace

@@ -120,7 +120,8 @@ struct QuadStats {
 
   double check_seconds = 0;     ///< the input check and the pairable graph
   double dual_seconds = 0;      ///< the graphs the algorithms run on
-  double verify_seconds = 0;    ///< the verifier and the maximality witness
+  double verify_seconds = 0;    ///< the verifier and the maximality witness (on a closed
+                                ///< mesh, the components are counted beside the verifier)
   double quads_seconds = 0;     ///< the output faces
   double all_quad_seconds = 0;  ///< the splits
   double total_seconds = 0;     ///< everything above plus the matching
