@@ -265,16 +265,16 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   constexpr std::uint64_t kSliceEntries = std::uint64_t{1} << 25;
   std::uint64_t slices =
       std::max<std::uint64_t>(threads, (starts.back() + kSliceEntries - 1) / kSliceEntries);
-  // A large mesh gets four slices at least, and two per thread, so that a wave's scratch (8 + 1
-  // bytes per entry) is at most half the whole mesh's, a quarter at one thread: the grouping was
-  // the front door's peak, beside the mesh and the graph (7M triangles: 88 bytes per triangle).
-  // Each slice reads every halfedge once more: four per thread made armadillo-sub2's 2-thread
-  // check read them 8 times, 0.2G more instructions than at 1 thread (callgrind); two per
-  // thread read them 4 times, at 13.5 bytes of scratch per triangle there (6.7 before), under
-  // the matching's peak.
+  // A large mesh gets four slices per thread, so that a wave's scratch (8 + 1 bytes per entry) is
+  // a quarter of the whole mesh's: the grouping was the front door's peak, beside the mesh and
+  // the graph (7M triangles: 88 bytes per triangle), and is again now that the matching runs on
+  // one adjacency. Each slice reads every halfedge once more: two per thread read them 4 times
+  // instead of 8 at 2 threads (0.2G fewer instructions on armadillo-sub2, callgrind) but took
+  // 13.5 bytes of scratch per triangle instead of 6.7, and the run's peak RSS from 95.3 to
+  // 113.4 MB, with no wall time to show for it (3 alternated runs each, load 0.8).
   constexpr std::uint64_t kLargeEntries = std::uint64_t{1} << 20;
   if (starts.back() >= kLargeEntries) {
-    slices = std::max<std::uint64_t>(slices, std::max<std::uint64_t>(4, 2 * threads));
+    slices = std::max<std::uint64_t>(slices, std::uint64_t{4} * threads);
   }
   std::vector<std::size_t> slice_start(slices + 1, mesh.positions.size());
   slice_start[0] = 0;

@@ -146,8 +146,9 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
   // Freed before the quads' costs are measured beside the output (`= {}` would keep the buffer),
-  // and given back to the kernel: the costs come from malloc, which does not reuse the range the
-  // huge-page pool would keep (with it kept, armadillo-sub2's peak RSS was 5.6 MB higher).
+  // and given back to the kernel: with the costs from malloc, the range the huge-page pool kept
+  // raised armadillo-sub2's peak RSS by 5.6 MB; the costs now come from the pool, where the
+  // check's peak, not this phase's, is the run's.
   pairing.partner = HugeVector<NodeId>();
   huge_pages::release_retained();
   // Quality of the pairs' quads (every output face of four corners made from triangles): each

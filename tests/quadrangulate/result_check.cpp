@@ -344,14 +344,16 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
       }
     }
     // An edge in more than two faces must be an input edge that was, or half of one (a split of a
-    // non-manifold edge at its midpoint, which all of its faces share).
+    // non-manifold edge at its midpoint, which all of its faces share). Several non-manifold
+    // edges may share a midpoint (coincident copies of a surface): each is kept.
     const auto in_edges = faces_by_edge(input);
-    std::map<std::array<double, 3>, std::pair<Edge, std::size_t>> split_midpoints;
+    std::multimap<std::array<double, 3>, std::pair<Edge, std::size_t>> split_midpoints;
     for (const auto& [e, fs] : in_edges) {
       if (fs.size() < 3) continue;
       const auto& p = input.positions[e.first];
       const auto& q = input.positions[e.second];
-      split_midpoints[{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2}] = {e, fs.size()};
+      split_midpoints.insert(
+          {{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2}, {e, fs.size()}});
     }
     for (const auto& [e, fs] : faces_by_edge(result.mesh)) {
       std::size_t allowed = 2;
@@ -360,10 +362,11 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
       } else {
         for (auto [added, kept] : {e, Edge{e.second, e.first}}) {
           if (added < input.positions.size()) continue;
-          const auto it = split_midpoints.find(result.mesh.positions[added]);
-          if (it != split_midpoints.end() &&
-              (it->second.first.first == kept || it->second.first.second == kept)) {
-            allowed = std::max(allowed, it->second.second);
+          const auto [first, end] = split_midpoints.equal_range(result.mesh.positions[added]);
+          for (auto it = first; it != end; ++it) {
+            if (it->second.first.first == kept || it->second.first.second == kept) {
+              allowed = std::max(allowed, it->second.second);
+            }
           }
         }
       }
