@@ -237,10 +237,11 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
       a.normals.empty() ? all_of(a.vertex_properties, {"nx", "ny", "nz"})
                         : std::vector<const PropertyColumn*>{};
   std::vector<const PropertyColumn*> vertex_texcoord;
-  for (auto names :
+  for (auto [u, v] :
        {std::pair{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}) {
-    if (!a.texcoords.empty() || !vertex_texcoord.empty()) break;
-    vertex_texcoord = all_of(a.vertex_properties, {names.first, names.second});
+    if (!a.texcoords.empty()) break;
+    vertex_texcoord = all_of(a.vertex_properties, {u, v});
+    if (!vertex_texcoord.empty()) break;
   }
   std::vector<const PropertyColumn*> written = colour;
   written.insert(written.end(), vertex_normal.begin(), vertex_normal.end());

@@ -145,12 +145,9 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     emitted(quad_detail::FaceKind::pair);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
-  // Freed before the quads' costs are measured beside the output (`= {}` would keep the buffer),
-  // and given back to the kernel: with the costs from malloc, the range the huge-page pool kept
-  // raised armadillo-sub2's peak RSS by 5.6 MB; the costs now come from the pool, where the
-  // check's peak, not this phase's, is the run's.
+  // Freed before the quads' costs are measured beside the output (`= {}` would keep the buffer):
+  // the costs below come from the huge-page pool, which reuses the range it keeps.
   pairing.partner = HugeVector<NodeId>();
-  huge_pages::release_retained();
   // Quality of the pairs' quads (every output face of four corners made from triangles): each
   // face's cost (−1 for the others) measured in blocks on the threads, then gathered and summed
   // in face order, so the figures do not depend on the threads.
