@@ -294,6 +294,10 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       slice.cuts = {};
       slice.mesh_edges = slice.inconsistent_edges = 0;
       slice.edges = 0;
+      // The previous wave's groups go back to the pool first, for these to reuse: assigned over,
+      // they were freed only after the new ones were built, two waves' scratch at once (the
+      // run's peak on armadillo-sub2: 95.1 -> 87.1 MB, 69 -> 63 bytes per triangle).
+      slice.groups = {};
       slice.groups =
           group_halfedges_in(starts, slice_start[wave + i], slice_start[wave + i + 1], halfedges);
       classify(slice);
