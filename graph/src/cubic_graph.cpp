@@ -79,25 +79,30 @@ CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<
   return g;
 }
 
-HugeVector<NodeId> CubicGraph::into_neighbour_rows() && {
-  HugeVector<NodeId> rows = std::move(node_edges_);
+void CubicGraph::write_neighbour_rows(NodeId* rows) const {
   // Each slot reads its edge's ends at random: the ends of the slots kReadAhead nodes on are
-  // fetched ahead, so the misses overlap (the same pass NeighbourTable makes from a graph).
+  // fetched ahead, so the misses overlap. Slot 3v + k is read before it is written and the
+  // read-ahead looks only past v, so `rows` may be the incidence lists themselves.
   constexpr std::size_t kReadAhead = 16;
-  const std::size_t n = rows.size() / 3;
+  const EdgeId* edges = node_edges_.data();
+  const std::size_t n = node_edges_.size() / 3;
   for (std::size_t v = 0; v < n; ++v) {
     if (v + kReadAhead < n) {
       for (std::size_t k = 0; k < 3; ++k)
-        __builtin_prefetch(&edge_ends_[2 * std::size_t{rows[3 * (v + kReadAhead) + k]}]);
+        __builtin_prefetch(&edge_ends_[2 * std::size_t{edges[3 * (v + kReadAhead) + k]}]);
     }
     for (std::size_t k = 0; k < 3; ++k) {
-      const EdgeId e = rows[3 * v + k];
+      const EdgeId e = edges[3 * v + k];
       rows[3 * v + k] = edge_ends_[2 * std::size_t{e}] ^ edge_ends_[2 * std::size_t{e} + 1] ^
                         static_cast<NodeId>(v);
     }
   }
+}
+
+HugeVector<NodeId> CubicGraph::into_neighbour_rows() && {
+  write_neighbour_rows(node_edges_.data());
   edge_ends_ = HugeVector<NodeId>();  // `= {}` would keep the capacity
-  return rows;
+  return std::move(node_edges_);
 }
 
 }  // namespace petersen

@@ -45,19 +45,11 @@ class NeighbourTable {
         next_(own_rows_.get()),
         slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {
     check_size(graph.node_count());
-    constexpr NodeId kReadAhead = 16;
-    const NodeId n = graph.node_count();
-    for (NodeId v = 0; v < n; ++v) {
-      if (v + kReadAhead < n) {
-        for (EdgeId e : graph.incident_edges(v + kReadAhead))
-          __builtin_prefetch(&graph.edge_ends()[2 * std::size_t{e}]);
-      }
-      const std::span<const EdgeId, 3> edges = graph.incident_edges(v);
-      for (int i = 0; i < 3; ++i) own_rows_[3 * std::size_t{v} + i] = graph.other_end(edges[i], v);
-      if (mate != nullptr) {
-        const EdgeId e = (*mate)[v];
-        start_search(v, e == kNoEdge ? -1 : graph.edge_index(v, e));
-      }
+    graph.write_neighbour_rows(own_rows_.get());
+    if (mate == nullptr) return;
+    for (NodeId v = 0; v < graph.node_count(); ++v) {
+      const EdgeId e = (*mate)[v];
+      start_search(v, e == kNoEdge ? -1 : graph.edge_index(v, e));
     }
   }
 

@@ -86,6 +86,8 @@ class CubicGraph {
   /// lists in place and the edge list is freed, so a caller that needs only who is adjacent to
   /// whom (perfect_partners) holds 12 bytes per node instead of 24, and never both. O(n).
   HugeVector<NodeId> into_neighbour_rows() &&;
+  /// The same rows written to `rows` (3 · node_count() entries), the graph kept. O(n).
+  void write_neighbour_rows(NodeId* rows) const;
 
  private:
   HugeVector<NodeId> edge_ends_;
