@@ -155,8 +155,9 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
   struct Slice {
     EdgeGroups groups;
     std::vector<std::uint8_t> pairable;  // per entry: the first of a pairable edge's two
+    std::vector<NodeId> chosen_cut_ends;
     CutCounts cuts;
-    std::uint64_t mesh_edges = 0, inconsistent_edges = 0;
+    std::uint64_t mesh_edges = 0, inconsistent_edges = 0, inconsistent_chosen_cuts = 0;
     std::uint32_t edges = 0;
   };
   // Whether any attribute array can cut an edge: tested once, not per edge.
@@ -194,10 +195,17 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       if (opposite1 == opposite2) return cut(CutCause::duplicate);
       const VertexId a = half.from(h1), b = half.to(h1);
       const bool same_way = half.from(h2) == a;
+      // Past this point the surface joins f1 and f2 here; a cut is a choice, kept as one.
+      auto choose_cut = [&](CutCause cause) {
+        slice.chosen_cut_ends.push_back(node_of(f1));
+        slice.chosen_cut_ends.push_back(node_of(f2));
+        slice.inconsistent_chosen_cuts += same_way;
+        cut(cause);
+      };
       if (!user_edges.empty() &&
           std::binary_search(user_edges.begin(), user_edges.end(),
                              std::uint64_t{std::min(a, b)} << 32 | std::max(a, b))) {
-        return cut(CutCause::user);
+        return choose_cut(CutCause::user);
       }
       if (cuts.sharp_angle_degrees) {
         const auto n1 = normal_of(mesh, mesh.face(f1));
@@ -208,12 +216,12 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
         const double norms = std::sqrt((n1[0] * n1[0] + n1[1] * n1[1] + n1[2] * n1[2]) *
                                        (n2[0] * n2[0] + n2[1] * n2[1] + n2[2] * n2[2]));
         // A zero-area triangle has no normal: its fold is unknown, so the edge is cut.
-        if (!(norms > 0)) return cut(CutCause::sharp);
+        if (!(norms > 0)) return choose_cut(CutCause::sharp);
         // The fold in degrees, compared as the option says ("more than DEG"): comparing cosines
         // instead cut a cube's exact 90-degree edges at DEG = 90, since cos(90°) is 6e-17, not 0.
         const double fold =
             std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-        if (fold > *cuts.sharp_angle_degrees) return cut(CutCause::sharp);
+        if (fold > *cuts.sharp_angle_degrees) return choose_cut(CutCause::sharp);
       }
       // The corners of a and b in each face: h1 is a's corner in f1; in f2, a's corner is h2 when
       // f2 runs along the edge the same way, else the next one.
@@ -222,16 +230,16 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
         auto seam = [&](std::span<const std::uint32_t> id) {
           return !id.empty() && (id[h1] != id[a2] || id[half.next(h1)] != id[b2]);
         };
-        if (seam(cuts.corner_uv)) return cut(CutCause::uv_seam);
-        if (seam(cuts.corner_normal)) return cut(CutCause::normal_seam);
+        if (seam(cuts.corner_uv)) return choose_cut(CutCause::uv_seam);
+        if (seam(cuts.corner_normal)) return choose_cut(CutCause::normal_seam);
         auto border = [&](std::span<const std::uint32_t> id) {
           return !id.empty() && id[f1] != id[f2];
         };
-        if (border(cuts.face_material)) return cut(CutCause::material);
-        if (border(cuts.face_group)) return cut(CutCause::group);
-        if (border(cuts.face_object)) return cut(CutCause::object);
-        if (border(cuts.face_smoothing)) return cut(CutCause::smoothing);
-        if (border(cuts.face_property)) return cut(CutCause::face_property);
+        if (border(cuts.face_material)) return choose_cut(CutCause::material);
+        if (border(cuts.face_group)) return choose_cut(CutCause::group);
+        if (border(cuts.face_object)) return choose_cut(CutCause::object);
+        if (border(cuts.face_smoothing)) return choose_cut(CutCause::smoothing);
+        if (border(cuts.face_property)) return choose_cut(CutCause::face_property);
       }
       slice.inconsistent_edges += same_way;
       slice.pairable[first] = 1;
@@ -292,7 +300,8 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     run_parallel(threads, count, [&](std::uint32_t i) {
       Slice& slice = wave_slices[i];
       slice.cuts = {};
-      slice.mesh_edges = slice.inconsistent_edges = 0;
+      slice.mesh_edges = slice.inconsistent_edges = slice.inconsistent_chosen_cuts = 0;
+      slice.chosen_cut_ends.clear();
       slice.edges = 0;
       // The previous wave's groups go back to the pool first, for these to reuse: assigned over,
       // they were freed only after the new ones were built, two waves' scratch at once (the
@@ -309,6 +318,9 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       ends.resize(ends.size() + 2 * std::size_t{slice.edges});
       graph.mesh_edges += slice.mesh_edges;
       graph.inconsistent_edges += slice.inconsistent_edges;
+      graph.inconsistent_chosen_cuts += slice.inconsistent_chosen_cuts;
+      graph.chosen_cut_ends.insert(graph.chosen_cut_ends.end(), slice.chosen_cut_ends.begin(),
+                                   slice.chosen_cut_ends.end());
       for (int c = 0; c < kCutCauses; ++c) graph.cuts.by_cause[c] += slice.cuts.by_cause[c];
     }
     run_parallel(threads, count, [&](std::uint32_t i) { number(wave_slices[i], first_edge[i]); });

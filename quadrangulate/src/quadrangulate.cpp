@@ -9,6 +9,7 @@
 #include "all_quad.hpp"
 #include "attribute_cuts.hpp"
 #include "carry_attributes.hpp"
+#include "component_forest.hpp"
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
@@ -86,6 +87,17 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     stats.euler_characteristic =
         vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);
   }
+  // A closed, consistently oriented surface of triangles whose pairs some chosen cuts refuse
+  // (seams, borders, sharp edges): its genus is the surface's, whose components join across
+  // those cuts. Without cuts the pairing counts the components anyway (below).
+  const bool oriented_surface = graph.cuts.structural() == 0 && stats.polygons_kept == 0 &&
+                                graph.inconsistent_edges + graph.inconsistent_chosen_cuts == 0;
+  if (oriented_surface && !graph.chosen_cut_ends.empty()) {
+    quad_detail::ComponentForest surface(graph.node_count, graph.edge_ends);
+    surface.join(graph.chosen_cut_ends);
+    stats.genus = (2 * std::int64_t(surface.root_count()) - stats.euler_characteristic) / 2;
+  }
+  graph.chosen_cut_ends = HugeVector<NodeId>();  // `= {}` would keep the capacity
   stats.check_seconds = clock.lap();
 
   quad_detail::TrianglePairing pairing =

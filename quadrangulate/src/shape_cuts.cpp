@@ -30,7 +30,11 @@ void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<doub
     // "At most DEG" is pairable; a NaN cost cannot happen (quad_corner_deviation never gives one).
     if (degrees[e] > max_degrees) {
       ++graph.cuts.by_cause[static_cast<int>(CutCause::shape)];
-      graph.inconsistent_edges -= runs_same_way(graph, mesh, e);
+      const bool same_way = runs_same_way(graph, mesh, e);
+      graph.inconsistent_edges -= same_way;
+      graph.inconsistent_chosen_cuts += same_way;
+      graph.chosen_cut_ends.push_back(graph.edge_ends[2 * std::size_t{e}]);
+      graph.chosen_cut_ends.push_back(graph.edge_ends[2 * std::size_t{e} + 1]);
       continue;
     }
     graph.edge_ends[2 * std::size_t{kept}] = graph.edge_ends[2 * std::size_t{e}];

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/surface_generators.hpp"
@@ -207,6 +208,27 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
+}
+
+// Chosen cuts (materials, seams, the caller's edges, a shape threshold) refuse pairs but leave the
+// surface as it is: a closed surface of genus g still reports genus g, as `petersen info`'s own
+// count from the mesh does, even where the cuts split its pairable graph into pieces.
+RC_GTEST_PROP(Quadrangulate, ChosenCutsKeepTheGenus, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 5);
+  const PolygonMesh mesh = to_polygon_mesh(*testing::closed_triangulations(genus));
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
+  const auto material = *rc::gen::container<std::vector<std::uint32_t>>(
+      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
+  std::vector<std::array<VertexId, 2>> user;
+  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
+    user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
+  }
+  QuadOptions options{.cuts = {.user_edges = user, .face_material = material}};
+  if (*rc::gen::arbitrary<bool>()) options.max_corner_deviation = *rc::gen::inRange(10, 170) + 0.5;
+  const QuadResult result = quadrangulate(mesh, options);
+  RC_ASSERT(result.stats.genus == std::optional<std::int64_t>(genus));
+  RC_ASSERT(result.stats.genus == inspect_mesh(mesh).genus);
 }
 
 // Texture coordinates are compared by value: two entries with the same coordinates make no seam;

@@ -39,6 +39,11 @@ inline constexpr int kCutCauses = 15;
 constexpr bool is_attribute_cause(CutCause cause) {
   return cause >= CutCause::uv_seam && cause <= CutCause::face_property;
 }
+/// Whether a cause is the mesh's structure (boundary to duplicate): where the surface itself is
+/// not a closed two-manifold of triangles, rather than a pair being refused.
+constexpr bool is_structural_cause(CutCause cause) {
+  return cause <= CutCause::duplicate;
+}
 std::string_view to_string(CutCause cause);
 /// The cause named as to_string names it ("uv_seam", "material", ...), or nothing.
 std::optional<CutCause> parse_cut_cause(std::string_view name);
@@ -49,6 +54,11 @@ struct CutCounts {
   std::uint64_t total() const {
     std::uint64_t sum = 0;
     for (std::uint64_t n : by_cause) sum += n;
+    return sum;
+  }
+  std::uint64_t structural() const {
+    std::uint64_t sum = 0;
+    for (int c = 0; c < kCutCauses; ++c) sum += is_structural_cause(CutCause(c)) ? by_cause[c] : 0;
     return sum;
   }
 };
@@ -82,6 +92,11 @@ struct PairableGraph {
   CutCounts cuts;
   std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
   bool cubic = false;                    ///< every side of every triangle is pairable
+  /// The two nodes of each chosen cut: one made by the caller or the data (user, sharp, the
+  /// attribute causes, shape), not by the structure. With the edges, the surface's own
+  /// adjacency, so its components and genus are known under cuts.
+  HugeVector<NodeId> chosen_cut_ends;
+  std::uint64_t inconsistent_chosen_cuts = 0;  ///< of them, those whose triangles run the same way
 
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends.size() / 2); }
   FaceId face_of(NodeId v) const { return node_face.empty() ? v : node_face[v]; }

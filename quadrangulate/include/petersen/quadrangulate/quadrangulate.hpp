@@ -95,7 +95,8 @@ struct QuadStats {
   std::uint64_t split_quads = 0;     ///< faces of the output made by all_quad's splits
   std::uint64_t mesh_edges = 0;
   std::int64_t euler_characteristic = 0;  ///< referenced vertices − edges + faces, of the input
-  /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera.
+  /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera (the
+  /// surface's components, joined across chosen cuts such as seams and material borders).
   std::optional<std::int64_t> genus;
   CutCounts cuts;                        ///< mesh edges no pair may cross, by cause
   std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
