@@ -35,8 +35,8 @@ std::vector<std::pair<VertexId, VertexId>> edge_set(const TriangleMesh& mesh) {
   return edges;
 }
 
-void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
-  Triangulation tri = Triangulation::from_mesh(mesh);
+// `tri` is the triangulation of `mesh`, from from_mesh or from_dual.
+void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t genus) {
   const std::uint32_t vertices = tri.live_vertices(), faces = tri.live_faces();
   const ContractionResult contraction = contract_to_irreducible(tri);
   const std::uint32_t irreducible_faces = tri.live_faces();
@@ -81,7 +81,15 @@ void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
   const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
-  check_expansion(mesh, genus);
+  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+}
+
+// The same steps on the triangulation built from the dual (numbered spatially, as the quad front
+// door builds it): the same guarantees.
+RC_GTEST_PROP(ExpansionStep, FromTheDualOfRandomClosedSurfaces, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
 RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
@@ -90,7 +98,10 @@ RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
   spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.dents = *rc::gen::arbitrary<bool>();
-  check_expansion(voxel_plate(spec), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+  const TriangleMesh mesh = voxel_plate(spec);
+  const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
+  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+  check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
 TEST(ExpansionStep, OctahedronLeavesTheFourTetrahedronFaces) {
