@@ -4,8 +4,8 @@
 #include <stdexcept>
 
 #include "petersen/lrs/contraction_step.hpp"
-#include "petersen/lrs/expansion_step.hpp"
-#include "petersen/matching/augment.hpp"
+#include "petersen/lrs/dual_rows.hpp"
+#include "petersen/matching/perfect_partners.hpp"
 
 namespace petersen::quad_detail {
 
@@ -55,8 +55,8 @@ void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
       mesh.positions, mesh.corners, std::move(graph.node_edges), std::move(graph.edge_ends));
   stats.dual_seconds += clock.lap();
 
-  // The contraction's stack dies once the expansion has undone it; the expansion's edge states
-  // once M is on K's dual, which takes the triangulation's face array over.
+  // The contraction's stack dies once the expansion has undone it; K then becomes its dual's
+  // rows, M's partners and its triangles, the triangulation freed on the way.
   lrs::ExpansionResult expansion;
   {
     const lrs::ContractionResult contraction = lrs::contract_to_irreducible(tri);
@@ -64,39 +64,47 @@ void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
     expansion = lrs::expand_and_match(tri, contraction.stack);
   }
   stats.flipped_edges += expansion.flipped_edges;
-  CubicGraph dual = std::move(tri).dual_graph();
-  Matching matching = lrs::matching_of(dual, expansion);
-  expansion.edge_state = HugeVector<std::uint8_t>();
-  stats.matching.unpaired_after_initial += matching.unmatched_count();
+  lrs::DualRows k = lrs::into_dual_rows(std::move(tri), std::move(expansion));
+  stats.matching.unpaired_after_initial += k.unpaired;
   stats.matching.initial_seconds += clock.lap();
 
   stats.matching.augmenting_paths +=
-      augment_matching(dual, matching, options.augment).augmenting_paths;
+      augment_partners(k.rows, k.partner, options.augment).augmenting_paths;
   stats.matching.augment_seconds += clock.lap();
-  if (MatchingCheck check = verify_perfect_matching(dual, matching); !check.ok()) {
+  if (MatchingCheck check = verify_perfect_partners(k.rows, k.partner); !check.ok()) {
     throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +
                            check.message);
   }
   stats.verify_seconds += clock.lap();
 
-  // The quads need only K's links and which edges are matched: the dual and the matching go first.
-  HugeVector<std::uint8_t> matched(dual.edge_count(), 0);
-  for (NodeId f = 0; f < dual.node_count(); ++f) matched[matching.mate_edge[f]] = 1;
-  const EdgeId edges = dual.edge_count();
-  dual = CubicGraph();
-  matching = Matching();
+  // A pair's quad: its first triangle turned so that side 0 faces the second (the rows name the
+  // side), then the rows freed before the quads' list is made beside the triangles.
+  const auto faces = static_cast<FaceId>(k.triangles.size());
+  for (FaceId f = 0; f < faces; ++f) {
+    const NodeId g = k.partner[f];
+    if (g < f) continue;
+    const NodeId* row = k.rows.data() + 3 * std::size_t{f};
+    auto& t = k.triangles[f];
+    if (row[1] == g) {
+      t = {t[1], t[2], t[0]};
+    } else if (row[2] == g) {
+      t = {t[2], t[0], t[1]};
+    }
+  }
+  k.rows = HugeVector<NodeId>();
   const TrianglesByCorner input(mesh);
   pairing.lrs_quads.reserve(mesh.face_count() / 2);
-  for (EdgeId e = 0; e < edges; ++e) {
-    if (!matched[e]) continue;
-    // Halfedge h = 2e runs a -> b in triangle (a, b, c), its twin b -> a in (b, a, d): the quad
-    // (a, d, b, c) keeps their orientation.
-    const lrs::Halfedge h = 2 * e, g = h + 1;
-    const VertexId a = tri.input_vertex(tri.origin(h)), b = tri.input_vertex(tri.origin(g));
-    const VertexId c = tri.input_vertex(tri.apex(h)), d = tri.input_vertex(tri.apex(g));
+  for (FaceId f = 0; f < faces; ++f) {
+    const NodeId g = k.partner[f];
+    if (g < f) continue;
+    // Triangle (a, b, c) runs a -> b along the shared side, its partner b -> a with apex d: the
+    // quad (a, d, b, c) keeps their orientation.
+    const auto [a, b, c] = k.triangles[f];
+    const auto& u = k.triangles[g];
+    const VertexId d = u[0] != a && u[0] != b ? u[0] : u[1] != a && u[1] != b ? u[1] : u[2];
     pairing.lrs_quads.push_back({{a, d, b, c}, {input.find(a, b, c), input.find(b, a, d)}});
   }
-  tri = lrs::Triangulation();
+  k = lrs::DualRows();
   pairing.partner.assign(graph.node_count, kLrsNode);
   stats.dual_seconds += clock.lap();
 }

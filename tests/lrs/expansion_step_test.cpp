@@ -16,7 +16,9 @@
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/contraction_step.hpp"
+#include "petersen/lrs/dual_rows.hpp"
 #include "petersen/matching/augment.hpp"
+#include "petersen/matching/perfect_partners.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
@@ -73,9 +75,25 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
   if (genus == 0) RC_ASSERT(matching.unmatched_count() == 4u);
   if (genus > 0) RC_ASSERT(matching.unmatched_count() <= 56 * genus - 12);
 
+  // The lean form of the same: K's dual as rows, M as partners, K's triangles.
+  ExpansionResult states = expansion;
+  DualRows rows = into_dual_rows(std::move(tri), std::move(states));
+  RC_ASSERT(rows.unpaired == matching.unmatched_count());
+  RC_ASSERT(rows.triangles.size() == k.triangles.size());
+  for (NodeId f = 0; f < dual.node_count(); ++f) {
+    RC_ASSERT(rows.triangles[f] == k.triangles[f]);
+    for (int i = 0; i < 3; ++i) {
+      RC_ASSERT(rows.rows[3 * f + i] == dual.other_end(dual.incident_edges(f)[i], f));
+    }
+    const EdgeId mate = matching.mate_edge[f];
+    RC_ASSERT(rows.partner[f] == (mate == kNoEdge ? kNoNode : dual.other_end(mate, f)));
+  }
+
   augment_matching(dual, matching);
   RC_ASSERT(verify_perfect_matching(dual, matching).ok());
   RC_ASSERT(check_quad_mesh(mesh, quads_from_matching(k, dual, matching)).ok());
+  augment_partners(rows.rows, rows.partner);
+  RC_ASSERT(verify_perfect_partners(rows.rows, rows.partner).ok());
 }
 
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {

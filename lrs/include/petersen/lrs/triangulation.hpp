@@ -22,10 +22,13 @@ using Halfedge = std::uint32_t;
 inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
 
 class Triangulation;
+struct DualRows;
+struct ExpansionResult;
 struct ContractionRecord;
 ContractionRecord contract(Triangulation& tri, Halfedge h);
 void split(Triangulation& tri, const ContractionRecord& record);
 void flip(Triangulation& tri, Halfedge h);
+DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 /// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
 /// origin, the next halfedge of its face (counter-clockwise) and its face; each vertex one
@@ -136,6 +139,7 @@ class Triangulation {
   friend ContractionRecord contract(Triangulation&, Halfedge);
   friend void split(Triangulation&, const ContractionRecord&);
   friend void flip(Triangulation&, Halfedge);
+  friend DualRows into_dual_rows(Triangulation&&, ExpansionResult&&);
 
   // from_mesh after the surface check.
   static Triangulation build(const TriangleMesh& mesh);
