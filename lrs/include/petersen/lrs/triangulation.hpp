@@ -63,8 +63,9 @@ class Triangulation {
   /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
   /// form several fans) or orientation is inconsistent around it, and when the triangles form
   /// several components; std::invalid_argument when the arrays are not a dual of the triangles.
-  /// Holds the dual's arrays and at most 36 bytes per triangle beside them, against from_mesh's
-  /// copies of the mesh and the surface check's scratch. O(V + F).
+  /// Each array is freed once the next is made: at most about 44 bytes per triangle at a time
+  /// (the slots or the faces, the links, the vertex arrays), where from_mesh holds two copies of
+  /// the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
                                  HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
 
