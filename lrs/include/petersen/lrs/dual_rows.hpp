@@ -23,8 +23,8 @@ struct DualRows {
 
 /// Takes K (the triangulation expand_and_match left, every face alive) and the expansion's edge
 /// states over and gives DualRows, freeing each array once the next is made: beside K's links
-/// (24 bytes per face) and faces (12), at most the rows and partners (16) and each face's first
-/// halfedge (4), where dual_graph and matching_of add 28 and an augmentation on them 28 more.
+/// (24 bytes per face) and faces (12), at most the rows (12), each face's first halfedge (4) and
+/// M's side (1), where dual_graph and matching_of add 28 and an augmentation on them 28 more.
 /// The triangulation is left empty. Throws std::logic_error if a face is dead or two edges of M
 /// share a face. O(F).
 DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
