@@ -72,6 +72,11 @@ std::vector<std::uint32_t> sorted_by_cell(const std::vector<std::uint32_t>& key,
 
 }  // namespace
 
+std::vector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count) {
+  const int bits = bits_per_axis(face_count);
+  return sorted_by_cell(vertex_cells(positions, bits), 1u << (3 * bits));
+}
+
 SpatialMesh spatially_ordered(const TriangleMesh& mesh) {
   SpatialMesh out;
   const int bits = bits_per_axis(mesh.triangles.size());

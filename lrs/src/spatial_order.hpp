@@ -1,5 +1,6 @@
 #pragma once
-// A mesh renumbered along a space-filling curve, for lrs::Triangulation::from_mesh.
+// A mesh renumbered along a space-filling curve, for lrs::Triangulation::from_mesh (and the
+// vertex order alone, for from_dual).
 //
 // Why: the contraction step (paper §3.3) walks around vertices all over the surface, and the
 // expansion replays it backwards; their cost is the cache and TLB misses of those walks through
@@ -20,6 +21,10 @@ struct SpatialMesh {
   std::vector<VertexId>
       input_vertex;  ///< vertex v of `mesh` is vertex input_vertex[v] of the input
 };
+
+/// The vertices ordered by Morton cell of their position, for a surface of `face_count` faces (a
+/// few hundred faces per cell; ties in input order): new vertex v is input vertex order[v].
+std::vector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count);
 
 /// `mesh` with its vertices ordered by Morton cell (a few hundred faces per cell; ties in input
 /// order) and its triangles by the cell of their first corner; each triangle keeps its corners'

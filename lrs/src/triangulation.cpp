@@ -109,6 +109,10 @@ CubicGraph Triangulation::dual_graph() const& {
 }
 
 CubicGraph Triangulation::dual_graph() && {
+  // `= {}` would keep the buffers (assignment from an initializer list).
+  out_ = HugeVector<Halfedge>();
+  degree_ = HugeVector<std::uint32_t>();
+  edge_alive_ = HugeVector<std::uint8_t>();
   return dual_graph_from_faces(std::move(face_));
 }
 

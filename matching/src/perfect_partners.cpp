@@ -1,5 +1,8 @@
 #include "petersen/matching/perfect_partners.hpp"
 
+#include <stdexcept>
+#include <string>
+
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
 #include "stopwatch.hpp"
@@ -23,6 +26,32 @@ PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOption
   result.stats.blossoms = augmented.blossoms;
   result.stats.nodes_labelled = augmented.nodes_labelled;
   return result;
+}
+
+AugmentStats augment_partners(std::span<const NodeId> rows, std::span<NodeId> partner,
+                              Augment variant) {
+  NeighbourTable table(rows);
+  const NodeId n = table.node_count();
+  if (partner.size() != n) {
+    throw std::invalid_argument("augment_partners: " + std::to_string(partner.size()) +
+                                " partners for " + std::to_string(n) + " nodes");
+  }
+  for (NodeId v = 0; v < n; ++v) {
+    const NodeId p = partner[v];
+    int i = -1;
+    if (p != kNoNode) {
+      const auto row = table.neighbours(v);
+      i = row[0] == p ? 0 : row[1] == p ? 1 : row[2] == p ? 2 : -1;
+      if (i < 0 || p >= n || partner[p] != v) {
+        throw std::invalid_argument("augment_partners: node " + std::to_string(v) + "'s partner " +
+                                    std::to_string(p) + " is not a neighbour that names it back");
+      }
+    }
+    table.start_search(v, i);
+  }
+  const AugmentStats stats = augment_on_rows(table, variant);
+  for (NodeId v = 0; v < n; ++v) partner[v] = table.slot(v).mate;
+  return stats;
 }
 
 }  // namespace petersen

@@ -6,6 +6,7 @@
 
 #include "component_forest.hpp"
 #include "lap_clock.hpp"
+#include "pair_whole_mesh_by_lrs.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/graph/parallel.hpp"
 #include "petersen/lrs/lrs.hpp"
@@ -321,10 +322,30 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
       options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
   const bool quality = options.objective == Objective::quality;
   // lrs flips edges, making quads the threshold never judged: with one, ps does its work.
-  const bool use_lrs =
-      options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
+  bool use_lrs = options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
   const HugeVector<Cost> costs = quality ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();
+
+  // lrs on a whole closed mesh (the common case) builds its triangulation from the graph itself.
+  if (use_lrs && graph.cubic && graph.inconsistent_edges == 0 && mesh.all_triangles() &&
+      !mesh.attributes.has_corner_attributes() && !mesh.attributes.has_face_attributes() &&
+      ComponentForest(n, graph.edge_ends).root_count() == 1) {
+    stats.components = stats.closed_components = 1;
+    try {
+      pair_whole_mesh_by_lrs(graph, mesh, options, pairing, stats, clock);
+      stats.maximum_certified = true;
+      return pairing;
+    } catch (const MeshError& e) {
+      // A pinched vertex: ps pairs the mesh instead, on the graph made again. No cut touched this
+      // mesh (every side of every triangle is pairable), so it is the graph built before.
+      stats.lrs_fallback_components = 1;
+      stats.lrs_fallback_reason = e.what();
+      PairableGraph again = build_pairable_graph(mesh, {}, options.threads);
+      graph.node_edges = std::move(again.node_edges);
+      graph.edge_ends = std::move(again.edge_ends);
+      use_lrs = false;
+    }
+  }
 
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.

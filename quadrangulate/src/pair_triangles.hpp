@@ -20,7 +20,7 @@ struct LrsQuad {
 struct TrianglePairing {
   /// Per node: its partner node, kNoNode when unpaired, kLrsNode when lrs paired it (lrs_quads).
   HugeVector<NodeId> partner;
-  std::vector<LrsQuad> lrs_quads;
+  HugeVector<LrsQuad> lrs_quads;     ///< on huge pages: they reuse what the pairing freed
   std::vector<NodeId> tutte_set;     ///< nodes; see QuadResult::tutte_set
   std::int64_t objective_units = 0;  ///< Objective::quality: the certified total, scaled costs
 };

@@ -16,7 +16,9 @@
 #include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/contraction_step.hpp"
+#include "petersen/lrs/dual_rows.hpp"
 #include "petersen/matching/augment.hpp"
+#include "petersen/matching/perfect_partners.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
@@ -35,8 +37,8 @@ std::vector<std::pair<VertexId, VertexId>> edge_set(const TriangleMesh& mesh) {
   return edges;
 }
 
-void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
-  Triangulation tri = Triangulation::from_mesh(mesh);
+// `tri` is the triangulation of `mesh`, from from_mesh or from_dual.
+void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t genus) {
   const std::uint32_t vertices = tri.live_vertices(), faces = tri.live_faces();
   const ContractionResult contraction = contract_to_irreducible(tri);
   const std::uint32_t irreducible_faces = tri.live_faces();
@@ -73,15 +75,39 @@ void check_expansion(const TriangleMesh& mesh, std::uint32_t genus) {
   if (genus == 0) RC_ASSERT(matching.unmatched_count() == 4u);
   if (genus > 0) RC_ASSERT(matching.unmatched_count() <= 56 * genus - 12);
 
+  // The lean form of the same: K's dual as rows, M as partners, K's triangles.
+  ExpansionResult states = expansion;
+  DualRows rows = into_dual_rows(std::move(tri), std::move(states));
+  RC_ASSERT(rows.unpaired == matching.unmatched_count());
+  RC_ASSERT(rows.triangles.size() == k.triangles.size());
+  for (NodeId f = 0; f < dual.node_count(); ++f) {
+    RC_ASSERT(rows.triangles[f] == k.triangles[f]);
+    for (int i = 0; i < 3; ++i) {
+      RC_ASSERT(rows.rows[3 * f + i] == dual.other_end(dual.incident_edges(f)[i], f));
+    }
+    const EdgeId mate = matching.mate_edge[f];
+    RC_ASSERT(rows.partner[f] == (mate == kNoEdge ? kNoNode : dual.other_end(mate, f)));
+  }
+
   augment_matching(dual, matching);
   RC_ASSERT(verify_perfect_matching(dual, matching).ok());
   RC_ASSERT(check_quad_mesh(mesh, quads_from_matching(k, dual, matching)).ok());
+  augment_partners(rows.rows, rows.partner);
+  RC_ASSERT(verify_perfect_partners(rows.rows, rows.partner).ok());
 }
 
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
   const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
-  check_expansion(mesh, genus);
+  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+}
+
+// The same steps on the triangulation built from the dual (numbered spatially, as the quad front
+// door builds it): the same guarantees.
+RC_GTEST_PROP(ExpansionStep, FromTheDualOfRandomClosedSurfaces, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
 RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
@@ -90,7 +116,10 @@ RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
   spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.dents = *rc::gen::arbitrary<bool>();
-  check_expansion(voxel_plate(spec), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+  const TriangleMesh mesh = voxel_plate(spec);
+  const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
+  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+  check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
 TEST(ExpansionStep, OctahedronLeavesTheFourTetrahedronFaces) {

@@ -82,6 +82,82 @@ TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
                MeshError);
 }
 
+// From the dual: the same surface as from_mesh, numbered spatially, every vertex once.
+RC_GTEST_PROP(Triangulation, FromDualKeepsTheSurface, ()) {
+  const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
+  const TriangleMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                  *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                  *rc::gen::arbitrary<std::uint64_t>());
+  const Triangulation tri = testing::from_dual_of(mesh);
+  const Triangulation reference = Triangulation::from_mesh(mesh);
+  RC_ASSERT(tri.check() == "");
+  RC_ASSERT(tri.genus() == genus);
+  RC_ASSERT(tri.live_vertices() == reference.live_vertices());
+  RC_ASSERT(tri.live_edges() == reference.live_edges());
+  RC_ASSERT(tri.live_faces() == reference.live_faces());
+  RC_ASSERT(oriented_faces(tri.to_mesh(mesh.positions)) == oriented_faces(mesh));
+  std::vector<VertexId> input(mesh.positions.size());
+  for (VertexId v = 0; v < input.size(); ++v) input[v] = tri.input_vertex(v);
+  std::sort(input.begin(), input.end());
+  for (VertexId v = 0; v < input.size(); ++v) RC_ASSERT(input[v] == v);
+}
+
+TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
+  const auto message = [](const TriangleMesh& mesh, std::span<const VertexId> corners,
+                          const CubicGraph& dual) -> std::string {
+    try {
+      Triangulation::from_dual(mesh.positions, corners,
+                               {dual.node_edges().begin(), dual.node_edges().end()},
+                               {dual.edge_ends().begin(), dual.edge_ends().end()});
+    } catch (const MeshError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  // Two tetrahedra apart.
+  TriangleMesh two = testing::mesh_of(
+      8, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {4, 6, 5}, {4, 5, 7}, {5, 6, 7}, {4, 7, 6}});
+  EXPECT_EQ(message(two, testing::flat_corners(two), build_dual(two).graph),
+            "2 components (triangles joined through edges)");
+  // A cylinder of 2 x 4 squares whose end circles are closed by cones with one apex, vertex 12:
+  // connected through edges, but 12 has two fans.
+  TriangleMesh pinched;
+  for (VertexId v = 0; v < 13; ++v) pinched.positions.push_back({double(v), 0, 0});
+  for (VertexId row = 0; row < 2; ++row) {
+    for (VertexId i = 0; i < 4; ++i) {
+      const VertexId a = 4 * row + i, b = 4 * row + (i + 1) % 4, c = a + 4, d = b + 4;
+      pinched.triangles.push_back({a, b, d});
+      pinched.triangles.push_back({a, d, c});
+    }
+  }
+  for (VertexId i = 0; i < 4; ++i) {
+    pinched.triangles.push_back({(i + 1) % 4, i, 12});
+    pinched.triangles.push_back({8 + i, 8 + (i + 1) % 4, 12});
+  }
+  EXPECT_EQ(message(pinched, testing::flat_corners(pinched), build_dual(pinched).graph),
+            "pinched vertex 12 (its triangles form more than one fan)");
+  // Triangle 0 of the tetrahedron turned over, its slots turned with it: the dual's arrays still
+  // fit the triangles, but the two triangles of its edges run along them the same way.
+  const TriangleMesh tetrahedron = testing::tetrahedron();
+  const CubicGraph dual = build_dual(tetrahedron).graph;
+  std::vector<VertexId> corners = testing::flat_corners(tetrahedron);
+  std::swap(corners[1], corners[2]);
+  HugeVector<EdgeId> slots(dual.node_edges().begin(), dual.node_edges().end());
+  std::swap(slots[0], slots[2]);
+  EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, std::move(slots),
+                                        {dual.edge_ends().begin(), dual.edge_ends().end()}),
+               MeshError);
+  // Arrays of the wrong sizes, and an edge that is no side of its triangle.
+  EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, {}, {}),
+               std::invalid_argument);
+  HugeVector<NodeId> ends(dual.edge_ends().begin(), dual.edge_ends().end());
+  std::swap(ends[0], ends[3]);  // edge 0's first triangle no longer has it
+  EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, testing::flat_corners(tetrahedron),
+                                        {dual.node_edges().begin(), dual.node_edges().end()},
+                                        std::move(ends)),
+               std::invalid_argument);
+}
+
 TEST(Triangulation, RefusesPinchedVertexAndOpenSurface) {
   // Two tetrahedra sharing vertex 0: closed, but 0's link is two cycles.
   TriangleMesh pinched = testing::mesh_of(

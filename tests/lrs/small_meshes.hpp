@@ -5,6 +5,7 @@
 #include <array>
 #include <vector>
 
+#include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/mesh.hpp"
 #include "petersen/lrs/triangulation.hpp"
 
@@ -31,6 +32,22 @@ inline TriangleMesh octahedron() {
 /// and separates 2 from 4.
 inline TriangleMesh stacked_tetrahedron() {
   return mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}, {1, 3, 4}, {3, 0, 4}});
+}
+
+/// The mesh's corners, three per triangle, as PolygonMesh keeps them.
+inline std::vector<VertexId> flat_corners(const TriangleMesh& mesh) {
+  std::vector<VertexId> corners;
+  for (const auto& t : mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
+  return corners;
+}
+
+/// Triangulation::from_dual on the mesh's build_dual graph (copies of its arrays).
+inline Triangulation from_dual_of(const TriangleMesh& mesh) {
+  const CubicGraph dual = build_dual(mesh).graph;
+  const std::span<const EdgeId> slots = dual.node_edges();
+  const std::span<const NodeId> ends = dual.edge_ends();
+  return Triangulation::from_dual(mesh.positions, flat_corners(mesh), {slots.begin(), slots.end()},
+                                  {ends.begin(), ends.end()});
 }
 
 /// The oriented faces as vertex triples rotated to start at their smallest vertex, sorted.

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <random>
+
 #include "petersen/graph/generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
@@ -35,6 +38,49 @@ RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsPsDoes, ()) {
     RC_ASSERT(lean.stats.blossoms == full.stats.blossoms);
     RC_ASSERT(lean.stats.nodes_labelled == full.stats.nodes_labelled);
   }
+}
+
+// From a partial pairing (a greedy pass over edges in a random order), the same searches as
+// augment_matching on the graph: the same pairs and counters.
+RC_GTEST_PROP(AugmentPartners, GrowsAPairingAsAugmentMatchingDoes, ()) {
+  const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
+  const HugeVector<NodeId> rows = rows_of(g);
+  std::vector<EdgeId> order(g.edge_count());
+  for (EdgeId e = 0; e < order.size(); ++e) order[e] = e;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(*rc::gen::arbitrary<std::uint64_t>()));
+  for (Augment augment : {Augment::local, Augment::faithful}) {
+    Matching matching;
+    matching.mate_edge.assign(g.node_count(), kNoEdge);
+    HugeVector<NodeId> partner(g.node_count(), kNoNode);
+    for (EdgeId e : order) {
+      const auto [a, b] = g.endpoints(e);
+      if (matching.mate_edge[a] != kNoEdge || matching.mate_edge[b] != kNoEdge) continue;
+      matching.mate_edge[a] = matching.mate_edge[b] = e;
+      partner[a] = b;
+      partner[b] = a;
+    }
+    const AugmentStats full = augment_matching(g, matching, augment);
+    const AugmentStats lean = augment_partners(rows, partner, augment);
+    RC_ASSERT(verify_perfect_partners(rows, partner).ok());
+    for (NodeId v = 0; v < g.node_count(); ++v)
+      RC_ASSERT(partner[v] == g.other_end(matching.mate_edge[v], v));
+    RC_ASSERT(lean.augmenting_paths == full.augmenting_paths);
+    RC_ASSERT(lean.blossoms == full.blossoms);
+    RC_ASSERT(lean.nodes_labelled == full.nodes_labelled);
+  }
+}
+
+TEST(AugmentPartners, RefusesAPartnerThatIsNoNeighbourOrDoesNotNameItBack) {
+  const HugeVector<NodeId> prism_rows = rows_of(prism(3));  // 0-1-2 and 3-4-5, i joined to i+3
+  std::vector<NodeId> not_adjacent{4, kNoNode, kNoNode, kNoNode, 0, kNoNode};
+  EXPECT_THROW(augment_partners(prism_rows, not_adjacent), std::invalid_argument);
+  std::vector<NodeId> one_way{1, 2, kNoNode, kNoNode, kNoNode, kNoNode};
+  EXPECT_THROW(augment_partners(prism_rows, one_way), std::invalid_argument);
+  std::vector<NodeId> short_list{1, 0};
+  EXPECT_THROW(augment_partners(prism_rows, short_list), std::invalid_argument);
+  std::vector<NodeId> from_nothing(6, kNoNode);
+  augment_partners(prism_rows, from_nothing);
+  EXPECT_TRUE(verify_perfect_partners(prism_rows, from_nothing).ok());
 }
 
 TEST(PerfectPartners, MatchesLargeRandomGraphsPerfectly) {

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <cmath>
+
 #include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
@@ -141,6 +143,50 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
   }
   // The minimal projective plane has 10 triangles; every one is paired.
   EXPECT_EQ(quadrangulate(projective_plane(0)).stats.pairs, 5u);
+}
+
+// A whole closed mesh whose pairable graph is its dual goes to lrs on that graph; one with a
+// pinched vertex (a cylinder of 2 x 4 squares whose end circles are closed by cones with one apex,
+// vertex 12) is refused there and paired by ps on the graph made again: the same quads as ps.
+TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToPs) {
+  std::vector<std::array<double, 3>> positions;
+  for (VertexId row = 0; row < 3; ++row) {
+    for (VertexId i = 0; i < 4; ++i) {
+      positions.push_back({std::cos(i * M_PI / 2), std::sin(i * M_PI / 2), double(row)});
+    }
+  }
+  positions.push_back({0, 0, 1});
+  std::vector<std::vector<VertexId>> faces;
+  for (VertexId row = 0; row < 2; ++row) {
+    for (VertexId i = 0; i < 4; ++i) {
+      const VertexId a = 4 * row + i, b = 4 * row + (i + 1) % 4, c = a + 4, d = b + 4;
+      faces.push_back({a, b, d});
+      faces.push_back({a, d, c});
+    }
+  }
+  for (VertexId i = 0; i < 4; ++i) {
+    faces.push_back({(i + 1) % 4, i, 12});
+    faces.push_back({8 + i, 8 + (i + 1) % 4, 12});
+  }
+  const PolygonMesh pinched = mesh_of(positions, faces);
+  const QuadResult lrs = quadrangulate(pinched, {.algorithm = Algorithm::lrs});
+  const QuadResult ps = quadrangulate(pinched, {.algorithm = Algorithm::ps});
+  EXPECT_EQ(lrs.stats.lrs_fallback_components, 1u);
+  EXPECT_EQ(lrs.stats.lrs_fallback_reason,
+            "pinched vertex 12 (its triangles form more than one fan)");
+  EXPECT_EQ(lrs.stats.pairs, 12u);
+  EXPECT_EQ(lrs.mesh.corners, ps.mesh.corners);
+  EXPECT_EQ(lrs.sources, ps.sources);
+  EXPECT_EQ(check_quad_result(pinched, lrs, false, true), "");
+  // Without the pinch (vertex 12 split into one apex per cone) lrs pairs it, with flips allowed.
+  positions.push_back({0, 0, 1.5});
+  for (VertexId i = 0; i < 4; ++i) faces[16 + 2 * i + 1][2] = 13;
+  const PolygonMesh sphere = mesh_of(positions, faces);
+  const QuadResult split = quadrangulate(sphere, {.algorithm = Algorithm::lrs});
+  EXPECT_EQ(split.stats.lrs_fallback_components, 0u);
+  EXPECT_EQ(split.stats.pairs, 12u);
+  EXPECT_EQ(split.stats.irreducible_vertices, 4u);
+  EXPECT_EQ(check_quad_result(sphere, split, false, true), "");
 }
 
 // Each extra cut on two triangles that would otherwise pair: the square (0, 1, 2, 3) cut along

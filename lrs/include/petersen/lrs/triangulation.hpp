@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,10 +22,13 @@ using Halfedge = std::uint32_t;
 inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
 
 class Triangulation;
+struct DualRows;
+struct ExpansionResult;
 struct ContractionRecord;
 ContractionRecord contract(Triangulation& tri, Halfedge h);
 void split(Triangulation& tri, const ContractionRecord& record);
 void flip(Triangulation& tri, Halfedge h);
+DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 /// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
 /// origin, the next halfedge of its face (counter-clockwise) and its face; each vertex one
@@ -48,6 +52,22 @@ class Triangulation {
   /// are refused). Unreferenced vertices are dead from the start. O(F log d).
   static Triangulation from_mesh(const TriangleMesh& mesh,
                                  Numbering numbering = Numbering::as_given);
+
+  /// Builds the triangulation of a closed, connected, consistently oriented triangle mesh from its
+  /// dual, taking the dual's arrays over instead of grouping the mesh's halfedges again: triangle t
+  /// has corners corners[3t], corners[3t + 1], corners[3t + 2] over `positions`;
+  /// node_edges[3t + k] is the edge across its corners k and k + 1, and edge e joins triangles
+  /// edge_ends[2e] and edge_ends[2e + 1] (a PairableGraph with `cubic` set and no inconsistent
+  /// edge, or build_dual's graph). Numbered spatially: vertices by Morton cell, edges by their
+  /// smaller vertex, faces in order of their smallest halfedge; input_vertex() gives the mesh's
+  /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
+  /// form several fans) or orientation is inconsistent around it, and when the triangles form
+  /// several components; std::invalid_argument when the arrays are not a dual of the triangles.
+  /// Each array is freed once the next is made: at most about 44 bytes per triangle at a time
+  /// (the slots or the faces, the links, the vertex arrays), where from_mesh holds two copies of
+  /// the mesh, its own dual and the surface check's scratch. O(V + F).
+  static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
+                                 HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
 
   /// The input mesh's id of vertex v.
   VertexId input_vertex(VertexId v) const { return input_vertex_.empty() ? v : input_vertex_[v]; }
@@ -107,7 +127,8 @@ class Triangulation {
   /// Throws std::logic_error if a face is dead. O(F).
   CubicGraph dual_graph() const&;
   /// The same, handing over the per-halfedge face array as the dual's edge ends instead of copying
-  /// it (16.5 MB on armadillo-sub2): the triangulation is left without faces.
+  /// it (16.5 MB on armadillo-sub2), and freeing the per-vertex and per-edge arrays first: the
+  /// triangulation is left with its links (origin, next, apex, rotate_cw) and input_vertex only.
   CubicGraph dual_graph() &&;
 
   /// Checks the structure: next cycles of length 3 with one face id, origins consistent with
@@ -119,6 +140,7 @@ class Triangulation {
   friend ContractionRecord contract(Triangulation&, Halfedge);
   friend void split(Triangulation&, const ContractionRecord&);
   friend void flip(Triangulation&, Halfedge);
+  friend DualRows into_dual_rows(Triangulation&&, ExpansionResult&&);
 
   // from_mesh after the surface check.
   static Triangulation build(const TriangleMesh& mesh);

@@ -5,6 +5,7 @@
 #include <span>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/matching/augment.hpp"
 #include "petersen/matching/options.hpp"
 
 namespace petersen {
@@ -31,5 +32,16 @@ struct PartnerResult {
 /// answer with verify_perfect_partners. Θ(n) for PS; the augmentation's cost follows the regions
 /// its searches explore.
 PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options = {});
+
+/// Tarjan's augmenting paths (augment_matching's, the same searches) from a pairing the caller
+/// already has, on neighbour rows: grows `partner` (partner[v] one of v's neighbours that names v
+/// back, or kNoNode) to a maximum matching, perfect on a cubic bridgeless graph. Holds the search
+/// state only (16 bytes per node) beside the caller's rows and partners, where augment_matching
+/// holds a CubicGraph (24), its table (28) and mate edges (4): what lets quadrangulate's lrs
+/// augment K's pairing within its budget. Throws std::invalid_argument naming the node when a
+/// partner is not a neighbour or does not name it back. Check the answer with
+/// verify_perfect_partners.
+AugmentStats augment_partners(std::span<const NodeId> rows, std::span<NodeId> partner,
+                              Augment variant = Augment::local);
 
 }  // namespace petersen

@@ -1,0 +1,112 @@
+#include "pair_whole_mesh_by_lrs.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "petersen/lrs/contraction_step.hpp"
+#include "petersen/lrs/dual_rows.hpp"
+#include "petersen/matching/perfect_partners.hpp"
+
+namespace petersen::quad_detail {
+
+namespace {
+
+// The input's triangles bucketed by their smallest corner (a counting sort), to find the one with
+// a given vertex set: a triangle of K that no flip made is one of them. The buckets hold a few
+// triangles each.
+class TrianglesByCorner {
+ public:
+  explicit TrianglesByCorner(const PolygonMesh& mesh)
+      : mesh_(mesh), start_(mesh.positions.size() + 1, 0), face_(mesh.face_count()) {
+    const auto faces = static_cast<FaceId>(mesh.face_count());
+    for (FaceId t = 0; t < faces; ++t) ++start_[smallest(mesh.face(t)) + 1];
+    for (std::size_t v = 0; v + 1 < start_.size(); ++v) start_[v + 1] += start_[v];
+    for (FaceId t = 0; t < faces; ++t) face_[start_[smallest(mesh.face(t))]++] = t;
+    // Each start moved to the next bucket's: shifted back by one bucket.
+    for (std::size_t v = start_.size() - 1; v > 0; --v) start_[v] = start_[v - 1];
+    start_[0] = 0;
+  }
+
+  /// The input triangle with corners {a, b, c}, or kNoFace.
+  FaceId find(VertexId a, VertexId b, VertexId c) const {
+    const VertexId low = std::min({a, b, c});
+    for (std::uint32_t j = start_[low]; j < start_[low + 1]; ++j) {
+      const auto t = mesh_.face(face_[j]);
+      const auto has = [&](VertexId v) { return v == t[0] || v == t[1] || v == t[2]; };
+      if (has(a) && has(b) && has(c)) return face_[j];
+    }
+    return kNoFace;
+  }
+
+ private:
+  static VertexId smallest(std::span<const VertexId> t) { return std::min({t[0], t[1], t[2]}); }
+
+  const PolygonMesh& mesh_;
+  HugeVector<std::uint32_t> start_;
+  HugeVector<FaceId> face_;
+};
+
+}  // namespace
+
+void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
+                            const QuadOptions& options, TrianglePairing& pairing, QuadStats& stats,
+                            LapClock& clock) {
+  lrs::Triangulation tri = lrs::Triangulation::from_dual(
+      mesh.positions, mesh.corners, std::move(graph.node_edges), std::move(graph.edge_ends));
+  stats.dual_seconds += clock.lap();
+
+  // The contraction's stack dies once the expansion has undone it; K then becomes its dual's
+  // rows, M's partners and its triangles, the triangulation freed on the way.
+  lrs::ExpansionResult expansion;
+  {
+    const lrs::ContractionResult contraction = lrs::contract_to_irreducible(tri);
+    stats.irreducible_vertices += tri.live_vertices();
+    expansion = lrs::expand_and_match(tri, contraction.stack);
+  }
+  stats.flipped_edges += expansion.flipped_edges;
+  lrs::DualRows k = lrs::into_dual_rows(std::move(tri), std::move(expansion));
+  stats.matching.unpaired_after_initial += k.unpaired;
+  stats.matching.initial_seconds += clock.lap();
+
+  stats.matching.augmenting_paths +=
+      augment_partners(k.rows, k.partner, options.augment).augmenting_paths;
+  stats.matching.augment_seconds += clock.lap();
+  if (MatchingCheck check = verify_perfect_partners(k.rows, k.partner); !check.ok()) {
+    throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +
+                           check.message);
+  }
+  stats.verify_seconds += clock.lap();
+
+  // A pair's quad: its first triangle turned so that side 0 faces the second (the rows name the
+  // side), then the rows freed before the quads' list is made beside the triangles.
+  const auto faces = static_cast<FaceId>(k.triangles.size());
+  for (FaceId f = 0; f < faces; ++f) {
+    const NodeId g = k.partner[f];
+    if (g < f) continue;
+    const NodeId* row = k.rows.data() + 3 * std::size_t{f};
+    auto& t = k.triangles[f];
+    if (row[1] == g) {
+      t = {t[1], t[2], t[0]};
+    } else if (row[2] == g) {
+      t = {t[2], t[0], t[1]};
+    }
+  }
+  k.rows = HugeVector<NodeId>();
+  const TrianglesByCorner input(mesh);
+  pairing.lrs_quads.reserve(mesh.face_count() / 2);
+  for (FaceId f = 0; f < faces; ++f) {
+    const NodeId g = k.partner[f];
+    if (g < f) continue;
+    // Triangle (a, b, c) runs a -> b along the shared side, its partner b -> a with apex d: the
+    // quad (a, d, b, c) keeps their orientation.
+    const auto [a, b, c] = k.triangles[f];
+    const auto& u = k.triangles[g];
+    const VertexId d = u[0] != a && u[0] != b ? u[0] : u[1] != a && u[1] != b ? u[1] : u[2];
+    pairing.lrs_quads.push_back({{a, d, b, c}, {input.find(a, b, c), input.find(b, a, d)}});
+  }
+  k = lrs::DualRows();
+  pairing.partner.assign(graph.node_count, kLrsNode);
+  stats.dual_seconds += clock.lap();
+}
+
+}  // namespace petersen::quad_detail
