@@ -20,7 +20,8 @@ constexpr int kSampleSize = 8;   // non-tree edges tried before a search raises 
 // Makes room for index `i` in the block (base, capacity) of a pool, moving it to the end.
 void reserve_block(std::vector<std::uint32_t>& pool, std::uint32_t& base, std::uint32_t& capacity,
                    std::uint32_t i) {
-  if (i < capacity) return;
+  if (i < capacity) [[likely]]
+    return;
   const std::uint32_t grown = std::max(i + 1, 2 * capacity);
   const auto fresh = static_cast<std::uint32_t>(pool.size());
   pool.resize(pool.size() + grown, kNone);
@@ -37,14 +38,11 @@ DynamicConnectivity::DynamicConnectivity(std::uint32_t node_count, std::uint32_t
       state_(edge_capacity, State::absent),
       next_(2 * std::size_t{edge_capacity}, kNone),
       prev_(2 * std::size_t{edge_capacity}, kNone),
-      vertex_block_(node_count, 0),
-      vertex_capacity_(node_count, 0),
-      arc_block_(edge_capacity, 0),
-      arc_capacity_(edge_capacity, 0) {
+      vertex_block_(node_count),
+      arc_block_(edge_capacity) {
   for (NodeId v = 0; v < node_count; ++v) {
     const EttNode x = ett_->make_vertex(v);  // node v: see vertex_node
-    vertex_block_[v] = static_cast<std::uint32_t>(pool_.size());
-    vertex_capacity_[v] = 1;
+    vertex_block_[v] = {static_cast<std::uint32_t>(pool_.size()), 1};
     pool_.push_back(x);
   }
   head_.resize(node_count, kNone);
@@ -58,17 +56,19 @@ std::uint32_t DynamicConnectivity::vertex_node(NodeId v, int level) {
   // The constructor makes the level-0 nodes first, in vertex order, so v's is node v: connected()
   // and every level-0 update skip the pool's two dependent loads.
   if (level == 0) return v;
-  reserve_block(pool_, vertex_block_[v], vertex_capacity_[v], static_cast<std::uint32_t>(level));
-  if (const std::uint32_t x = pool_[vertex_block_[v] + level]; x != kNone) return x;
+  Block& block = vertex_block_[v];
+  reserve_block(pool_, block.base, block.capacity, static_cast<std::uint32_t>(level));
+  if (const std::uint32_t x = pool_[block.base + level]; x != kNone) return x;
   const EttNode x = ett_->make_vertex(v);
-  pool_[vertex_block_[v] + level] = x;
+  pool_[vertex_block_[v].base + level] = x;
   if (head_.size() <= x) head_.resize(std::size_t{x} + 1, kNone);
   return x;
 }
 
 std::uint32_t& DynamicConnectivity::arc(EdgeId e, int level, int direction) {
-  reserve_block(pool_, arc_block_[e], arc_capacity_[e], static_cast<std::uint32_t>(2 * level + 1));
-  return pool_[arc_block_[e] + 2 * level + direction];
+  Block& block = arc_block_[e];
+  reserve_block(pool_, block.base, block.capacity, static_cast<std::uint32_t>(2 * level + 1));
+  return pool_[block.base + 2 * level + direction];
 }
 
 void DynamicConnectivity::link_tree_edge(EdgeId e, int level) {

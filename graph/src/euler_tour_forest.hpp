@@ -63,7 +63,7 @@ class EulerTourForest {
   EttNode join(EttNode a, EttNode b);  // roots (or kNoEtt) of two sequences; returns the root
   EttNode detach_left(EttNode x);      // x must be a root; returns its old left subtree's root
   EttNode detach_right(EttNode x);
-  EttNode reroot(EttNode x);  // the tour starting at x; returns the new root
+  EttNode reroot(EttNode x);  // the tour starting at x, x the root with no left subtree; returns x
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> owner_;
