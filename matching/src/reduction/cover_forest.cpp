@@ -124,11 +124,19 @@ void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
   root_ = kNil;
 }
 
-void CoverForest::cut_above(EdgeId e) {
+void CoverForest::cut_below_root(EdgeId e) {
+  // e's node m is a child of the root r. Either m shares r's preferred path, which starts at r:
+  // after splaying m, r alone is left of it; or m tops its own path, whose path parent r is then
+  // held by m as its splay root. An access (splaying r, switching r's path, splaying m again)
+  // is not needed for either.
   const std::uint32_t m = edge_node(e);
-  access(m);
-  set_parent(nodes_[m].child[0], kNil);
-  nodes_[m].child[0] = kNil;
+  splay(m);
+  if (const std::uint32_t above = nodes_[m].child[0]; above != kNil) {
+    set_parent(above, kNil);
+    nodes_[m].child[0] = kNil;
+  } else {
+    set_parent(m, kNil);
+  }
 }
 
 NodeId CoverForest::lca(NodeId a, NodeId b) {

@@ -29,10 +29,10 @@ class CoverForest {
   /// the tree path between a and b; that path's other edges and in are labelled out (out's
   /// fundamental cycle after the swap). Two accesses.
   void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
-  /// Cuts tree edge e from its end nearer the root, which stays in e's tree no longer: e's node
+  /// Cuts tree edge e from its end that is its tree's root (the node last everted): e's node
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
-  /// never read again).
-  void cut_above(EdgeId e);
+  /// never read again). One splay, no access.
+  void cut_below_root(EdgeId e);
   /// Makes a the root of its tree; free when a is the node last everted and no link or swap came
   /// since.
   void evert(NodeId a);
