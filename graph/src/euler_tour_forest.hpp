@@ -19,6 +19,11 @@ class EulerTourForest {
   /// A new arc node, not yet in any tree (reuses freed arcs). O(1).
   EttNode make_arc(std::uint32_t owner);
   void free_arc(EttNode a) { free_.push_back(a); }
+  /// Room for `nodes` vertex and arc nodes in all, so that making them moves nothing.
+  void reserve(std::size_t nodes) {
+    nodes_.reserve(nodes);
+    owner_.reserve(nodes);
+  }
 
   std::uint32_t owner(EttNode x) const { return owner_[x]; }
   /// The splay root of x's tree (x is splayed to it): a handle comparable while nothing changes.

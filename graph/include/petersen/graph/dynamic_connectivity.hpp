@@ -2,6 +2,7 @@
 // Fully dynamic connectivity (Holm, de Lichtenberg and Thorup, J. ACM 48, 2001): a spanning forest
 // kept under edge insertions and deletions, O(log^2 n) amortized per update, O(log n) per query.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -78,6 +79,9 @@ class DynamicConnectivity {
   };
   std::vector<Block> vertex_block_, arc_block_;
   std::vector<std::uint32_t> pool_;
+  std::array<std::vector<std::uint32_t>, 32> free_blocks_;  // bases of free blocks of size 2^i
+  void reserve_block(Block& block, std::uint32_t i);  // room for index i, moving the block if not
+  void release_block(Block& block);
   std::uint64_t replacement_searches_ = 0;
 };
 
