@@ -272,7 +272,10 @@ EdgeId DynamicConnectivity::replace(NodeId u, NodeId v, int level) {
     }
   }
   // The smaller tree's tree edges of this level rise one level (it is at most half as large).
-  for (EttNode a; (a = ett_->find_flagged(ett_->root(small), kTreeFlag)) != kNoEtt;) {
+  // Raising one changes only the forest a level up, so the arc just found and unflagged is still
+  // its tree's splay root and the next search starts there: splaying `small` back up before
+  // each search was 2.8 % of ds's instructions (Callgrind, armadillo's dual).
+  for (EttNode a, r = ett_->root(small); (a = ett_->find_flagged(r, kTreeFlag)) != kNoEtt; r = a) {
     const EdgeId f = ett_->owner(a);
     ett_->set_flag(a, kTreeFlag, false);
     level_[f] = static_cast<std::uint8_t>(level + 1);
