@@ -89,6 +89,7 @@ std::uint32_t CoverForest::access(std::uint32_t x) {
     last = y;
   }
   splay(x);
+  accessed_ = x;
   return last;
 }
 
@@ -97,6 +98,7 @@ void CoverForest::evert(NodeId a) {
   access(a);
   nodes_[a].up ^= kReversed;
   root_ = a;
+  accessed_ = kNil;  // the path from the root to a is a alone now
 }
 
 void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
@@ -105,7 +107,7 @@ void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
   access(a);
   nodes_[a].up ^= kReversed;  // a is the root of its tree, and alone in its splay tree
   set_parent(a, m);           // a's tree below m
-  root_ = kNil;
+  root_ = accessed_ = kNil;
 }
 
 void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
@@ -121,7 +123,7 @@ void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
   set_parent(nodes_[m].child[1], kNil);
   nodes_[m].child[0] = nodes_[m].child[1] = kNil;
   nodes_[edge_node(in)] = Node{{kNil, kNil}, b, out};
-  root_ = kNil;
+  root_ = accessed_ = kNil;
 }
 
 void CoverForest::cut_below_root(EdgeId e) {
@@ -137,6 +139,22 @@ void CoverForest::cut_below_root(EdgeId e) {
   } else {
     set_parent(m, kNil);
   }
+  accessed_ = kNil;
+}
+
+EdgeId CoverForest::parent_edge(NodeId x) {
+  // After the access, the path from the root to x is x's splay tree, x at its root: the parent
+  // edge's node is x's predecessor on it, the last node of x's left subtree. Splaying it pays
+  // for the walk down.
+  access(x);
+  std::uint32_t y = nodes_[x].child[0];
+  push(y);
+  while (nodes_[y].child[1] != kNil) {
+    y = nodes_[y].child[1];
+    push(y);
+  }
+  splay(y);
+  return y - base_;
 }
 
 NodeId CoverForest::lca(NodeId a, NodeId b) {
@@ -148,9 +166,18 @@ NodeId CoverForest::lca_after(NodeId b) {
   return access(b);
 }
 
+bool CoverForest::on_root_path(NodeId x) {
+  // Only the preferred path from the root has no path parent above its splay tree.
+  splay(x);
+  return parent(x) == kNil;
+}
+
 void CoverForest::cover_path(NodeId a, NodeId b, EdgeId cover) {
   evert(a);
-  access(b);
+  if (accessed_ == b)
+    splay(b);  // b's splay tree holds the path from the root a to b, and no more
+  else
+    access(b);
   give_label(b, cover);
 }
 

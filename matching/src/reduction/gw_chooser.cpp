@@ -59,14 +59,10 @@ void GwChooser::remove(const ReductionGraph& graph, std::span<const EdgeId> edge
   // Stage 0: an edge between u and v in the tree.
   if (std::none_of(edges.begin(), edges.end(),
                    [&](EdgeId g) { return internal(g) && in_tree_[g]; })) {
+    // Rooted at v, u's parent edge is the attachment at u on T's u–v path (one access; asking
+    // each tree attachment at u whether it leads up took one lca, two accesses, each).
     forest_.evert(v);
-    for (EdgeId t : edges) {
-      if (internal(t) || !in_tree_[t] || !at_u(t)) continue;
-      if (forest_.lca(u, graph.other_end(t, u)) != u) {
-        swap(e, v, u, t);  // t leads from u toward the root v, which swap need not evert again
-        break;
-      }
-    }
+    swap(e, v, u, forest_.parent_edge(u));  // swap need not evert v again
   }
   // Stage 1: merge pieces while a tree attachment has a cover outside the step. When none is
   // left, each piece's tree attachment and its cover are the piece's two attachments.
@@ -108,12 +104,13 @@ bool GwChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
   }
   const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
   const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
-  // The ds rule: H2 exactly when the quartet is 13|24, i.e. rooted at x1, x3 joins x2 and x4
-  // where they meet x1 (l23 == l34) and x2 and x4 meet below that.
+  // The ds rule: H2 exactly when the quartet is 13|24. Rooted at x1, x2 and x4 meet at l24 and
+  // x3 joins x4's path at l34, both on the path from x4 up; 13|24 exactly when l24 lies strictly
+  // below l34, i.e. off the path from x1 to x3, which the last access left preferred: a splay
+  // tells, where a fourth access did. For H1, add() then labels that path without an access.
   forest_.evert(x1);
-  const NodeId l23 = forest_.lca(x2, x3), l34 = forest_.lca_after(x4);
-  if (l23 != l34) return true;
-  return forest_.lca_after(x2) == l23;
+  const NodeId l24 = forest_.lca(x2, x4), l34 = forest_.lca_after(x3);
+  return l24 == l34 || forest_.on_root_path(l24);
 }
 
 void GwChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {
