@@ -19,6 +19,11 @@ class EulerTourForest {
   /// A new arc node, not yet in any tree (reuses freed arcs). O(1).
   EttNode make_arc(std::uint32_t owner);
   void free_arc(EttNode a) { free_.push_back(a); }
+  /// Room for `nodes` vertex and arc nodes in all, so that making them moves nothing.
+  void reserve(std::size_t nodes) {
+    nodes_.reserve(nodes);
+    owner_.reserve(nodes);
+  }
 
   std::uint32_t owner(EttNode x) const { return owner_[x]; }
   /// The splay root of x's tree (x is splayed to it): a handle comparable while nothing changes.
@@ -63,7 +68,7 @@ class EulerTourForest {
   EttNode join(EttNode a, EttNode b);  // roots (or kNoEtt) of two sequences; returns the root
   EttNode detach_left(EttNode x);      // x must be a root; returns its old left subtree's root
   EttNode detach_right(EttNode x);
-  EttNode reroot(EttNode x);  // the tour starting at x; returns the new root
+  EttNode reroot(EttNode x);  // the tour starting at x, x the root with no left subtree; returns x
 
   std::vector<Node> nodes_;
   std::vector<std::uint32_t> owner_;

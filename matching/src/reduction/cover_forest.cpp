@@ -89,6 +89,7 @@ std::uint32_t CoverForest::access(std::uint32_t x) {
     last = y;
   }
   splay(x);
+  accessed_ = x;
   return last;
 }
 
@@ -97,6 +98,7 @@ void CoverForest::evert(NodeId a) {
   access(a);
   nodes_[a].up ^= kReversed;
   root_ = a;
+  accessed_ = kNil;  // the path from the root to a is a alone now
 }
 
 void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
@@ -105,7 +107,7 @@ void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
   access(a);
   nodes_[a].up ^= kReversed;  // a is the root of its tree, and alone in its splay tree
   set_parent(a, m);           // a's tree below m
-  root_ = kNil;
+  root_ = accessed_ = kNil;
 }
 
 void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
@@ -121,14 +123,38 @@ void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
   set_parent(nodes_[m].child[1], kNil);
   nodes_[m].child[0] = nodes_[m].child[1] = kNil;
   nodes_[edge_node(in)] = Node{{kNil, kNil}, b, out};
-  root_ = kNil;
+  root_ = accessed_ = kNil;
 }
 
-void CoverForest::cut_above(EdgeId e) {
+void CoverForest::cut_below_root(EdgeId e) {
+  // e's node m is a child of the root r. Either m shares r's preferred path, which starts at r:
+  // after splaying m, r alone is left of it; or m tops its own path, whose path parent r is then
+  // held by m as its splay root. An access (splaying r, switching r's path, splaying m again)
+  // is not needed for either.
   const std::uint32_t m = edge_node(e);
-  access(m);
-  set_parent(nodes_[m].child[0], kNil);
-  nodes_[m].child[0] = kNil;
+  splay(m);
+  if (const std::uint32_t above = nodes_[m].child[0]; above != kNil) {
+    set_parent(above, kNil);
+    nodes_[m].child[0] = kNil;
+  } else {
+    set_parent(m, kNil);
+  }
+  accessed_ = kNil;
+}
+
+EdgeId CoverForest::parent_edge(NodeId x) {
+  // After the access, the path from the root to x is x's splay tree, x at its root: the parent
+  // edge's node is x's predecessor on it, the last node of x's left subtree. Splaying it pays
+  // for the walk down.
+  access(x);
+  std::uint32_t y = nodes_[x].child[0];
+  push(y);
+  while (nodes_[y].child[1] != kNil) {
+    y = nodes_[y].child[1];
+    push(y);
+  }
+  splay(y);
+  return y - base_;
 }
 
 NodeId CoverForest::lca(NodeId a, NodeId b) {
@@ -140,9 +166,18 @@ NodeId CoverForest::lca_after(NodeId b) {
   return access(b);
 }
 
+bool CoverForest::on_root_path(NodeId x) {
+  // Only the preferred path from the root has no path parent above its splay tree.
+  splay(x);
+  return parent(x) == kNil;
+}
+
 void CoverForest::cover_path(NodeId a, NodeId b, EdgeId cover) {
   evert(a);
-  access(b);
+  if (accessed_ == b)
+    splay(b);  // b's splay tree holds the path from the root a to b, and no more
+  else
+    access(b);
   give_label(b, cover);
 }
 

@@ -29,18 +29,26 @@ class CoverForest {
   /// the tree path between a and b; that path's other edges and in are labelled out (out's
   /// fundamental cycle after the swap). Two accesses.
   void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
-  /// Cuts tree edge e from its end nearer the root, which stays in e's tree no longer: e's node
+  /// Cuts tree edge e from its end that is its tree's root (the node last everted): e's node
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
-  /// never read again).
-  void cut_above(EdgeId e);
+  /// never read again). One splay, no access.
+  void cut_below_root(EdgeId e);
   /// Makes a the root of its tree; free when a is the node last everted and no link or swap came
   /// since.
   void evert(NodeId a);
+  /// The tree edge from x to its parent under the current root (x must not be the root). One
+  /// access.
+  EdgeId parent_edge(NodeId x);
   /// The lowest common ancestor of a and b under the current roots; they must be connected.
   NodeId lca(NodeId a, NodeId b);
   /// lca(a, b) when the last call was lca(·, a) or lca_after(a): saves one access.
   NodeId lca_after(NodeId b);
-  /// Labels every edge of the tree path between a and b (connected) with `cover`.
+  /// Whether x lies on the tree path from the root to b, when the last call was lca(·, b) or
+  /// lca_after(b) (only splay-only calls, cover() and this, since). One splay.
+  bool on_root_path(NodeId x);
+  /// Labels every edge of the tree path between a and b (connected) with `cover`. No access when
+  /// a is the root and the last call was lca(·, b) or lca_after(b) (or cover() and
+  /// on_root_path() since): the path is then the preferred one.
   void cover_path(NodeId a, NodeId b, EdgeId cover);
   /// The label of tree edge e.
   EdgeId cover(EdgeId e);
@@ -72,6 +80,9 @@ class CoverForest {
   std::uint32_t base_;               // the node of edge 0
   std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
   std::uint32_t root_ = kNil;        // the node last everted while it is still its tree's root
+  // The node last accessed while the preferred path from the root to it is unchanged: set by
+  // access(), cleared by every operation that changes paths after it.
+  std::uint32_t accessed_ = kNil;
 };
 
 }  // namespace petersen::reduction

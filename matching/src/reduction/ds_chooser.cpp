@@ -32,11 +32,15 @@ void DsChooser::remove(const ReductionGraph&, std::span<const EdgeId> edges) {
 bool DsChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
   const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
   const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
-  if (!forest_.connected(x1, x2)) return !forest_.connected(x1, x3);  // split 13|24 or 14|23
+  // Rooted at x1, a root query answers connectivity: one access each instead of two.
   forest_.evert(x1);
-  const NodeId l23 = forest_.lca(x2, x3), l24 = forest_.lca(x2, x4), l34 = forest_.lca(x3, x4);
-  // Rooted at x1, the quartet is 13|24 exactly when x2 and x4 meet below where x3 joins them.
-  return !(l23 == l34 && l24 != l23);
+  if (forest_.find_root(x2) != x1) return forest_.find_root(x3) != x1;  // split 13|24 or 14|23
+  // The quartet is 13|24 exactly when x2 and x4 meet below where x3 joins them. Each lca
+  // starts at the node the previous one ended on (a second access of a node is a single splay
+  // step): three full accesses, four when l23 == l34, against six.
+  const NodeId l23 = forest_.lca(x2, x3), l34 = forest_.lca(x3, x4);
+  if (l23 != l34) return true;
+  return forest_.lca(x4, x2) == l23;
 }
 
 void DsChooser::add(const ReductionGraph& graph, std::span<const EdgeId> edges) {

@@ -18,8 +18,9 @@
 //  2. Cut u and v out. Now every remaining tree attachment's cover is a non-tree attachment into
 //     the same piece (no other edge at u or v covers it), so each piece holds two or more of the
 //     four attachments: there are one or two pieces, and for two, each piece's attachments are
-//     its tree attachment and that one's cover (no connectivity query needed). Rooted at u (one
-//     evert), every tree edge at u or v is cut from above with one access.
+//     its tree attachment and that one's cover (no connectivity query needed). Cutting the tree
+//     attachments (one evert of u or v, then a splay each) frees the pieces; the tree left on u
+//     and v is never visited again.
 // Choosing: one piece spans H' = H − {u, v}, and the Diks–Stańczyk quartet rule of ds_chooser.hpp
 // applies. Two pieces holding {xa, xb} and {xc, xd}: whether or not H' joins them, a spanning
 // tree of H' (or forest) has quartet or split ab|cd, so H2 iff {a, b} = {1, 3}, as in ds; the
@@ -48,9 +49,12 @@ namespace petersen::reduction {
 
 class GwChooser final : public Chooser {
  public:
-  /// A depth-first spanning forest of `graph`, each tree edge covered by the back edge that
-  /// reaches highest from below it; O(n). `edge_capacity` bounds the ids of edges added later.
-  GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity);
+  /// The spanning forest given by each node's `tree_edge` to its parent (kNoEdge at a root),
+  /// each tree edge labelled with `cover[node]`, a non-tree edge whose fundamental cycle passes
+  /// through it (for a depth-first forest, the back edge that reaches highest from below it);
+  /// O(n). `edge_capacity` bounds the ids of edges added later.
+  GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity, std::span<const EdgeId> tree_edge,
+            std::span<const EdgeId> cover);
   void remove(const ReductionGraph& graph, std::span<const EdgeId> edges) override;
   bool choose_h1(const ReductionGraph& graph, const Step& step) override;
   void add(const ReductionGraph& graph, std::span<const EdgeId> edges) override;

@@ -39,7 +39,7 @@ class LinkCutTree {
   };
   bool is_splay_root(NodeId x) const;
   void push(NodeId x);
-  void rotate(NodeId x);
+  void rotate(NodeId x, bool parent_is_root);  // x's parent and grandparent are pushed
   void splay(NodeId x);
   NodeId access(NodeId x);  // returns the last node where the path to the root was switched
 
