@@ -10,52 +10,63 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
     throw std::logic_error("lrs::into_dual_rows: some faces are contracted away");
   }
   const FaceId faces = tri.face_capacity_;
-  // `= {}` would keep the buffers (assignment from an initializer list).
+  const auto halfedges = static_cast<Halfedge>(tri.links_.size());
+  // Faces are numbered again, in order of their smallest halfedge, so the per-halfedge face array
+  // goes first (with the vertex and edge arrays; `= {}` would keep the buffers), and the
+  // triangles take its place (the same bytes, handed back by the huge-page pool), where keeping
+  // it cost it and each face's first halfedge (16 bytes per face) at the peak.
+  tri.face_ = HugeVector<FaceId>();
   tri.out_ = HugeVector<Halfedge>();
   tri.degree_ = HugeVector<std::uint32_t>();
   tri.edge_alive_ = HugeVector<std::uint8_t>();
-  // The origins in the input's ids, so that the vertex map is gone before the rows are made.
-  if (!tri.input_vertex_.empty()) {
-    for (auto& link : tri.links_) link.origin = tri.input_vertex_[link.origin];
-    tri.input_vertex_ = std::vector<VertexId>();
-  }
+  const auto smallest_of_face = [&tri](Halfedge h) {
+    const Halfedge n = tri.next(h);
+    return h < n && h < tri.next(n);
+  };
 
-  // Each face's smallest halfedge, the first met in id order: where its rows and corners start.
-  HugeVector<Halfedge> first(faces, kNoHalfedge);
-  for (Halfedge h = 0; h < tri.links_.size(); ++h) {
-    Halfedge& s = first[tri.face_[h]];
-    if (s == kNoHalfedge) s = h;
-  }
-  // M as the side of each face it crosses (1 byte; 3: none), made into partners once the faces
-  // and the triangles' links are freed: the peak holds neither the partners nor the triangles.
-  constexpr std::uint8_t kNoSide = 3;
+  // The triangles with the input's vertex ids, and in the same pass each face's number written
+  // over its halfedges' origins, which nothing reads after (a face's pass touches only its own
+  // halfedges).
   DualRows k;
+  k.triangles.resize(faces);
+  FaceId f = 0;
+  for (Halfedge h = 0; h < halfedges; ++h) {
+    if (!smallest_of_face(h)) continue;
+    if (f == faces) throw std::logic_error("lrs::into_dual_rows: more next cycles than faces");
+    const Halfedge n = tri.next(h), p = tri.next(n);
+    k.triangles[f] = {tri.input_vertex(tri.links_[h].origin),
+                      tri.input_vertex(tri.links_[n].origin),
+                      tri.input_vertex(tri.links_[p].origin)};
+    tri.links_[h].origin = tri.links_[n].origin = tri.links_[p].origin = f;
+    ++f;
+  }
+  if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
+  tri.input_vertex_ = std::vector<VertexId>();
+
+  // M as the side of each face it crosses (1 byte; 3: none), made into partners once the links
+  // are freed: the peak holds neither the partners nor the links' and rows' successors.
+  constexpr std::uint8_t kNoSide = 3;
   k.rows.resize(3 * std::size_t{faces});
   HugeVector<std::uint8_t> matched_side(faces, kNoSide);
-  for (FaceId f = 0; f < faces; ++f) {
-    Halfedge h = first[f];
+  f = 0;
+  for (Halfedge first = 0; first < halfedges; ++first) {
+    if (!smallest_of_face(first)) continue;
+    Halfedge h = first;
     for (std::uint8_t side = 0; side < 3; ++side, h = tri.next(h)) {
-      k.rows[3 * std::size_t{f} + side] = tri.face_[Triangulation::twin(h)];
+      k.rows[3 * std::size_t{f} + side] = tri.links_[Triangulation::twin(h)].origin;
       if (!(expansion.edge_state[Triangulation::edge(h)] & kMatched)) continue;
       if (matched_side[f] != kNoSide) {
         throw std::logic_error("lrs expansion: two edges of M pair face " + std::to_string(f));
       }
       matched_side[f] = side;
     }
-  }
-  tri.face_ = HugeVector<FaceId>();
-  expansion.edge_state = HugeVector<std::uint8_t>();
-
-  k.triangles.resize(faces);
-  for (FaceId f = 0; f < faces; ++f) {
-    const Halfedge h = first[f], n = tri.next(h);
-    k.triangles[f] = {tri.origin(h), tri.origin(n), tri.origin(tri.next(n))};
+    ++f;
   }
   tri = Triangulation();
-  first = HugeVector<Halfedge>();
+  expansion.edge_state = HugeVector<std::uint8_t>();
 
   k.partner.resize(faces);
-  for (FaceId f = 0; f < faces; ++f) {
+  for (f = 0; f < faces; ++f) {
     const std::uint8_t side = matched_side[f];
     k.partner[f] = side == kNoSide ? kNoNode : k.rows[3 * std::size_t{f} + side];
     k.unpaired += side == kNoSide;
