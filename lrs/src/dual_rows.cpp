@@ -11,18 +11,12 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   }
   const FaceId faces = tri.face_capacity_;
   const auto halfedges = static_cast<Halfedge>(tri.links_.size());
-  // Faces are numbered again, in order of their smallest halfedge, so the per-halfedge face array
-  // goes first (with the vertex and edge arrays; `= {}` would keep the buffers), and the
-  // triangles take its place (the same bytes, handed back by the huge-page pool), where keeping
-  // it cost it and each face's first halfedge (16 bytes per face) at the peak.
-  tri.face_ = HugeVector<FaceId>();
+  // Faces numbered in order of their smallest halfedge (no per-halfedge face array and no first
+  // halfedge per face: 16 bytes per face at the peak before). The vertex and edge arrays go first
+  // (`= {}` would keep the buffers).
   tri.out_ = HugeVector<Halfedge>();
   tri.degree_ = HugeVector<std::uint32_t>();
   tri.edge_alive_ = HugeVector<std::uint8_t>();
-  const auto smallest_of_face = [&tri](Halfedge h) {
-    const Halfedge n = tri.next(h);
-    return h < n && h < tri.next(n);
-  };
 
   // The triangles with the input's vertex ids, and in the same pass each face's number written
   // over its halfedges' origins, which nothing reads after (a face's pass touches only its own
@@ -31,7 +25,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   k.triangles.resize(faces);
   FaceId f = 0;
   for (Halfedge h = 0; h < halfedges; ++h) {
-    if (!smallest_of_face(h)) continue;
+    if (!tri.smallest_of_face(h)) continue;
     if (f == faces) throw std::logic_error("lrs::into_dual_rows: more next cycles than faces");
     const Halfedge n = tri.next(h), p = tri.next(n);
     k.triangles[f] = {tri.input_vertex(tri.links_[h].origin),
@@ -50,7 +44,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   HugeVector<std::uint8_t> matched_side(faces, kNoSide);
   f = 0;
   for (Halfedge first = 0; first < halfedges; ++first) {
-    if (!smallest_of_face(first)) continue;
+    if (!tri.smallest_of_face(first)) continue;
     Halfedge h = first;
     for (std::uint8_t side = 0; side < 3; ++side, h = tri.next(h)) {
       k.rows[3 * std::size_t{f} + side] = tri.links_[Triangulation::twin(h)].origin;
