@@ -18,36 +18,23 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   tri.degree_ = HugeVector<std::uint32_t>();
   tri.edge_alive_ = HugeVector<std::uint8_t>();
 
-  // The triangles with the input's vertex ids, and in the same pass each face's number written
-  // over its halfedges' origins, which nothing reads after (a face's pass touches only its own
-  // halfedges).
+  // The triangles with the input's vertex ids and M as the side of each face it crosses (1 byte;
+  // 3: none); in the same pass each halfedge's slot in the rows (3f + side) is written over its
+  // origin, which nothing reads after (a face's pass touches only its own halfedges). The edge
+  // states and the vertex map go before the rows are made.
+  constexpr std::uint8_t kNoSide = 3;
   DualRows k;
   k.triangles.resize(faces);
-  FaceId f = 0;
-  for (Halfedge h = 0; h < halfedges; ++h) {
-    if (!tri.smallest_of_face(h)) continue;
-    if (f == faces) throw std::logic_error("lrs::into_dual_rows: more next cycles than faces");
-    const Halfedge n = tri.next(h), p = tri.next(n);
-    k.triangles[f] = {tri.input_vertex(tri.links_[h].origin),
-                      tri.input_vertex(tri.links_[n].origin),
-                      tri.input_vertex(tri.links_[p].origin)};
-    tri.links_[h].origin = tri.links_[n].origin = tri.links_[p].origin = f;
-    ++f;
-  }
-  if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
-  tri.input_vertex_ = std::vector<VertexId>();
-
-  // M as the side of each face it crosses (1 byte; 3: none), made into partners once the links
-  // are freed: the peak holds neither the partners nor the links' and rows' successors.
-  constexpr std::uint8_t kNoSide = 3;
-  k.rows.resize(3 * std::size_t{faces});
   HugeVector<std::uint8_t> matched_side(faces, kNoSide);
-  f = 0;
+  FaceId f = 0;
   for (Halfedge first = 0; first < halfedges; ++first) {
     if (!tri.smallest_of_face(first)) continue;
+    if (f == faces) throw std::logic_error("lrs::into_dual_rows: more next cycles than faces");
     Halfedge h = first;
     for (std::uint8_t side = 0; side < 3; ++side, h = tri.next(h)) {
-      k.rows[3 * std::size_t{f} + side] = tri.links_[Triangulation::twin(h)].origin;
+      VertexId& origin = tri.links_[h].origin;
+      k.triangles[f][side] = tri.input_vertex(origin);
+      origin = 3 * f + side;
       if (!(expansion.edge_state[Triangulation::edge(h)] & kMatched)) continue;
       if (matched_side[f] != kNoSide) {
         throw std::logic_error("lrs expansion: two edges of M pair face " + std::to_string(f));
@@ -56,8 +43,17 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
     }
     ++f;
   }
-  tri = Triangulation();
+  if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
+  tri.input_vertex_ = std::vector<VertexId>();
   expansion.edge_state = HugeVector<std::uint8_t>();
+
+  // Each row entry from the halfedge's twin, in one sweep in halfedge order (twins are
+  // neighbours); M's sides become partners once the links are freed.
+  k.rows.resize(3 * std::size_t{faces});
+  for (Halfedge h = 0; h < halfedges; ++h) {
+    k.rows[tri.links_[h].origin] = tri.links_[Triangulation::twin(h)].origin / 3;
+  }
+  tri = Triangulation();
 
   k.partner.resize(faces);
   for (f = 0; f < faces; ++f) {
