@@ -10,52 +10,53 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
     throw std::logic_error("lrs::into_dual_rows: some faces are contracted away");
   }
   const FaceId faces = tri.face_capacity_;
-  // `= {}` would keep the buffers (assignment from an initializer list).
+  const auto halfedges = static_cast<Halfedge>(tri.links_.size());
+  // Faces numbered in order of their smallest halfedge (no per-halfedge face array and no first
+  // halfedge per face: 16 bytes per face at the peak before). The vertex and edge arrays go first
+  // (`= {}` would keep the buffers).
   tri.out_ = HugeVector<Halfedge>();
   tri.degree_ = HugeVector<std::uint32_t>();
   tri.edge_alive_ = HugeVector<std::uint8_t>();
-  // The origins in the input's ids, so that the vertex map is gone before the rows are made.
-  if (!tri.input_vertex_.empty()) {
-    for (auto& link : tri.links_) link.origin = tri.input_vertex_[link.origin];
-    tri.input_vertex_ = std::vector<VertexId>();
-  }
 
-  // Each face's smallest halfedge, the first met in id order: where its rows and corners start.
-  HugeVector<Halfedge> first(faces, kNoHalfedge);
-  for (Halfedge h = 0; h < tri.links_.size(); ++h) {
-    Halfedge& s = first[tri.face_[h]];
-    if (s == kNoHalfedge) s = h;
-  }
-  // M as the side of each face it crosses (1 byte; 3: none), made into partners once the faces
-  // and the triangles' links are freed: the peak holds neither the partners nor the triangles.
+  // The triangles with the input's vertex ids and M as the side of each face it crosses (1 byte;
+  // 3: none); in the same pass each halfedge's slot in the rows (3f + side) is written over its
+  // origin, which nothing reads after (a face's pass touches only its own halfedges). The edge
+  // states and the vertex map go before the rows are made.
   constexpr std::uint8_t kNoSide = 3;
   DualRows k;
-  k.rows.resize(3 * std::size_t{faces});
+  k.triangles.resize(faces);
   HugeVector<std::uint8_t> matched_side(faces, kNoSide);
-  for (FaceId f = 0; f < faces; ++f) {
-    Halfedge h = first[f];
+  FaceId f = 0;
+  for (Halfedge first = 0; first < halfedges; ++first) {
+    if (!tri.smallest_of_face(first)) continue;
+    if (f == faces) throw std::logic_error("lrs::into_dual_rows: more next cycles than faces");
+    Halfedge h = first;
     for (std::uint8_t side = 0; side < 3; ++side, h = tri.next(h)) {
-      k.rows[3 * std::size_t{f} + side] = tri.face_[Triangulation::twin(h)];
+      VertexId& origin = tri.links_[h].origin;
+      k.triangles[f][side] = tri.input_vertex(origin);
+      origin = 3 * f + side;
       if (!(expansion.edge_state[Triangulation::edge(h)] & kMatched)) continue;
       if (matched_side[f] != kNoSide) {
         throw std::logic_error("lrs expansion: two edges of M pair face " + std::to_string(f));
       }
       matched_side[f] = side;
     }
+    ++f;
   }
-  tri.face_ = HugeVector<FaceId>();
+  if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
+  tri.input_vertex_ = std::vector<VertexId>();
   expansion.edge_state = HugeVector<std::uint8_t>();
 
-  k.triangles.resize(faces);
-  for (FaceId f = 0; f < faces; ++f) {
-    const Halfedge h = first[f], n = tri.next(h);
-    k.triangles[f] = {tri.origin(h), tri.origin(n), tri.origin(tri.next(n))};
+  // Each row entry from the halfedge's twin, in one sweep in halfedge order (twins are
+  // neighbours); M's sides become partners once the links are freed.
+  k.rows.resize(3 * std::size_t{faces});
+  for (Halfedge h = 0; h < halfedges; ++h) {
+    k.rows[tri.links_[h].origin] = tri.links_[Triangulation::twin(h)].origin / 3;
   }
   tri = Triangulation();
-  first = HugeVector<Halfedge>();
 
   k.partner.resize(faces);
-  for (FaceId f = 0; f < faces; ++f) {
+  for (f = 0; f < faces; ++f) {
     const std::uint8_t side = matched_side[f];
     k.partner[f] = side == kNoSide ? kNoNode : k.rows[3 * std::size_t{f} + side];
     k.unpaired += side == kNoSide;

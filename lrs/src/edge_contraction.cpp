@@ -41,11 +41,9 @@ ContractionRecord contract(Triangulation& tri, Halfedge h) {
   Halfedge p = links[links[a].next].next;
   links[p].next = h2;
   links[h2].next = links[a].next;
-  tri.face_[h2] = tri.face_[a];
   p = links[links[d].next].next;
   links[p].next = t1;
   links[t1].next = links[d].next;
-  tri.face_[t1] = tri.face_[d];
 
   const std::uint32_t removed_degree = moved + 2;
   tri.out_[u] = t1;
@@ -84,23 +82,18 @@ void split(Triangulation& tri, const ContractionRecord& record) {
   Halfedge p = links[links[t1].next].next;
   links[p].next = d;
   links[d].next = links[t1].next;
-  tri.face_[d] = tri.face_[t1];
   links[d].origin = v;
   p = links[links[h2].next].next;
   links[p].next = a;
   links[a].next = links[h2].next;
-  tri.face_[a] = tri.face_[h2];
   links[a].origin = x;
 
-  const FaceId f0 = tri.face_[h], f1 = tri.face_[t];
   links[h].next = h1;
   links[h1].next = h2;
   links[h2].next = h;
-  tri.face_[h2] = f0;
   links[t].next = t1;
   links[t1].next = t2;
   links[t2].next = t;
-  tri.face_[t1] = f1;
   links[h].origin = u;
   links[h1].origin = v;
   links[t].origin = v;

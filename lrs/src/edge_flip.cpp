@@ -21,16 +21,13 @@ void flip(Triangulation& tri, Halfedge h) {
   const Halfedge gn = links[g].next, gp = links[gn].next;  // a→d, d→b
   const VertexId a = links[h].origin, b = links[g].origin;
   const VertexId c = links[hp].origin, d = links[gp].origin;
-  const FaceId f = tri.face_[h], f2 = tri.face_[g];
-  // Face f becomes [c, a, d] = c→a, a→d, d→c; face f2 becomes [d, b, c] = d→b, b→c, c→d.
+  // h's face becomes [c, a, d] = c→a, a→d, d→c; g's face becomes [d, b, c] = d→b, b→c, c→d.
   links[h].next = hp;
   links[hp].next = gn;
   links[gn].next = h;
   links[g].next = gp;
   links[gp].next = hn;
   links[hn].next = g;
-  tri.face_[gn] = f;
-  tri.face_[hn] = f2;
   links[h].origin = d;
   links[g].origin = c;
   if (tri.out_[a] == h) tri.out_[a] = gn;

@@ -40,8 +40,8 @@ LrsResult quadrangulate_lrs(const TriangleMesh& mesh, const LrsOptions& options)
     start = Clock::now();
     const lrs::ExpansionResult expansion = lrs::expand_and_match(tri, contraction.stack);
     stats.expansion_seconds = since(start);
-    // K as a mesh first, counted with the quads, so that K's dual can take the triangulation's
-    // face array over instead of copying it.
+    // K as a mesh first, counted with the quads, so that K's dual can free the triangulation's
+    // vertex and edge arrays before it is made.
     start = Clock::now();
     result.flipped_mesh = tri.to_mesh(mesh.positions);
     stats.quads_seconds = since(start);

@@ -50,7 +50,6 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
 
   Triangulation tri;
   tri.links_.resize(2 * std::size_t{edges});
-  tri.face_.resize(2 * std::size_t{edges});
   tri.edge_alive_.assign(edges, 1);
   tri.out_.assign(mesh.positions.size(), kNoHalfedge);
   tri.degree_.assign(mesh.positions.size(), 0);
@@ -66,7 +65,6 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
       const Halfedge h = ours[3 * std::size_t{t} + k];
       const VertexId v = mesh.triangles[t][k];
       tri.links_[h] = {v, ours[3 * std::size_t{t} + (k + 1) % 3]};
-      tri.face_[h] = t;
       tri.out_[v] = h;
       ++tri.degree_[v];
     }
@@ -77,27 +75,12 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
   return tri;
 }
 
-namespace {
-
-// The smallest halfedge of every live face, kNoHalfedge for dead faces: the first met in id order.
-std::vector<Halfedge> face_starts(const Triangulation& tri) {
-  std::vector<Halfedge> start(tri.face_capacity(), kNoHalfedge);
-  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
-    if (!tri.edge_alive(Triangulation::edge(h))) continue;
-    Halfedge& s = start[tri.face(h)];
-    if (s == kNoHalfedge) s = h;
-  }
-  return start;
-}
-
-}  // namespace
-
 TriangleMesh Triangulation::to_mesh(const Positions& positions) const {
   TriangleMesh mesh;
   mesh.positions = positions;
   mesh.triangles.reserve(live_faces_);
-  for (const Halfedge h : face_starts(*this)) {
-    if (h == kNoHalfedge) continue;
+  for (Halfedge h = 0; h < 2 * edge_capacity(); ++h) {
+    if (!edge_alive(edge(h)) || !smallest_of_face(h)) continue;
     mesh.triangles.push_back(
         {input_vertex(origin(h)), input_vertex(origin(next(h))), input_vertex(origin(prev(h)))});
   }
@@ -105,7 +88,7 @@ TriangleMesh Triangulation::to_mesh(const Positions& positions) const {
 }
 
 CubicGraph Triangulation::dual_graph() const& {
-  return dual_graph_from_faces(face_);
+  return dual_graph_of_live();
 }
 
 CubicGraph Triangulation::dual_graph() && {
@@ -113,43 +96,39 @@ CubicGraph Triangulation::dual_graph() && {
   out_ = HugeVector<Halfedge>();
   degree_ = HugeVector<std::uint32_t>();
   edge_alive_ = HugeVector<std::uint8_t>();
-  return dual_graph_from_faces(std::move(face_));
+  return dual_graph_of_live();
 }
 
-CubicGraph Triangulation::dual_graph_from_faces(HugeVector<FaceId> faces) const {
+CubicGraph Triangulation::dual_graph_of_live() const {
   if (live_faces_ != face_capacity_) {
     throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
   }
-  // One pass in halfedge order: the first halfedge met of a face is its smallest, and fills the
-  // face's three slots.
-  HugeVector<EdgeId> node_edges(3 * std::size_t{face_capacity_}, kNoEdge);
-  // Face ids are scattered over the halfedges, so the slot test and the face's third halfedge are
-  // random reads: ask for them a few dozen halfedges ahead, where the stream is already read.
-  constexpr Halfedge kAhead = 32;
+  // One pass in halfedge order: the f-th face met by its smallest halfedge is node f, and fills
+  // its three slots and its halfedges' edge ends. A face's pass touches only its own halfedges.
   const auto halfedges = static_cast<Halfedge>(links_.size());
+  HugeVector<EdgeId> node_edges(3 * std::size_t{face_capacity_});
+  HugeVector<NodeId> edge_ends(halfedges);
+  FaceId f = 0;
   for (Halfedge h = 0; h < halfedges; ++h) {
-    if (h + kAhead < halfedges) {
-      __builtin_prefetch(node_edges.data() + 3 * std::size_t{faces[h + kAhead]});
-      __builtin_prefetch(&links_[links_[h + kAhead].next]);
-    }
-    EdgeId* slots = node_edges.data() + 3 * std::size_t{faces[h]};
-    if (slots[0] != kNoEdge) continue;
-    const Halfedge n = next(h);
+    if (!smallest_of_face(h)) continue;
+    const Halfedge n = next(h), p = next(n);
+    EdgeId* slots = node_edges.data() + 3 * std::size_t{f};
     slots[0] = edge(h);
     slots[1] = edge(n);
-    slots[2] = edge(next(n));
+    slots[2] = edge(p);
+    edge_ends[h] = edge_ends[n] = edge_ends[p] = f;
+    ++f;
   }
   // Valid by construction: every live halfedge lies in one face cycle of length 3 (check()), so
   // each slot of face f names an edge with an end f, once per end.
-  return CubicGraph::from_valid_incidence(std::move(node_edges), std::move(faces));
+  return CubicGraph::from_valid_incidence(std::move(node_edges), std::move(edge_ends));
 }
 
 std::string Triangulation::check() const {
   const auto at = [](const char* what, std::uint64_t id) {
     return std::string(what) + " " + std::to_string(id);
   };
-  std::uint32_t edges = 0;
-  std::vector<std::uint8_t> face_seen(face_capacity_, 0);
+  std::uint32_t edges = 0, faces = 0;
   std::vector<std::uint32_t> outgoing(out_.size(), 0);
   for (EdgeId e = 0; e < edge_capacity(); ++e) {
     if (!edge_alive(e)) continue;
@@ -157,17 +136,14 @@ std::string Triangulation::check() const {
     for (Halfedge h = 2 * e; h < 2 * e + 2; ++h) {
       const Halfedge n = next(h);
       if (!edge_alive(edge(n)) || next(next(n)) != h) return at("face cycle not 3 at halfedge", h);
-      if (face(n) != face(h) || face(h) >= face_capacity_) return at("face id at halfedge", h);
       if (origin(n) != destination(h)) return at("origin mismatch at halfedge", h);
       if (origin(h) == destination(h)) return at("loop at halfedge", h);
       if (!vertex_alive(origin(h))) return at("dead origin at halfedge", h);
-      face_seen[face(h)] = 1;
+      faces += smallest_of_face(h);
       ++outgoing[origin(h)];
     }
   }
   if (edges != live_edges_) return at("live edge count off, counted", edges);
-  std::uint32_t faces = 0;
-  for (const std::uint8_t seen : face_seen) faces += seen;
   if (faces != live_faces_) return at("live face count off, counted", faces);
   std::uint32_t vertices = 0;
   VertexMarks marks(vertex_capacity());

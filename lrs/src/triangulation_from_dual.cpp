@@ -107,15 +107,6 @@ Triangulation Triangulation::from_dual(const Positions& positions,
   node_edges = HugeVector<EdgeId>();
   new_id = HugeVector<VertexId>();
 
-  // Faces numbered by their smallest halfedge, after the slots are freed: the first halfedge met
-  // of a face names it.
-  tri.face_.assign(2 * std::size_t{edges}, kNoNode);
-  FaceId next_face = 0;
-  for (Halfedge h = 0; h < tri.links_.size(); ++h) {
-    if (tri.face_[h] != kNoNode) continue;
-    const Halfedge n = tri.next(h);
-    tri.face_[h] = tri.face_[n] = tri.face_[tri.next(n)] = next_face++;
-  }
   tri.edge_alive_.assign(edges, 1);
   tri.face_capacity_ = faces;
   tri.live_edges_ = edges;

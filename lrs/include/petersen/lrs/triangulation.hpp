@@ -16,8 +16,9 @@
 namespace petersen::lrs {
 
 /// Halfedge ids: edge e is halfedges 2e and 2e+1, so the twin of h is h ^ 1. Ids of vertices,
-/// edges, halfedges and faces never change; contraction kills elements and a vertex split revives
-/// exactly those, an edge flip keeps every id.
+/// edges and halfedges never change; contraction kills elements and a vertex split revives exactly
+/// those, an edge flip keeps every id. Faces are the next cycles and have no stored id: to_mesh,
+/// dual_graph and into_dual_rows number them in order of their smallest halfedge.
 using Halfedge = std::uint32_t;
 inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
 
@@ -31,17 +32,18 @@ void flip(Triangulation& tri, Halfedge h);
 DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 /// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
-/// origin, the next halfedge of its face (counter-clockwise) and its face; each vertex one
-/// outgoing halfedge and its degree. Dead elements (removed by contract) keep their last values,
-/// which is what split reads to revive them.
+/// origin and the next halfedge of its face (counter-clockwise); each vertex one outgoing halfedge
+/// and its degree. No per-halfedge face id (12 bytes per face, which held the peak of quad's lrs
+/// at the end of the expansion): nothing in contraction or expansion reads one. Dead elements
+/// (removed by contract) keep their last values, which is what split reads to revive them.
 class Triangulation {
  public:
   Triangulation() = default;
 
   /// How from_mesh numbers the elements.
   enum class Numbering {
-    as_given,  ///< vertex ids are the mesh's, face f is triangle f
-    /// vertices and faces along a space-filling curve, for the cache (src/spatial_order.hpp);
+    as_given,  ///< vertex ids are the mesh's
+    /// vertices and triangles along a space-filling curve, for the cache (src/spatial_order.hpp);
     /// input_vertex() and to_mesh give the mesh's vertex ids back
     spatial,
   };
@@ -59,12 +61,12 @@ class Triangulation {
   /// node_edges[3t + k] is the edge across its corners k and k + 1, and edge e joins triangles
   /// edge_ends[2e] and edge_ends[2e + 1] (a PairableGraph with `cubic` set and no inconsistent
   /// edge, or build_dual's graph). Numbered spatially: vertices by Morton cell, edges by their
-  /// smaller vertex, faces in order of their smallest halfedge; input_vertex() gives the mesh's
+  /// smaller vertex; input_vertex() gives the mesh's
   /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
   /// form several fans) or orientation is inconsistent around it, and when the triangles form
   /// several components; std::invalid_argument when the arrays are not a dual of the triangles.
-  /// Each array is freed once the next is made: at most about 44 bytes per triangle at a time
-  /// (the slots or the faces, the links, the vertex arrays), where from_mesh holds two copies of
+  /// Each array is freed once the next is made: at most the slots (12 bytes per triangle), the
+  /// links (24) and the vertex arrays at a time, where from_mesh holds two copies of
   /// the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
                                  HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
@@ -88,7 +90,11 @@ class Triangulation {
   VertexId destination(Halfedge h) const { return links_[h ^ 1u].origin; }
   Halfedge next(Halfedge h) const { return links_[h].next; }
   Halfedge prev(Halfedge h) const { return next(next(h)); }
-  FaceId face(Halfedge h) const { return face_[h]; }
+  /// Whether h is the smallest halfedge of its face: the face's name in the numberings below.
+  bool smallest_of_face(Halfedge h) const {
+    const Halfedge n = next(h);
+    return h < n && h < next(n);
+  }
   /// The vertex of h's face opposite h.
   VertexId apex(Halfedge h) const { return origin(prev(h)); }
   /// The next outgoing halfedge around origin(h), counter-clockwise.
@@ -97,13 +103,10 @@ class Triangulation {
   /// (twins share a cache line), so walks where the order does not matter go this way.
   Halfedge rotate_cw(Halfedge h) const { return links_[h ^ 1u].next; }
   Halfedge out(VertexId v) const { return out_[v]; }
-  /// Cache hints for a halfedge's record (link and face) and a vertex's (out and degree): the
+  /// Cache hints for a halfedge's record (its link) and a vertex's (out and degree): the
   /// records are scattered over tens of megabytes, so a caller that knows its future accesses
   /// (the expansion reads them from the contraction stack) asks for them ahead.
-  void prefetch(Halfedge h) const {
-    __builtin_prefetch(&links_[h]);
-    __builtin_prefetch(&face_[h]);
-  }
+  void prefetch(Halfedge h) const { __builtin_prefetch(&links_[h]); }
   void prefetch_vertex(VertexId v) const {
     __builtin_prefetch(&out_[v]);
     __builtin_prefetch(&degree_[v]);
@@ -116,22 +119,21 @@ class Triangulation {
         (2 - std::int64_t{live_vertices_} + live_edges_ - std::int64_t{live_faces_}) / 2);
   }
 
-  /// The live faces as a triangle mesh over `positions` (the input's), in face-id order, with the
-  /// input's vertex ids; each triangle starts at the smallest halfedge id of its face, so edge k
-  /// of the triangle is that halfedge's k-th successor. Dead vertices stay in `positions`,
-  /// unreferenced. O(V + F).
+  /// The live faces as a triangle mesh over `positions` (the input's), in order of their smallest
+  /// halfedge, with the input's vertex ids; each triangle starts at the smallest halfedge id of its
+  /// face, so edge k of the triangle is that halfedge's k-th successor. Dead vertices stay in
+  /// `positions`, unreferenced. O(V + F).
   TriangleMesh to_mesh(const Positions& positions) const;
 
   /// The dual graph when every face is alive (the triangulation K after expansion): node f is
-  /// face f, dual edge e crosses edge e, and node f's k-th edge is edge k of to_mesh's triangle f.
-  /// Throws std::logic_error if a face is dead. O(F).
+  /// to_mesh's triangle f, dual edge e crosses edge e, and node f's k-th edge is edge k of
+  /// to_mesh's triangle f. Throws std::logic_error if a face is dead. O(F).
   CubicGraph dual_graph() const&;
-  /// The same, handing over the per-halfedge face array as the dual's edge ends instead of copying
-  /// it (16.5 MB on armadillo-sub2), and freeing the per-vertex and per-edge arrays first: the
-  /// triangulation is left with its links (origin, next, apex, rotate_cw) and input_vertex only.
+  /// The same, freeing the per-vertex and per-edge arrays first: the triangulation is left with
+  /// its links (origin, next, apex, rotate_cw) and input_vertex only.
   CubicGraph dual_graph() &&;
 
-  /// Checks the structure: next cycles of length 3 with one face id, origins consistent with
+  /// Checks the structure: next cycles of length 3, origins consistent with
   /// twins, out[] outgoing, degrees equal to rotation lengths, live counts, no vertex pair joined
   /// twice (simplicial). Returns the first problem or an empty string. O(V + E) with marks.
   std::string check() const;
@@ -144,8 +146,8 @@ class Triangulation {
 
   // from_mesh after the surface check.
   static Triangulation build(const TriangleMesh& mesh);
-  // dual_graph with `faces` (face_, copied or handed over) as the dual's edge ends.
-  CubicGraph dual_graph_from_faces(HugeVector<FaceId> faces) const;
+  // dual_graph once the faces are known to be alive.
+  CubicGraph dual_graph_of_live() const;
 
   // Per halfedge, origin and next side by side: a twin pair fills 16 bytes of one cache line.
   struct Link {
@@ -153,7 +155,6 @@ class Triangulation {
     Halfedge next;
   };
   HugeVector<Link> links_;
-  HugeVector<FaceId> face_;  // per halfedge
   HugeVector<std::uint8_t> edge_alive_;
   HugeVector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
   HugeVector<std::uint32_t> degree_;
