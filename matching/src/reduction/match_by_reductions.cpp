@@ -68,7 +68,10 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
     copy.component.push_back(copy.components);
     copy.tree_edge.push_back(tree_edge);
   };
-  std::vector<std::pair<NodeId, int>> stack;  // old id, next slot
+  // Old id, next slot. Reserved at its bound, n entries, on huge pages: only the pages the depth
+  // reaches are touched, where a growing vector copied itself into fresh memory at each doubling.
+  HugeVector<std::pair<NodeId, int>> stack;
+  stack.reserve(n);
   for (NodeId root = 0; root < n; ++root) {
     if (new_node[root] != kNoNode) continue;
     visit(root, kNoEdge);
