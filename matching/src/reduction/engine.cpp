@@ -46,21 +46,20 @@ Step next_step(const ReductionGraph& g, EdgeId f) {
 
 }  // namespace
 
-Matching reduce_and_lift(const CubicGraph& graph, std::span<const std::uint32_t> component,
+Matching reduce_and_lift(ReductionGraph g, std::span<const std::uint32_t> component,
                          std::uint32_t components, EdgeId forbidden, Chooser& chooser,
                          bool check_each_step, ReductionStats& stats) {
-  const std::uint32_t n = graph.node_count();
+  const std::uint32_t n = g.node_count();
   Stopwatch reduce_clock;
   // Each component's size and its forbidden edge (the caller's, or an arbitrary one).
   std::vector<std::uint32_t> size(components, 0);
   std::vector<EdgeId> first(components, kNoEdge);
   for (NodeId v = 0; v < n; ++v) {
     ++size[component[v]];
-    if (first[component[v]] == kNoEdge) first[component[v]] = graph.incident_edge(v, 0);
+    if (first[component[v]] == kNoEdge) first[component[v]] = g.slot(v, 0);
   }
-  if (forbidden != kNoEdge) first[component[graph.endpoints(forbidden)[0]]] = forbidden;
+  if (forbidden != kNoEdge) first[component[g.end(forbidden, 0)]] = forbidden;
 
-  ReductionGraph g(graph, n);  // a reduction adds at most two edges and removes two nodes
   HugeVector<Step> steps;
   steps.reserve(n / 2);
   HugeVector<EdgeId> mate(n, kNoEdge);

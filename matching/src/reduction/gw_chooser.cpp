@@ -29,15 +29,14 @@ struct UnionFind {
 
 }  // namespace
 
-GwChooser::GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity,
+GwChooser::GwChooser(const ReductionGraph& graph, std::uint32_t edge_capacity,
                      std::span<const EdgeId> tree_edge, std::span<const EdgeId> cover)
     : forest_(graph.node_count(), edge_capacity), in_tree_(edge_capacity, 0) {
   for (NodeId v = 0; v < graph.node_count(); ++v) {
     const EdgeId e = tree_edge[v];
     if (e == kNoEdge) continue;
-    const auto [a, b] = graph.endpoints(e);
     in_tree_[e] = 1;
-    forest_.hang(v, e, a ^ b ^ v, cover[v]);
+    forest_.hang(v, e, graph.other_end(e, v), cover[v]);
   }
 }
 

@@ -53,8 +53,8 @@ class GwChooser final : public Chooser {
   /// each tree edge labelled with `cover[node]`, a non-tree edge whose fundamental cycle passes
   /// through it (for a depth-first forest, the back edge that reaches highest from below it);
   /// O(n). `edge_capacity` bounds the ids of edges added later.
-  GwChooser(const CubicGraph& graph, std::uint32_t edge_capacity, std::span<const EdgeId> tree_edge,
-            std::span<const EdgeId> cover);
+  GwChooser(const ReductionGraph& graph, std::uint32_t edge_capacity,
+            std::span<const EdgeId> tree_edge, std::span<const EdgeId> cover);
   void remove(const ReductionGraph& graph, std::span<const EdgeId> edges) override;
   bool choose_h1(const ReductionGraph& graph, const Step& step) override;
   void add(const ReductionGraph& graph, std::span<const EdgeId> edges) override;

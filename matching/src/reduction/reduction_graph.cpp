@@ -1,11 +1,19 @@
 #include "reduction/reduction_graph.hpp"
 
+#include <utility>
+
 namespace petersen::reduction {
 
 ReductionGraph::ReductionGraph(const CubicGraph& graph, std::uint32_t extra_edges)
     : slots_(graph.node_edges().begin(), graph.node_edges().end()), alive_(graph.node_count(), 1) {
   ends_.reserve(2 * (std::size_t{graph.edge_count()} + extra_edges));
   ends_.assign(graph.edge_ends().begin(), graph.edge_ends().end());
+}
+
+ReductionGraph::ReductionGraph(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
+                               std::uint32_t extra_edges)
+    : ends_(std::move(edge_ends)), slots_(std::move(node_edges)), alive_(node_count(), 1) {
+  ends_.reserve(ends_.size() + 2 * std::size_t{extra_edges});
 }
 
 EdgeId ReductionGraph::add_edge(NodeId a, NodeId b) {

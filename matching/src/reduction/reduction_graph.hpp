@@ -25,6 +25,11 @@ class ReductionGraph {
  public:
   /// Copies `graph`, with room for `extra_edges` new edges.
   ReductionGraph(const CubicGraph& graph, std::uint32_t extra_edges);
+  /// Takes over the arrays of a cubic graph (as CubicGraph::node_edges() and edge_ends() lay
+  /// them out), with room for `extra_edges` new edges: no copy, and no reallocation when
+  /// `edge_ends` already has the capacity.
+  ReductionGraph(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
+                 std::uint32_t extra_edges);
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(slots_.size() / 3); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(ends_.size() / 2); }
