@@ -154,16 +154,17 @@ int quad(const QuadArgs& args) {
   report.options.max_corner_deviation = args.max_corner_deviation;
   report.options.cuts.user_edges = keep_edges;
   report.load_seconds = clock.lap();
+  const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
   QuadResult result;
   try {
-    result = quadrangulate(mesh, report.options);
+    // Consumed: its positions become the output's, not a copy of them.
+    result = quadrangulate(std::move(mesh), report.options);
   } catch (const MeshError& e) {
     throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
   }
   report.quad = result.stats;
-  // The input is not needed past this point: freed before the output's bytes are built beside
-  // the output mesh, where the peak would otherwise be.
-  const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
+  // The rest of the input is not needed past this point: freed before the output's bytes are
+  // built beside the output mesh, where the peak would otherwise be.
   mesh = {};
   clock.lap();
   warn_dropped(args.output, write_mesh(args.output, result.mesh));

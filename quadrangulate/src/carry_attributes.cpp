@@ -162,7 +162,8 @@ MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& 
       }
     }
   }
-  return derived_attributes(a, input.positions.size(), face_of, corner_from, {});
+  // The output's vertices are the input's so far (the input's positions may have moved there).
+  return derived_attributes(a, out.positions.size(), face_of, corner_from, {});
 }
 
 }  // namespace petersen::quad_detail

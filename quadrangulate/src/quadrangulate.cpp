@@ -52,7 +52,11 @@ std::optional<Objective> parse_objective(std::string_view name) {
   return std::nullopt;
 }
 
-QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
+namespace {
+
+// The front door; `movable`, when given, is the mesh's own positions, which the output takes over
+// instead of copying once nothing reads them any more.
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Positions* movable) {
   if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
     throw std::invalid_argument("max_corner_deviation is NaN");
   }
@@ -115,7 +119,11 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
     for (NodeId v = 0; v < graph.node_count; ++v) face_node[graph.node_face[v]] = v;
   }
   PolygonMesh& out = result.mesh;
-  out.positions = mesh.positions;
+  if (movable != nullptr) {
+    out.positions = std::move(*movable);
+  } else {
+    out.positions = mesh.positions;
+  }
   // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
   std::size_t paired_nodes = 0;
   for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
@@ -210,6 +218,16 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
   }
   stats.total_seconds = total.lap();
   return result;
+}
+
+}  // namespace
+
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
+  return quadrangulate(mesh, options, nullptr);
+}
+
+QuadResult quadrangulate(PolygonMesh&& mesh, const QuadOptions& options) {
+  return quadrangulate(mesh, options, &mesh.positions);
 }
 
 }  // namespace petersen

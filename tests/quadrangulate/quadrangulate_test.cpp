@@ -15,6 +15,7 @@
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
+#include "petersen/testing/random_attributes.hpp"
 #include "result_check.hpp"
 
 namespace petersen {
@@ -254,6 +255,35 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
+}
+
+// The consuming front door moves the positions into the output instead of copying them; the
+// answer, with --all-quad's new vertices and every attribute carried, is the copying one's.
+RC_GTEST_PROP(Quadrangulate, ConsumingTheMeshGivesTheSameAnswer, ()) {
+  const PolygonMesh mesh = *testing::meshes_with_attributes(testing::AttributeSet::all);
+  const QuadOptions options{.all_quad = *rc::gen::arbitrary<bool>()};
+  QuadResult copied;
+  try {
+    copied = quadrangulate(mesh, options);
+  } catch (const MeshError&) {
+    PolygonMesh consumed = mesh;
+    RC_ASSERT_THROWS_AS(quadrangulate(std::move(consumed), options), MeshError);
+    return;
+  }
+  PolygonMesh consumed = mesh;
+  const QuadResult moved = quadrangulate(std::move(consumed), options);
+  RC_ASSERT(moved.mesh.positions == copied.mesh.positions);
+  RC_ASSERT(moved.mesh.corners == copied.mesh.corners);
+  RC_ASSERT(moved.mesh.face_start == copied.mesh.face_start);
+  RC_ASSERT(moved.sources == copied.sources);
+  const MeshAttributes &a = moved.mesh.attributes, &b = copied.mesh.attributes;
+  RC_ASSERT(a.corner_texcoord == b.corner_texcoord && a.texcoords == b.texcoords);
+  RC_ASSERT(a.corner_normal == b.corner_normal && a.normals == b.normals);
+  RC_ASSERT(a.face_material == b.face_material && a.face_smoothing == b.face_smoothing);
+  RC_ASSERT(a.vertex_properties.size() == b.vertex_properties.size());
+  for (std::size_t k = 0; k < a.vertex_properties.size(); ++k) {
+    RC_ASSERT(a.vertex_properties[k].values == b.vertex_properties[k].values);
+  }
 }
 
 // Chosen cuts (materials, seams, the caller's edges, a shape threshold) refuse pairs but leave the

@@ -160,5 +160,9 @@ struct QuadResult {
 /// face for a corner out of range or a face of fewer than three corners, MeshError when all_quad
 /// cannot reach a leftover triangle's partner. O(n log d) plus the algorithm's cost.
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
+/// The same, consuming the mesh: its positions move into the output mesh instead of being copied
+/// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles). Whether it returns or throws,
+/// `mesh` is left valid with unspecified contents.
+QuadResult quadrangulate(PolygonMesh&& mesh, const QuadOptions& options = {});
 
 }  // namespace petersen
