@@ -223,12 +223,29 @@ TEST(Quadrangulate, ExtraCutsKeepTriangles) {
   EXPECT_THROW(quadrangulate(flat, {.cuts = wrong}), MeshError);
 }
 
+// Materials among up to three per face and up to four of the caller's edges (sides of random
+// faces), drawn inside a property.
+struct ChosenCuts {
+  std::vector<std::uint32_t> material;
+  std::vector<std::array<VertexId, 2>> user;
+};
+ChosenCuts random_chosen_cuts(const PolygonMesh& mesh) {
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
+  ChosenCuts cuts;
+  cuts.material = *rc::gen::container<std::vector<std::uint32_t>>(
+      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
+  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
+    cuts.user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
+  }
+  return cuts;
+}
+
 // Random seams, materials, user edges and a fold threshold on mixed meshes: no pair crosses a
 // cut and the pairing is still the maximum of what is left.
 RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
   const PolygonMesh mesh = random_mixed_mesh(seed, *rc::gen::inRange<std::uint32_t>(4, 300));
-  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
   const auto corners = static_cast<std::uint32_t>(mesh.corners.size());
   // UV ids: the vertex id, except at a few corners (seams); materials among three.
   std::vector<std::uint32_t> uv(mesh.corners.begin(), mesh.corners.end());
@@ -236,13 +253,7 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
            *rc::gen::inRange<std::size_t>(0, 6), rc::gen::inRange<std::uint32_t>(0, corners))) {
     uv[c] += corners;
   }
-  const auto material = *rc::gen::container<std::vector<std::uint32_t>>(
-      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
-  std::vector<std::array<VertexId, 2>> user;
-  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
-    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
-    user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
-  }
+  const auto [material, user] = random_chosen_cuts(mesh);
   CutOptions cuts{.user_edges = user, .corner_uv = uv, .face_material = material};
   // Thresholds between whole degrees: generated grids fold by exact angles (60, 90, ...), where
   // two correct computations of the fold may round to either side of an equal threshold.
@@ -292,14 +303,7 @@ RC_GTEST_PROP(Quadrangulate, ConsumingTheMeshGivesTheSameAnswer, ()) {
 RC_GTEST_PROP(Quadrangulate, ChosenCutsKeepTheGenus, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 5);
   const PolygonMesh mesh = to_polygon_mesh(*testing::closed_triangulations(genus));
-  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
-  const auto material = *rc::gen::container<std::vector<std::uint32_t>>(
-      faces, rc::gen::inRange<std::uint32_t>(0, *rc::gen::inRange<std::uint32_t>(1, 4)));
-  std::vector<std::array<VertexId, 2>> user;
-  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
-    const FaceId f = *rc::gen::inRange<std::uint32_t>(0, faces);
-    user.push_back({mesh.face(f)[0], mesh.face(f)[1]});
-  }
+  const auto [material, user] = random_chosen_cuts(mesh);
   QuadOptions options{.cuts = {.user_edges = user, .face_material = material}};
   if (*rc::gen::arbitrary<bool>()) options.max_corner_deviation = *rc::gen::inRange(10, 170) + 0.5;
   const QuadResult result = quadrangulate(mesh, options);
