@@ -2,32 +2,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "petersen/graph/component_forest.hpp"
 #include "petersen/lrs/triangulation.hpp"
 #include "spatial_order.hpp"
 
 namespace petersen::lrs {
-
-namespace {
-
-// Disjoint sets over the faces, joined along the dual's edges: the number of components.
-std::uint32_t face_components(std::uint32_t faces, std::span<const NodeId> edge_ends) {
-  HugeVector<FaceId> parent(faces);
-  for (FaceId f = 0; f < faces; ++f) parent[f] = f;
-  const auto find = [&](FaceId f) {
-    while (parent[f] != f) f = parent[f] = parent[parent[f]];
-    return f;
-  };
-  std::uint32_t components = faces;
-  for (std::size_t i = 0; i < edge_ends.size(); i += 2) {
-    const FaceId a = find(edge_ends[i]), b = find(edge_ends[i + 1]);
-    if (a == b) continue;
-    parent[std::max(a, b)] = std::min(a, b);
-    --components;
-  }
-  return components;
-}
-
-}  // namespace
 
 Triangulation Triangulation::from_dual(const Positions& positions,
                                        std::span<const VertexId> corners,
@@ -43,7 +22,8 @@ Triangulation Triangulation::from_dual(const Positions& positions,
                                 " edge slots and " + std::to_string(edges) +
                                 " edges are not a closed mesh's dual");
   }
-  if (const std::uint32_t components = face_components(faces, edge_ends); components > 1) {
+  if (const std::uint32_t components = ComponentForest(faces, edge_ends).root_count();
+      components > 1) {
     throw MeshError(std::to_string(components) + " components (triangles joined through edges)");
   }
   Triangulation tri;

@@ -4,9 +4,9 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "component_forest.hpp"
 #include "lap_clock.hpp"
 #include "pair_whole_mesh_by_lrs.hpp"
+#include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/graph/parallel.hpp"
 #include "petersen/lrs/lrs.hpp"

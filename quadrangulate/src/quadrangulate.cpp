@@ -9,10 +9,10 @@
 #include "all_quad.hpp"
 #include "attribute_cuts.hpp"
 #include "carry_attributes.hpp"
-#include "component_forest.hpp"
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/graph/parallel.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
@@ -97,7 +97,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
   const bool oriented_surface = graph.cuts.structural() == 0 && stats.polygons_kept == 0 &&
                                 graph.inconsistent_edges + graph.inconsistent_chosen_cuts == 0;
   if (oriented_surface && !graph.chosen_cut_ends.empty()) {
-    quad_detail::ComponentForest surface(graph.node_count, graph.edge_ends);
+    ComponentForest surface(graph.node_count, graph.edge_ends);
     surface.join(graph.chosen_cut_ends);
     stats.genus = (2 * std::int64_t(surface.root_count()) - stats.euler_characteristic) / 2;
   }

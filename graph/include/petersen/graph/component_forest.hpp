@@ -1,7 +1,7 @@
 #pragma once
 // Components of a graph given by its edge list, by disjoint sets: the pairable graph's (which
-// closed components the algorithms match) and the surface's (its genus, with chosen cuts joined
-// back).
+// closed components the algorithms match), a surface's (its genus, with chosen cuts joined back),
+// a triangulation's dual (one component for LRS).
 
 #include <algorithm>
 #include <cstdint>
@@ -10,10 +10,10 @@
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
 
-namespace petersen::quad_detail {
+namespace petersen {
 
-// Disjoint sets over the graph's edges: each node's parent, a root being its own. On huge pages,
-// so that a run takes it from the pool's freed ranges rather than from fresh memory.
+/// Disjoint sets over the graph's edges: each node's parent, a root being its own. On huge pages,
+/// so that a run takes it from the pool's freed ranges rather than from fresh memory.
 class ComponentForest {
  public:
   /// The forest of the graph on `node_count` nodes whose edge e joins edge_ends[2e] and
@@ -44,4 +44,4 @@ class ComponentForest {
   HugeVector<NodeId> parent_;
 };
 
-}  // namespace petersen::quad_detail
+}  // namespace petersen
