@@ -2,6 +2,8 @@
 
 #include <string>
 
+#include "check_edge_ends.hpp"
+
 namespace petersen {
 
 CsrGraph CsrGraph::from_edges(std::uint32_t node_count,
@@ -11,13 +13,7 @@ CsrGraph CsrGraph::from_edges(std::uint32_t node_count,
   g.edge_ends_.resize(2 * edges.size());
   for (EdgeId e = 0; e < edges.size(); ++e) {
     auto [a, b] = edges[e];
-    if (a >= node_count || b >= node_count) {
-      throw GraphError("edge " + std::to_string(e) + " has an endpoint out of range (" +
-                       std::to_string(a) + ", " + std::to_string(b) + "; " +
-                       std::to_string(node_count) + " nodes)");
-    }
-    if (a == b)
-      throw GraphError("edge " + std::to_string(e) + " is a loop at node " + std::to_string(a));
+    graph_detail::check_edge_ends(e, a, b, node_count);
     ++g.offsets_[a + 1];
     ++g.offsets_[b + 1];
     g.edge_ends_[2 * e] = a;

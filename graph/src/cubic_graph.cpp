@@ -1,5 +1,7 @@
 #include "petersen/graph/cubic_graph.hpp"
 
+#include "check_edge_ends.hpp"
+
 namespace petersen {
 
 CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
@@ -12,13 +14,7 @@ CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
   std::vector<std::uint8_t> degree(node_count, 0);
   for (EdgeId e = 0; e < edges.size(); ++e) {
     auto [a, b] = edges[e];
-    if (a >= node_count || b >= node_count) {
-      throw GraphError("edge " + std::to_string(e) + " has an endpoint out of range (" +
-                       std::to_string(a) + ", " + std::to_string(b) + "; " +
-                       std::to_string(node_count) + " nodes)");
-    }
-    if (a == b)
-      throw GraphError("edge " + std::to_string(e) + " is a loop at node " + std::to_string(a));
+    graph_detail::check_edge_ends(e, a, b, node_count);
     for (NodeId v : {a, b}) {
       if (degree[v] == 3) {
         throw GraphError("node " + std::to_string(v) + " has degree > 3 (edge " +
@@ -49,13 +45,7 @@ CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<
   // seen[e] bit i: end i of edge e has been met in a slot of that node.
   std::vector<std::uint8_t> seen(edge_count, 0);
   for (EdgeId e = 0; e < edge_count; ++e) {
-    if (edge_ends[2 * e] >= node_count || edge_ends[2 * e + 1] >= node_count) {
-      throw GraphError("edge " + std::to_string(e) + " has an endpoint out of range");
-    }
-    if (edge_ends[2 * e] == edge_ends[2 * e + 1]) {
-      throw GraphError("edge " + std::to_string(e) + " is a loop at node " +
-                       std::to_string(edge_ends[2 * e]));
-    }
+    graph_detail::check_edge_ends(e, edge_ends[2 * e], edge_ends[2 * e + 1], node_count);
   }
   for (std::size_t slot = 0; slot < node_edges.size(); ++slot) {
     const NodeId v = static_cast<NodeId>(slot / 3);
