@@ -94,6 +94,20 @@ std::string mutate(std::string bytes, int kind, std::size_t where, char byte) {
   return bytes;
 }
 
+// One to five mutations drawn at random. Digits, signs and separators make structured damage more
+// likely than random bytes alone.
+std::string damaged(std::string bytes) {
+  const auto edits = *rc::gen::inRange(1, 6);
+  for (int i = 0; i < edits; ++i) {
+    const int kind = *rc::gen::inRange(0, 4);
+    const auto where = *rc::gen::arbitrary<std::size_t>();
+    const char byte = *rc::gen::oneOf(rc::gen::arbitrary<char>(),
+                                      rc::gen::elementOf(std::string("0123456789-+.e \n/#")));
+    bytes = mutate(std::move(bytes), kind, where, byte);
+  }
+  return bytes;
+}
+
 TEST(ParserFuzz, SeedsParseAsTetrahedra) {
   for (const Seed& seed : seeds()) {
     const TriangleMesh mesh = parse_triangle_mesh(seed.bytes, seed.format, "seed");
@@ -104,16 +118,7 @@ TEST(ParserFuzz, SeedsParseAsTetrahedra) {
 
 RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowMeshError, ()) {
   const Seed& seed = *rc::gen::elementOf(seeds());
-  std::string bytes = seed.bytes;
-  const auto edits = *rc::gen::inRange(1, 6);
-  for (int i = 0; i < edits; ++i) {
-    const int kind = *rc::gen::inRange(0, 4);
-    const auto where = *rc::gen::arbitrary<std::size_t>();
-    // Digits, signs and separators make structured damage more likely than random bytes alone.
-    const char byte = *rc::gen::oneOf(rc::gen::arbitrary<char>(),
-                                      rc::gen::elementOf(std::string("0123456789-+.e \n/#")));
-    bytes = mutate(std::move(bytes), kind, where, byte);
-  }
+  const std::string bytes = damaged(seed.bytes);
   try {
     const TriangleMesh mesh = parse_triangle_mesh(bytes, seed.format, "fuzz");
     RC_ASSERT(mesh.positions.size() + mesh.triangles.size() <= bytes.size());
@@ -154,15 +159,7 @@ const std::vector<Seed>& polygon_seeds() {
 
 RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowMeshError, ()) {
   const Seed& seed = *rc::gen::elementOf(polygon_seeds());
-  std::string bytes = seed.bytes;
-  const auto edits = *rc::gen::inRange(1, 6);
-  for (int i = 0; i < edits; ++i) {
-    const int kind = *rc::gen::inRange(0, 4);
-    const auto where = *rc::gen::arbitrary<std::size_t>();
-    const char byte = *rc::gen::oneOf(rc::gen::arbitrary<char>(),
-                                      rc::gen::elementOf(std::string("0123456789-+.e \n/#")));
-    bytes = mutate(std::move(bytes), kind, where, byte);
-  }
+  const std::string bytes = damaged(seed.bytes);
   bool all_triangles = false;
   try {
     const PolygonMesh mesh = parse_mesh(bytes, seed.format, "fuzz");
