@@ -102,6 +102,11 @@ void measure(const std::string& name, const CubicGraph& g) {
         faithful_per_search = r.stats.augment_seconds / double(r.stats.augmenting_paths);
       print_row(algorithm + "+faithful", r.stats, faithful_seconds, faithful_seconds / bfs_median,
                 n);
+    } else if (faithful_per_search == 0) {
+      // PS left nothing to search (Schrijver matched a bipartite graph): no cost to scale from.
+      std::printf("%-14s not run and not estimated: no PS search was timed on this graph\n",
+                  (algorithm + "+faithful").c_str());
+      continue;
     } else {
       faithful_seconds = local[a].stats.initial_seconds +
                          faithful_per_search * double(local[a].stats.augmenting_paths);

@@ -32,14 +32,19 @@ void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) 
 
 // SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect. PS and
 // the augmentation share one NeighbourTable, built in PS's time; SG does not read neighbours,
-// so for SG it is built in the augmentation's time.
+// so for SG it is built in the augmentation's time. For PS, Schrijver's algorithm is tried first
+// on the same table: it matches a bipartite graph perfectly in about 2.5 BFS passes, where PS
+// leaves patches of one colour that cost the augmentation 20 BFS passes (the regular plates),
+// and it stops at the first odd cycle, within a few hundred steps on every shared mesh.
 void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
   Stopwatch initial;
   std::optional<NeighbourTable> table;
   if (options.algorithm == Algorithm::sg) {
     simple_greedy(graph, result.matching, options.seed);
   } else {
-    puli_segal(table.emplace(graph), result.matching, options.seed);
+    NeighbourTable& rows = table.emplace(graph);
+    result.stats.schrijver = schrijver(rows, &result.matching.mate_edge);
+    if (!result.stats.schrijver) puli_segal(rows, result.matching, options.seed);
   }
   result.stats.initial_seconds = initial.seconds();
   result.stats.unpaired_after_initial = result.matching.unmatched_count();

@@ -1,10 +1,19 @@
-// SG and PS (paper §3.1) alone: valid matchings, maximal, seeded.
+// SG and PS (paper §3.1) alone: valid matchings, maximal, seeded; Schrijver's exact matching of
+// bipartite graphs, which PS hands bipartite graphs to.
 
 #include "greedy/greedy.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
+#include "neighbour_table.hpp"
+#include "petersen/graph/seeded_random.hpp"
+#include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/perfect_partners.hpp"
 #include "petersen/testing/arbitrary.hpp"
 
 namespace petersen {
@@ -56,6 +65,109 @@ TEST(PuliSegal, PairsFarMoreThanSimpleGreedyOnASurface) {
   EXPECT_GT(sg.unmatched_count() / n, 0.08);
   EXPECT_LT(sg.unmatched_count() / n, 0.18);
   EXPECT_LT(ps.unmatched_count() / n, 0.01);
+}
+
+// Two-colourable, by a breadth-first colouring of its own (the oracle Schrijver is held to).
+bool is_bipartite(const CubicGraph& g) {
+  std::vector<int> colour(g.node_count(), -1);
+  for (NodeId s = 0; s < g.node_count(); ++s) {
+    if (colour[s] >= 0) continue;
+    colour[s] = 0;
+    std::vector<NodeId> queue{s};
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+      const NodeId v = queue[head];
+      for (EdgeId e : g.incident_edges(v)) {
+        const NodeId u = g.other_end(e, v);
+        if (colour[u] < 0) {
+          colour[u] = 1 - colour[v];
+          queue.push_back(u);
+        } else if (colour[u] == colour[v]) {
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// A random 3-regular bipartite multigraph on 2k nodes: three random perfect matchings between
+// the two sides (parallel edges where two agree), the node ids shuffled so the sides interleave.
+CubicGraph random_bipartite_cubic(std::uint32_t k, std::uint64_t seed) {
+  SeededRandom random(seed);
+  std::vector<NodeId> id(2 * k);
+  std::iota(id.begin(), id.end(), 0);
+  for (std::uint32_t i = 2 * k - 1; i > 0; --i) std::swap(id[i], id[random.below(i + 1)]);
+  std::vector<std::array<NodeId, 2>> edges;
+  std::vector<NodeId> side(k);
+  for (int round = 0; round < 3; ++round) {
+    std::iota(side.begin(), side.end(), 0);
+    for (std::uint32_t i = k - 1; i > 0; --i) std::swap(side[i], side[random.below(i + 1)]);
+    for (std::uint32_t i = 0; i < k; ++i) edges.push_back({id[i], id[k + side[i]]});
+  }
+  return CubicGraph::from_edges(2 * k, edges);
+}
+
+rc::Gen<CubicGraph> bipartite_cubic_graphs() {
+  return rc::gen::apply(random_bipartite_cubic, rc::gen::inRange<std::uint32_t>(1, 300),
+                        rc::gen::arbitrary<std::uint64_t>());
+}
+
+RC_GTEST_PROP(Schrijver, MatchesEveryBipartiteCubicGraphPerfectly, ()) {
+  const CubicGraph g = *bipartite_cubic_graphs();
+  NeighbourTable table(g);
+  Matching m(g.node_count());
+  RC_ASSERT(schrijver(table, &m.mate_edge));
+  RC_ASSERT(verify_perfect_matching(g, m).ok());
+  // The search state is fresh for the matching, as PS leaves it for the augmentation.
+  for (NodeId v = 0; v < g.node_count(); ++v) {
+    const augment_detail::Slot& slot = table.slot(v);
+    RC_ASSERT(slot.mate == g.other_end(m.mate_edge[v], v));
+    RC_ASSERT(slot.tag == 0u);
+    RC_ASSERT(slot.link == augment_detail::kNone);
+    RC_ASSERT(slot.base == v);
+  }
+}
+
+RC_GTEST_PROP(Schrijver, FailsOnlyOnOddCyclesAndThenWritesNothing, ()) {
+  // Cubic bridgeless graphs of every kind (K3,3, even prisms and thetas are bipartite; duals of
+  // irregular triangulations and the Petersen graph are not). A bipartite graph is always
+  // matched; another one is either matched perfectly (the walk met even cycles only, as on K4)
+  // or left untouched.
+  const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
+  NeighbourTable table(g);
+  Matching m(g.node_count());
+  const bool matched = schrijver(table, &m.mate_edge);
+  if (is_bipartite(g)) RC_ASSERT(matched);
+  if (matched) {
+    RC_ASSERT(verify_perfect_matching(g, m).ok());
+  } else {
+    RC_ASSERT(m.unmatched_count() == g.node_count());
+  }
+  RC_TAG(is_bipartite(g) ? "bipartite" : matched ? "matched anyway" : "odd cycle met");
+}
+
+RC_GTEST_PROP(Schrijver, TakesPSsPlaceOnBipartiteGraphsAtBothFrontDoors, ()) {
+  const CubicGraph g = *bipartite_cubic_graphs();
+  const Result r = perfect_matching(g, {.algorithm = Algorithm::ps, .validate = false});
+  RC_ASSERT(r.stats.schrijver);
+  RC_ASSERT(r.stats.unpaired_after_initial == 0u);
+  RC_ASSERT(verify_perfect_matching(g, r.matching).ok());
+  const HugeVector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
+  const PartnerResult p = perfect_partners(rows);
+  RC_ASSERT(p.stats.schrijver);
+  RC_ASSERT(verify_perfect_partners(rows, p.partner).ok());
+}
+
+TEST(Schrijver, MatchesTheRegularPlatesAndLeavesThePetersenGraphToPS) {
+  // A regular voxel plate's dual is bipartite (the plates where PS leaves one-colour patches).
+  const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
+  const Result r = perfect_matching(plate);
+  EXPECT_TRUE(r.stats.schrijver);
+  EXPECT_EQ(r.stats.augmenting_paths, 0u);
+  EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
+  const Result p = perfect_matching(petersen_graph());
+  EXPECT_FALSE(p.stats.schrijver);
+  EXPECT_TRUE(verify_perfect_matching(petersen_graph(), p.matching).ok());
 }
 
 }  // namespace

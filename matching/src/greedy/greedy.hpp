@@ -23,4 +23,13 @@ void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
 /// the table's search state, each slot's mate node. Returns the number of nodes left unpaired.
 std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed);
 
+/// Schrijver's perfect matching of a 3-regular bipartite graph (schrijver.cpp), over a table
+/// whose search state it writes fresh for the matching (and, with `mate_edge`, the mate edges),
+/// like PS. Returns false when the walk meets an odd cycle or a loop, so never on a bipartite
+/// graph: then no mate edge is written and the search state is left for PS to write. (On a
+/// graph that is not bipartite the walk may still meet even cycles only; its matching is then
+/// perfect all the same: every node keeps weight 3 on exactly one edge.)
+/// Θ(n) time; extra memory: the walk's path, 8 bytes per node on it (at most n).
+bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge);
+
 }  // namespace petersen

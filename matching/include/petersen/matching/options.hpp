@@ -11,7 +11,8 @@ namespace petersen {
 
 enum class Algorithm {
   sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
-  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths
+  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths; on a bipartite
+          ///< graph Schrijver's exact matching instead (Stats::schrijver)
   ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
   gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
   frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
@@ -65,6 +66,10 @@ struct Stats {
   std::uint64_t lift_cases[3] = {0, 0, 0};  ///< Appendix A cases (i), (ii), (iii)
   std::uint64_t replacement_searches = 0;   ///< ds: dynamic-connectivity replacement searches
   std::uint64_t cover_swaps = 0;            ///< gw: tree edges swapped for a covering non-tree edge
+  /// ps: Schrijver's algorithm matched the graph perfectly in PS's place, nothing left to augment.
+  /// It does on every bipartite graph (where PS leaves patches of one colour, bench/RESULTS.md);
+  /// it gives up at the first odd cycle its walk meets, and PS runs as before.
+  bool schrijver = false;
 
   double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)
   double paired_percent(std::uint32_t node_count) const {                        ///< (b)
