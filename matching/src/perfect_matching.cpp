@@ -43,7 +43,7 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
     simple_greedy(graph, result.matching, options.seed);
   } else {
     NeighbourTable& rows = table.emplace(graph);
-    result.stats.schrijver = schrijver(rows, &result.matching.mate_edge);
+    result.stats.schrijver = options.bipartite_exact && schrijver(rows, &result.matching.mate_edge);
     if (!result.stats.schrijver) puli_segal(rows, result.matching, options.seed);
   }
   result.stats.initial_seconds = initial.seconds();

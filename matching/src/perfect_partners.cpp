@@ -14,7 +14,7 @@ PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOption
   NeighbourTable table(rows);
   Stopwatch initial;
   // A bipartite graph is matched exactly by Schrijver's algorithm (perfect_matching.cpp says why).
-  result.stats.schrijver = schrijver(table, nullptr);
+  result.stats.schrijver = options.bipartite_exact && schrijver(table, nullptr);
   result.stats.unpaired_after_initial =
       result.stats.schrijver ? 0 : puli_segal_on_rows(table, options.seed);
   result.stats.initial_seconds = initial.seconds();

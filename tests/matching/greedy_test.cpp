@@ -170,5 +170,19 @@ TEST(Schrijver, MatchesTheRegularPlatesAndLeavesThePetersenGraphToPS) {
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), p.matching).ok());
 }
 
+// bipartite_exact = false runs the paper's PS alone: on the plate it leaves nodes to augment.
+TEST(Schrijver, IsSkippedWhenNotAsked) {
+  const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
+  const Result r = perfect_matching(plate, {.bipartite_exact = false});
+  EXPECT_FALSE(r.stats.schrijver);
+  EXPECT_GT(r.stats.unpaired_after_initial, 0u);
+  EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
+  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  const PartnerResult p = perfect_partners(rows, {.bipartite_exact = false});
+  EXPECT_FALSE(p.stats.schrijver);
+  EXPECT_GT(p.stats.unpaired_after_initial, 0u);
+  EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
+}
+
 }  // namespace
 }  // namespace petersen

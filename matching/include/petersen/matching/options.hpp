@@ -43,6 +43,10 @@ struct Options {
   Algorithm algorithm = Algorithm::ps;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
+  /// ps: try Schrijver's exact matching first, which matches a bipartite graph perfectly where PS
+  /// leaves patches of one colour (Stats::schrijver). False runs the paper's PS alone, as the
+  /// bench's paper-faithful rows do.
+  bool bipartite_exact = true;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
   /// The matcher Algorithm::lemon runs. The core links no peer library: a caller that compares

@@ -13,6 +13,7 @@ namespace petersen {
 struct PartnerOptions {
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
+  bool bipartite_exact = true;  ///< as Options::bipartite_exact
 };
 
 struct PartnerResult {
