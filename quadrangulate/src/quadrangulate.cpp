@@ -54,9 +54,11 @@ std::optional<Objective> parse_objective(std::string_view name) {
 
 namespace {
 
-// The front door; `movable`, when given, is the mesh's own positions, which the output takes over
-// instead of copying once nothing reads them any more.
-QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Positions* movable) {
+// The front door; `movable`, when given, is the mesh itself, whose positions the output takes over
+// instead of copying once nothing reads them any more, and whose corners lrs may free
+// (pair_triangles).
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
+                         PolygonMesh* movable) {
   if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
     throw std::invalid_argument("max_corner_deviation is NaN");
   }
@@ -104,8 +106,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
   graph.chosen_cut_ends = HugeVector<NodeId>();  // `= {}` would keep the capacity
   stats.check_seconds = clock.lap();
 
-  quad_detail::TrianglePairing pairing =
-      quad_detail::pair_triangles(graph, mesh, degrees, options, stats);
+  // Counted before the pairing, which may free the mesh's corners.
+  const std::size_t corners_in = mesh.corners.size();
+  quad_detail::TrianglePairing pairing = quad_detail::pair_triangles(
+      graph, mesh, movable != nullptr ? &movable->corners : nullptr, degrees, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
     stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
   }
@@ -120,14 +124,14 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
   }
   PolygonMesh& out = result.mesh;
   if (movable != nullptr) {
-    out.positions = std::move(*movable);
+    out.positions = std::move(movable->positions);
   } else {
     out.positions = mesh.positions;
   }
   // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
   std::size_t paired_nodes = 0;
   for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
-  out.corners.reserve(mesh.corners.size() - paired_nodes);
+  out.corners.reserve(corners_in - paired_nodes);
   result.sources.reserve(face_count - paired_nodes / 2);
   if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
   std::vector<quad_detail::FaceKind> kinds;  // for all_quad only
@@ -216,6 +220,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
     quad_detail::split_leftovers(result, kinds);
     stats.all_quad_seconds = clock.lap();
   }
+  if (!options.sources) result.sources = HugeVector<std::array<FaceId, 2>>();
   stats.total_seconds = total.lap();
   return result;
 }
@@ -227,7 +232,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
 }
 
 QuadResult quadrangulate(PolygonMesh&& mesh, const QuadOptions& options) {
-  return quadrangulate(mesh, options, &mesh.positions);
+  return quadrangulate(mesh, options, &mesh);
 }
 
 }  // namespace petersen
