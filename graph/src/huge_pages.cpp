@@ -177,6 +177,23 @@ void release_retained() {
   empty_pool(false);
 }
 
+void trim_retained(std::size_t keep_bytes) {
+  if (!pool_on.load(std::memory_order_acquire)) return;
+  Retained& kept = retained();
+  std::vector<Range> given_back;
+  {
+    const std::lock_guard lock(kept.mutex);
+    std::sort(kept.ranges.begin(), kept.ranges.end(),
+              [](const Range& a, const Range& b) { return a.bytes < b.bytes; });
+    while (kept.bytes > keep_bytes) {
+      given_back.push_back(kept.ranges.back());
+      kept.bytes -= kept.ranges.back().bytes;
+      kept.ranges.pop_back();
+    }
+  }
+  for (const Range& r : given_back) munmap(r.start, r.bytes);
+}
+
 std::size_t retained_bytes() {
   if (!pool_on.load(std::memory_order_acquire)) return 0;
   Retained& kept = retained();
@@ -198,6 +215,7 @@ void enable_pool(std::size_t) {}
 void enable_pool_unless_switched_off() {}
 void disable_pool() {}
 void release_retained() {}
+void trim_retained(std::size_t) {}
 std::size_t retained_bytes() {
   return 0;
 }

@@ -44,7 +44,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
     ++f;
   }
   if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
-  tri.input_vertex_ = std::vector<VertexId>();
+  tri.input_vertex_ = HugeVector<VertexId>();
   expansion.edge_state = HugeVector<std::uint8_t>();
 
   // Each row entry from the halfedge's twin, in one sweep in halfedge order (twins are

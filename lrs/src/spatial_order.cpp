@@ -28,7 +28,7 @@ std::uint32_t spread(std::uint32_t x, int bits) {
 }
 
 // Per vertex, its cell's index along the Morton curve.
-std::vector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
+HugeVector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
   std::array<double, 3> low, high;
   low.fill(std::numeric_limits<double>::max());
   high.fill(std::numeric_limits<double>::lowest());
@@ -46,7 +46,7 @@ std::vector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
         extent > 0 && extent < std::numeric_limits<double>::infinity() ? (1u << bits) / extent : 0;
   }
   const double last = (1u << bits) - 1;
-  std::vector<std::uint32_t> cell(positions.size());
+  HugeVector<std::uint32_t> cell(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
     std::uint32_t code = 0;
     for (int a = 0; a < 3; ++a) {
@@ -60,19 +60,19 @@ std::vector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
 }
 
 // A stable counting sort of the items 0..key.size()-1 by key < cells: the items in order.
-std::vector<std::uint32_t> sorted_by_cell(const std::vector<std::uint32_t>& key,
-                                          std::uint32_t cells) {
+HugeVector<std::uint32_t> sorted_by_cell(const HugeVector<std::uint32_t>& key,
+                                         std::uint32_t cells) {
   std::vector<std::uint32_t> start(cells + 1, 0);
   for (std::uint32_t k : key) ++start[k + 1];
   for (std::uint32_t c = 0; c < cells; ++c) start[c + 1] += start[c];
-  std::vector<std::uint32_t> order(key.size());
+  HugeVector<std::uint32_t> order(key.size());
   for (std::uint32_t i = 0; i < key.size(); ++i) order[start[key[i]]++] = i;
   return order;
 }
 
 }  // namespace
 
-std::vector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count) {
+HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count) {
   const int bits = bits_per_axis(face_count);
   return sorted_by_cell(vertex_cells(positions, bits), 1u << (3 * bits));
 }
@@ -81,7 +81,7 @@ SpatialMesh spatially_ordered(const TriangleMesh& mesh) {
   SpatialMesh out;
   const int bits = bits_per_axis(mesh.triangles.size());
   const std::uint32_t cells = 1u << (3 * bits);
-  const std::vector<std::uint32_t> cell = vertex_cells(mesh.positions, bits);
+  const HugeVector<std::uint32_t> cell = vertex_cells(mesh.positions, bits);
   out.input_vertex = sorted_by_cell(cell, cells);
   std::vector<VertexId> new_id(mesh.positions.size());
   out.mesh.positions.resize(mesh.positions.size());
@@ -89,9 +89,9 @@ SpatialMesh spatially_ordered(const TriangleMesh& mesh) {
     new_id[out.input_vertex[v]] = v;
     out.mesh.positions[v] = mesh.positions[out.input_vertex[v]];
   }
-  std::vector<std::uint32_t> face_cell(mesh.triangles.size());
+  HugeVector<std::uint32_t> face_cell(mesh.triangles.size());
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) face_cell[t] = cell[mesh.triangles[t][0]];
-  const std::vector<std::uint32_t> faces = sorted_by_cell(face_cell, cells);
+  const HugeVector<std::uint32_t> faces = sorted_by_cell(face_cell, cells);
   out.mesh.triangles.resize(mesh.triangles.size());
   for (std::size_t t = 0; t < faces.size(); ++t) {
     const auto& corners = mesh.triangles[faces[t]];

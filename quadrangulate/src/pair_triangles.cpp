@@ -313,6 +313,7 @@ void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePair
 }  // namespace
 
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
+                               HugeVector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats) {
   LapClock clock;
@@ -332,7 +333,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
       ComponentForest(n, graph.edge_ends).root_count() == 1) {
     stats.components = stats.closed_components = 1;
     try {
-      pair_whole_mesh_by_lrs(graph, mesh, options, pairing, stats, clock);
+      pair_whole_mesh_by_lrs(graph, mesh, releasable_corners, options, pairing, stats, clock);
       stats.maximum_certified = true;
       return pairing;
     } catch (const MeshError& e) {

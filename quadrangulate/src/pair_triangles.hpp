@@ -28,10 +28,13 @@ inline constexpr NodeId kLrsNode = kNoNode - 1;
 
 /// Pairs the nodes of `graph` (the pairable graph of `mesh`; its edge arrays may be taken over, its
 /// node_face stays) and checks the answer; Objective::quality needs `degrees`, the cost of each
-/// edge (pairable_edge_quality).
+/// edge (pairable_edge_quality). `releasable_corners`, when not null, is mesh.corners, which
+/// lrs on a whole closed mesh frees without options.sources (pair_whole_mesh_by_lrs); the mesh
+/// then has no corners when this returns.
 /// throws std::logic_error if a matching fails the verifier or its witness. Fills the matching,
 /// lrs, component and time fields of `stats`, and maximum_certified.
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
+                               HugeVector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats);
 

@@ -13,11 +13,14 @@ namespace petersen::quad_detail {
 /// Preconditions: mesh.all_triangles(), graph.cubic with no inconsistent edge and one component,
 /// and no corner or face attributes (a flipped triangle has none). Takes graph.node_edges and
 /// graph.edge_ends over; appends one LrsQuad per pair of K's triangles to pairing.lrs_quads, each
-/// with the input triangles behind it, and sets every partner to kLrsNode. Fills the matching
-/// and lrs fields of `stats` and its dual, initial, augment and verify times. Throws MeshError when
-/// lrs cannot take the surface (a pinched vertex): the graph's two arrays are gone then.
+/// with the input triangles behind it (kNoFace for both without options.sources), and sets every
+/// partner to kLrsNode. Without options.sources, `releasable_corners` (the consuming front door's
+/// mesh.corners, or null) is freed once lrs's triangulation is built: `mesh` has no corners from
+/// then on. Fills the matching and lrs fields of `stats` and its dual, initial, augment and verify
+/// times. Throws MeshError when lrs cannot take the surface (a pinched vertex): the graph's two
+/// arrays are gone then, the mesh's corners kept.
 void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
-                            const QuadOptions& options, TrianglePairing& pairing, QuadStats& stats,
-                            LapClock& clock);
+                            HugeVector<VertexId>* releasable_corners, const QuadOptions& options,
+                            TrianglePairing& pairing, QuadStats& stats, LapClock& clock);
 
 }  // namespace petersen::quad_detail

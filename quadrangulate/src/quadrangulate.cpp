@@ -54,9 +54,11 @@ std::optional<Objective> parse_objective(std::string_view name) {
 
 namespace {
 
-// The front door; `movable`, when given, is the mesh's own positions, which the output takes over
-// instead of copying once nothing reads them any more.
-QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Positions* movable) {
+// The front door; `movable`, when given, is the mesh itself, whose positions the output takes over
+// instead of copying once nothing reads them any more, and whose corners lrs may free
+// (pair_triangles).
+QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
+                         PolygonMesh* movable) {
   if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
     throw std::invalid_argument("max_corner_deviation is NaN");
   }
@@ -104,8 +106,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
   graph.chosen_cut_ends = HugeVector<NodeId>();  // `= {}` would keep the capacity
   stats.check_seconds = clock.lap();
 
-  quad_detail::TrianglePairing pairing =
-      quad_detail::pair_triangles(graph, mesh, degrees, options, stats);
+  // Counted before the pairing, which may free the mesh's corners.
+  const std::size_t corners_in = mesh.corners.size();
+  quad_detail::TrianglePairing pairing = quad_detail::pair_triangles(
+      graph, mesh, movable != nullptr ? &movable->corners : nullptr, degrees, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
     stats.genus = (2 * std::int64_t(stats.components) - stats.euler_characteristic) / 2;
   }
@@ -120,19 +124,28 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
   }
   PolygonMesh& out = result.mesh;
   if (movable != nullptr) {
-    out.positions = std::move(*movable);
+    out.positions = std::move(movable->positions);
   } else {
     out.positions = mesh.positions;
   }
   // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
   std::size_t paired_nodes = 0;
   for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
-  out.corners.reserve(mesh.corners.size() - paired_nodes);
-  result.sources.reserve(face_count - paired_nodes / 2);
+  out.corners.reserve(corners_in - paired_nodes);
   if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
-  std::vector<quad_detail::FaceKind> kinds;  // for all_quad only
-  auto emitted = [&](quad_detail::FaceKind kind) {
-    if (options.all_quad) kinds.push_back(kind);
+  // The sources are made when asked for and when all_quad or the attributes read them; otherwise
+  // each face's kind (1 byte where a source is 8: 0.8 GB of fresh memory less at 10^8
+  // triangles) tells the quads' measure below which faces are pairs' quads.
+  const bool make_sources = options.sources || options.all_quad ||
+                            mesh.attributes.has_corner_attributes() ||
+                            mesh.attributes.has_face_attributes();
+  const bool make_kinds = options.all_quad || !make_sources;
+  if (make_sources) result.sources.reserve(face_count - paired_nodes / 2);
+  std::vector<quad_detail::FaceKind> kinds;
+  if (make_kinds) kinds.reserve(face_count - paired_nodes / 2);
+  auto emitted = [&](quad_detail::FaceKind kind, std::array<FaceId, 2> sources) {
+    if (make_sources) result.sources.push_back(sources);
+    if (make_kinds) kinds.push_back(kind);
   };
   for (FaceId f = 0; f < face_count; ++f) {
     // A pair's second triangle is anywhere in the mesh: its corners are fetched a few faces
@@ -146,23 +159,21 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
     const NodeId partner = v == kNoNode ? kNoNode : pairing.partner[v];
     if (v == kNoNode || partner == kNoNode) {
       out.add_face(mesh.face(f));
-      result.sources.push_back({f, kNoFace});
       stats.triangles_left += v != kNoNode;
-      emitted(v != kNoNode ? quad_detail::FaceKind::left : quad_detail::FaceKind::kept);
+      emitted(v != kNoNode ? quad_detail::FaceKind::left : quad_detail::FaceKind::kept,
+              {f, kNoFace});
     } else if (partner != quad_detail::kLrsNode && v < partner) {
       const FaceId g = graph.face_of(partner);
       const std::array<VertexId, 4> quad = quad_of(mesh.face(f), mesh.face(g));
       out.add_face(quad);
-      result.sources.push_back({f, g});
       ++stats.pairs;
-      emitted(quad_detail::FaceKind::pair);
+      emitted(quad_detail::FaceKind::pair, {f, g});
     }
   }
   for (const quad_detail::LrsQuad& quad : pairing.lrs_quads) {
     out.add_face(quad.corners);
-    result.sources.push_back(quad.sources);
     ++stats.pairs;
-    emitted(quad_detail::FaceKind::pair);
+    emitted(quad_detail::FaceKind::pair, quad.sources);
   }
   for (NodeId v : pairing.tutte_set) result.tutte_set.push_back(graph.face_of(v));
   // Freed before the quads' costs are measured beside the output (`= {}` would keep the buffer):
@@ -189,9 +200,10 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
         }
       }
       const auto c = out.face(o);
-      const bool pair_quad =
-          c.size() == 4 && (result.sources[o][1] != kNoFace || result.sources[o][0] == kNoFace ||
-                            mesh.arity(result.sources[o][0]) == 3);
+      const bool pair_quad = make_sources ? c.size() == 4 && (result.sources[o][1] != kNoFace ||
+                                                              result.sources[o][0] == kNoFace ||
+                                                              mesh.arity(result.sources[o][0]) == 3)
+                                          : kinds[o] == quad_detail::FaceKind::pair;
       costs[o] = pair_quad ? quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) : -1.0;
     }
   });
@@ -216,6 +228,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options, Po
     quad_detail::split_leftovers(result, kinds);
     stats.all_quad_seconds = clock.lap();
   }
+  if (!options.sources) result.sources = HugeVector<std::array<FaceId, 2>>();
   stats.total_seconds = total.lap();
   return result;
 }
@@ -227,7 +240,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options) {
 }
 
 QuadResult quadrangulate(PolygonMesh&& mesh, const QuadOptions& options) {
-  return quadrangulate(mesh, options, &mesh.positions);
+  return quadrangulate(mesh, options, &mesh);
 }
 
 }  // namespace petersen

@@ -90,6 +90,26 @@ TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
   huge_pages::release_retained();
 }
 
+TEST(HugePages, TrimGivesBackTheLargestKeptRangesFirst) {
+  const PoolOn pool;
+  auto* small = static_cast<char*>(huge_pages::acquire(huge_pages::kPageBytes));
+  void* large = huge_pages::acquire(kRange);
+  std::memset(small, 0xAB, huge_pages::kPageBytes);
+  huge_pages::release(small, huge_pages::kPageBytes);
+  huge_pages::release(large, kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), kRange + huge_pages::kPageBytes);
+  huge_pages::trim_retained(kRange);  // over by the small range: the large one goes
+  EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);
+  void* again = huge_pages::acquire(huge_pages::kPageBytes);
+  EXPECT_EQ(again, small);  // the small one is still kept, as it was
+  EXPECT_TRUE(all_bytes(again, huge_pages::kPageBytes, 0xAB));
+  huge_pages::release(again, huge_pages::kPageBytes);
+  huge_pages::trim_retained(huge_pages::kPageBytes);  // within the limit: nothing goes
+  EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);
+  huge_pages::trim_retained(0);
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+}
+
 TEST(HugePages, ForkedChildDoesNotReuseItsParentsRanges) {
   const PoolOn pool;
   void* range = huge_pages::acquire(kRange);

@@ -12,6 +12,7 @@
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/edge_contraction.hpp"
 #include "petersen/lrs/edge_flip.hpp"
+#include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
 namespace petersen::lrs {
@@ -100,6 +101,30 @@ RC_GTEST_PROP(Triangulation, FromDualKeepsTheSurface, ()) {
   for (VertexId v = 0; v < input.size(); ++v) input[v] = tri.input_vertex(v);
   std::sort(input.begin(), input.end());
   for (VertexId v = 0; v < input.size(); ++v) RC_ASSERT(input[v] == v);
+}
+
+// A caller that has counted one component skips the count, and gets the same triangulation.
+RC_GTEST_PROP(Triangulation, FromDualTrustsTheCallersCount, ()) {
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
+  const CubicGraph dual = build_dual(mesh).graph;
+  const auto build = [&](Triangulation::Connectivity connectivity) {
+    return Triangulation::from_dual(mesh.positions, testing::flat_corners(mesh),
+                                    {dual.node_edges().begin(), dual.node_edges().end()},
+                                    {dual.edge_ends().begin(), dual.edge_ends().end()},
+                                    connectivity);
+  };
+  const Triangulation counted = build(Triangulation::Connectivity::unknown);
+  const Triangulation trusted = build(Triangulation::Connectivity::connected);
+  RC_ASSERT(trusted.check() == "");
+  RC_ASSERT(trusted.edge_capacity() == counted.edge_capacity());
+  for (Halfedge h = 0; h < 2 * counted.edge_capacity(); ++h) {
+    RC_ASSERT(trusted.origin(h) == counted.origin(h));
+    RC_ASSERT(trusted.next(h) == counted.next(h));
+  }
+  for (VertexId v = 0; v < counted.vertex_capacity(); ++v) {
+    RC_ASSERT(trusted.out(v) == counted.out(v));
+    RC_ASSERT(trusted.input_vertex(v) == counted.input_vertex(v));
+  }
 }
 
 TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {

@@ -297,6 +297,35 @@ RC_GTEST_PROP(Quadrangulate, ConsumingTheMeshGivesTheSameAnswer, ()) {
   }
 }
 
+// Without sources asked for, the same output mesh and stats, and no sources: on closed surfaces
+// through lrs's whole-mesh path (whose consuming door frees the input's corners early) and on
+// mixed meshes through the others, by either door.
+RC_GTEST_PROP(Quadrangulate, WithoutSourcesTheSameMesh, ()) {
+  const bool closed = *rc::gen::arbitrary<bool>();
+  const PolygonMesh mesh = closed ? to_polygon_mesh(*testing::closed_triangulations_up_to(3))
+                                  : random_mixed_mesh(*rc::gen::inRange<std::uint64_t>(0, 1u << 30),
+                                                      *rc::gen::inRange<std::uint32_t>(4, 300));
+  const Algorithm algorithm =
+      *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::lrs, Algorithm::ps});
+  const QuadOptions with{.algorithm = algorithm};
+  QuadOptions without = with;
+  without.sources = false;
+  const QuadResult expected = quadrangulate(mesh, with);
+  PolygonMesh consumed = mesh;
+  const bool consume = *rc::gen::arbitrary<bool>();
+  const QuadResult result =
+      consume ? quadrangulate(std::move(consumed), without) : quadrangulate(mesh, without);
+  RC_ASSERT(result.sources.empty());
+  RC_ASSERT(result.mesh.positions == expected.mesh.positions);
+  RC_ASSERT(result.mesh.corners == expected.mesh.corners);
+  RC_ASSERT(result.mesh.face_start == expected.mesh.face_start);
+  RC_ASSERT(result.stats.pairs == expected.stats.pairs);
+  RC_ASSERT(result.stats.triangles_left == expected.stats.triangles_left);
+  RC_ASSERT(result.stats.flipped_edges == expected.stats.flipped_edges);
+  RC_ASSERT(result.stats.quality_median == expected.stats.quality_median);
+  RC_ASSERT(result.stats.maximum_certified);
+}
+
 // Chosen cuts (materials, seams, the caller's edges, a shape threshold) refuse pairs but leave the
 // surface as it is: a closed surface of genus g still reports genus g, as `petersen info`'s own
 // count from the mesh does, even where the cuts split its pairable graph into pieces.

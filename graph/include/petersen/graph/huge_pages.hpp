@@ -51,6 +51,12 @@ void disable_pool();
 /// Returns every kept range to the kernel; the pool stays on if it was.
 void release_retained();
 
+/// Returns kept ranges to the kernel, largest first, until the pool keeps at most `keep_bytes`;
+/// the pool stays on if it was. For a caller that frees an array nothing will reuse: with the
+/// retained_bytes() from before freeing it, the pool gives back about that much and keeps what
+/// the next arrays can take again. O(r log r) for r kept ranges.
+void trim_retained(std::size_t keep_bytes);
+
 /// The bytes the pool keeps now (0 while it is off).
 std::size_t retained_bytes();
 

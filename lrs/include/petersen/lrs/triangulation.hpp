@@ -40,6 +40,14 @@ class Triangulation {
  public:
   Triangulation() = default;
 
+  /// What from_dual knows of the triangles' components.
+  enum class Connectivity {
+    unknown,  ///< counted there (a disjoint-set pass over the edges), several refused
+    /// the caller has found them connected (quadrangulate counts the pairable graph's components
+    /// to choose lrs's path): the same pass is not made twice
+    connected,
+  };
+
   /// How from_mesh numbers the elements.
   enum class Numbering {
     as_given,  ///< vertex ids are the mesh's
@@ -64,12 +72,14 @@ class Triangulation {
   /// smaller vertex; input_vertex() gives the mesh's
   /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
   /// form several fans) or orientation is inconsistent around it, and when the triangles form
-  /// several components; std::invalid_argument when the arrays are not a dual of the triangles.
-  /// Each array is freed once the next is made: at most the slots (12 bytes per triangle), the
-  /// links (24) and the vertex arrays at a time, where from_mesh holds two copies of
-  /// the mesh, its own dual and the surface check's scratch. O(V + F).
+  /// several components (unless `connectivity` says the caller has counted one);
+  /// std::invalid_argument when the arrays are not a dual of the triangles. Each array is freed
+  /// once the next is made: beside the caller's positions and corners, at most the slots (12
+  /// bytes per triangle), the links (24) and one vertex array (2) at a time, where from_mesh holds
+  /// two copies of the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
-                                 HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
+                                 HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
+                                 Connectivity connectivity = Connectivity::unknown);
 
   /// The input mesh's id of vertex v.
   VertexId input_vertex(VertexId v) const { return input_vertex_.empty() ? v : input_vertex_[v]; }
@@ -158,7 +168,7 @@ class Triangulation {
   HugeVector<std::uint8_t> edge_alive_;
   HugeVector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
   HugeVector<std::uint32_t> degree_;
-  std::vector<VertexId> input_vertex_;  // empty when the numbering is the input's
+  HugeVector<VertexId> input_vertex_;  // empty when the numbering is the input's
   std::uint32_t face_capacity_ = 0;
   std::uint32_t live_vertices_ = 0, live_edges_ = 0, live_faces_ = 0;
 };

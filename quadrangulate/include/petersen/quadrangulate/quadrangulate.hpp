@@ -82,6 +82,11 @@ struct QuadOptions {
   /// classifying the edges, the quads' measure); 0: every core. Threads are started for the call
   /// and joined before it returns. The result does not depend on it.
   std::uint32_t threads = 1;
+  /// Whether QuadResult::sources is filled. A caller that does not read them (the command-line
+  /// tool) turns this off: lrs then need not find each quad's triangles among the input's, and the
+  /// consuming front door frees the input's corners early (bench/RESULTS.md, issue 15: at most 64
+  /// bytes per triangle).
+  bool sources = true;
 };
 
 struct QuadStats {
@@ -147,7 +152,7 @@ struct QuadResult {
   /// For each output face, the input faces it came from: {t1, t2} for a pair's quad (the quad
   /// follows t1's orientation), {f, kNoFace} for a face kept or left. With lrs, a triangle its
   /// flips made new has no input face (kNoFace). A face split by all_quad names the faces of the
-  /// quad or triangle it was split from.
+  /// quad or triangle it was split from. Empty without QuadOptions::sources.
   HugeVector<std::array<FaceId, 2>> sources;
   /// The proof that no pairing leaves fewer triangles: a set A of triangles (input face ids)
   /// such that removing A from the pairable graph leaves triangles_left + |A| components with an
@@ -161,8 +166,10 @@ struct QuadResult {
 /// cannot reach a leftover triangle's partner. O(n log d) plus the algorithm's cost.
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
 /// The same, consuming the mesh: its positions move into the output mesh instead of being copied
-/// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles). Whether it returns or throws,
-/// `mesh` is left valid with unspecified contents.
+/// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles), and without
+/// QuadOptions::sources lrs on a whole closed mesh frees its corners once its triangulation is
+/// built (12 bytes per triangle less at lrs's peak). Whether it returns or throws, `mesh` is left
+/// valid with unspecified contents.
 QuadResult quadrangulate(PolygonMesh&& mesh, const QuadOptions& options = {});
 
 }  // namespace petersen
