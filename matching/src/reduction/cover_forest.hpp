@@ -64,6 +64,7 @@ class CoverForest {
   static constexpr std::uint32_t kReversed = detail::kLinkCutReversed;
   static constexpr std::uint32_t kPending = detail::kLinkCutUserFlag;
   static constexpr std::uint32_t kIdMask = detail::kLinkCutIdMask, kNil = detail::kLinkCutNil;
+  static constexpr std::uint32_t kLongClimb = 8;  // cover() splays past this depth
   struct Push {
     [[gnu::always_inline]] void operator()(Node* t, std::uint32_t x) const;
   };
