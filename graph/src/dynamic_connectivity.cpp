@@ -50,9 +50,7 @@ DynamicConnectivity::~DynamicConnectivity() = default;
 DynamicConnectivity::DynamicConnectivity(DynamicConnectivity&&) noexcept = default;
 DynamicConnectivity& DynamicConnectivity::operator=(DynamicConnectivity&&) noexcept = default;
 
-void DynamicConnectivity::reserve_block(Block& block, std::uint32_t i) {
-  if (i < block.capacity) [[likely]]
-    return;
+void DynamicConnectivity::grow_block(Block& block, std::uint32_t i) {
   // Capacities are powers of two; a block given up (outgrown here, or its edge's arcs gone in
   // delete_edge) is handed out again for the next request of its size. Left behind, they were
   // most of the pool: 39 entries per vertex on fertility-sub3's dual, grown by copying to 134 MB.

@@ -53,7 +53,8 @@ class EulerTourForest {
   // those loads). meta = vertex count << 5 | aggregate flags << 3 | own bits (0, 1 the flags,
   // 2 vertex); the owner, read once per raised edge, keeps an array of its own.
   struct Node {
-    EttNode left = kNoEtt, right = kNoEtt, parent = kNoEtt;
+    EttNode child[2] = {kNoEtt, kNoEtt};  // left, right
+    EttNode parent = kNoEtt;
     std::uint32_t meta = 0;
   };
   static constexpr std::uint32_t kOwnMask = 7, kAggregateShift = 3, kCountShift = 5;
@@ -62,8 +63,9 @@ class EulerTourForest {
   std::uint32_t own(EttNode x) const { return nodes_[x].meta & kOwnMask; }
   std::uint32_t aggregate(EttNode x) const { return (nodes_[x].meta >> kAggregateShift) & 3; }
   EttNode make_node(std::uint32_t owner, bool vertex);
-  void update(EttNode x);
-  void rotate(EttNode x);
+  // Inline in splay: out of line, with a branch per child, it cost ds 180M more instructions
+  // of 2.1G (Callgrind, armadillo's dual).
+  [[gnu::always_inline]] inline void update(EttNode x);
   void splay(EttNode x);
   EttNode join(EttNode a, EttNode b);  // roots (or kNoEtt) of two sequences; returns the root
   EttNode detach_left(EttNode x);      // x must be a root; returns its old left subtree's root

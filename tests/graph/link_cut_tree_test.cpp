@@ -51,14 +51,14 @@ RC_GTEST_PROP(LinkCutTree, AgreesWithBruteForce, ()) {
           brute.edges.insert({std::min(u, v), std::max(u, v)});
         }
         break;
-      case 1:  // cut an existing edge: u and v become the roots of the two parts
+      case 1:  // cut an existing edge: the part without the root is rooted at its end of it
         if (!brute.edges.empty()) {
           auto it = brute.edges.begin();
           std::advance(it, *rc::gen::inRange<std::size_t>(0, brute.edges.size()));
           auto [a, b] = *it;
-          brute.is_root[tree[a]] = 0;
           brute.edges.erase(it);
-          brute.is_root[a] = brute.is_root[b] = 1;
+          brute.is_root[parent[a] == b ? a : b] = 1;
+          if (*rc::gen::arbitrary<bool>()) std::swap(a, b);
           lct.cut(a, b);
         }
         break;
@@ -70,6 +70,7 @@ RC_GTEST_PROP(LinkCutTree, AgreesWithBruteForce, ()) {
       case 3:
         RC_ASSERT(lct.find_root(u) == tree[u]);
         RC_ASSERT(lct.connected(u, v) == (tree[u] == tree[v]));
+        RC_ASSERT(lct.in_tree_of(tree[v], u) == (tree[u] == tree[v]));
         break;
       default:
         if (tree[u] == tree[v]) {

@@ -23,74 +23,14 @@ void CoverForest::hang(NodeId child, EdgeId e, NodeId parent, EdgeId cover) {
   nodes_[edge_node(e)] = Node{{kNil, kNil}, parent, cover};
 }
 
-bool CoverForest::is_splay_root(std::uint32_t x) const {
-  const std::uint32_t p = parent(x);
-  return p == kNil || (nodes_[p].child[0] != x && nodes_[p].child[1] != x);
-}
-
 void CoverForest::give_label(std::uint32_t x, EdgeId label) {
-  nodes_[x].label = label;
+  nodes_[x].data = label;
   nodes_[x].up |= kPending;
 }
 
-void CoverForest::push(std::uint32_t x) {
-  Node& n = nodes_[x];
-  if (n.up & kReversed) {
-    std::swap(n.child[0], n.child[1]);
-    for (std::uint32_t c : n.child)
-      if (c != kNil) nodes_[c].up ^= kReversed;
-  }
-  if (n.up & kPending) {
-    for (std::uint32_t c : n.child)
-      if (c != kNil) give_label(c, n.label);
-  }
-  n.up &= kIdMask;
-}
-
-void CoverForest::rotate(std::uint32_t x, bool parent_is_root) {
-  // x, its parent y and y's parent z were pushed by splay: their flags are clear.
-  const std::uint32_t y = parent(x), z = parent(y);
-  const int side = nodes_[y].child[1] == x ? 1 : 0;
-  if (!parent_is_root) nodes_[z].child[nodes_[z].child[1] == y ? 1 : 0] = x;
-  nodes_[x].up = z;
-  const std::uint32_t moved = nodes_[x].child[1 - side];
-  nodes_[y].child[side] = moved;
-  if (moved != kNil) set_parent(moved, y);
-  nodes_[x].child[1 - side] = y;
-  nodes_[y].up = x;
-}
-
-void CoverForest::splay(std::uint32_t x) {
-  path_.clear();
-  for (std::uint32_t y = x;; y = parent(y)) {
-    path_.push_back(y);
-    if (is_splay_root(y)) break;
-  }
-  for (auto it = path_.rbegin(); it != path_.rend(); ++it) push(*it);
-  // x's depth in its splay tree is known, so no step asks again where the root is.
-  std::size_t depth = path_.size() - 1;
-  for (; depth >= 2; depth -= 2) {
-    const std::uint32_t y = parent(x), z = parent(y);
-    const bool zigzig = (nodes_[y].child[0] == x) == (nodes_[z].child[0] == y);
-    if (zigzig)
-      rotate(y, depth == 2);
-    else
-      rotate(x, false);
-    rotate(x, depth == 2);
-  }
-  if (depth == 1) rotate(x, true);
-}
-
 std::uint32_t CoverForest::access(std::uint32_t x) {
-  std::uint32_t last = kNil;
-  for (std::uint32_t y = x; y != kNil; y = parent(y)) {
-    splay(y);
-    nodes_[y].child[1] = last;
-    last = y;
-  }
-  splay(x);
   accessed_ = x;
-  return last;
+  return core_.access(nodes_.get(), x);
 }
 
 void CoverForest::evert(NodeId a) {
@@ -112,10 +52,9 @@ void CoverForest::link(EdgeId e, NodeId a, NodeId b) {
 
 void CoverForest::swap(EdgeId in, NodeId a, NodeId b, EdgeId out) {
   // Label the path a..b first, then split it at out's node: the part from a (the root) hangs
-  // below in's node, which hangs below b.
-  evert(a);
-  access(b);
-  give_label(b, out);
+  // below in's node, which hangs below b. After parent_edge(b) under the root a (gw's stage 0)
+  // the path is already b's splay tree: a splay instead of an access.
+  cover_path(a, b, out);
   const std::uint32_t m = edge_node(out);
   splay(m);
   const std::uint32_t above = nodes_[m].child[0];
@@ -183,11 +122,19 @@ void CoverForest::cover_path(NodeId a, NodeId b, EdgeId cover) {
 
 EdgeId CoverForest::cover(EdgeId e) {
   // A pending label reaches only the splay tree it was given in (one preferred path; a path
-  // parent is no child), so splaying e's node within its splay tree pushes down every label
-  // that applies to it: the climb along path parents an access would add is not needed. That was
-  // a quarter of cover's splays on armadillo-sub2's dual (1.4M covers, 3.4 splays per access).
-  splay(edge_node(e));
-  return nodes_[edge_node(e)].label;
+  // parent is no child), and one given later to a tree holding e's node was given at a root above
+  // it: the label that applies is that of e's highest ancestor in its splay tree with a pending
+  // label, else e's own. A climb reads it without writing; a splay (3.4 per access before an
+  // access was not needed either) pays for a long climb.
+  const std::uint32_t x = edge_node(e);
+  EdgeId label = nodes_[x].data;
+  std::uint32_t depth = 0;
+  for (std::uint32_t y = x; !core_.is_splay_root(nodes_.get(), y); ++depth) {
+    y = parent(y);
+    if (nodes_[y].up & kPending) label = nodes_[y].data;
+  }
+  if (depth > kLongClimb) splay(x);
+  return label;
 }
 
 }  // namespace petersen::reduction

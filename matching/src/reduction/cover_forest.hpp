@@ -6,10 +6,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/link_cut_splay.hpp"
 
 namespace petersen::reduction {
 
@@ -27,7 +29,8 @@ class CoverForest {
   void link(EdgeId e, NodeId a, NodeId b);
   /// Puts non-tree edge in = {a, b} into the forest in place of tree edge out, which must lie on
   /// the tree path between a and b; that path's other edges and in are labelled out (out's
-  /// fundamental cycle after the swap). Two accesses.
+  /// fundamental cycle after the swap). Two accesses, one when cover_path(a, b, ·) would need
+  /// one (after parent_edge(b) under the root a, for instance).
   void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
   /// Cuts tree edge e from its end that is its tree's root (the node last everted): e's node
   /// becomes the root of the other end's tree (a leaf there after the next evert; its label is
@@ -54,35 +57,49 @@ class CoverForest {
   EdgeId cover(EdgeId e);
 
  private:
-  // 16 bytes, four to a cache line. The two high bits of `up` are the lazy flags: the subtree's
-  // children are to be swapped, or `label` is to be given to both subtrees. A pending label equals
-  // an edge node's own label, and graph nodes have none of their own, so one field holds both.
-  struct Node {
-    std::uint32_t child[2];
-    std::uint32_t up;     // splay parent, or path parent for a splay root; flags in bits 30, 31
-    std::uint32_t label;  // edge nodes: the cover; graph nodes: the pending label
+  // Node.data: edge nodes, the cover; graph nodes, the pending label. The user flag of `up` marks
+  // a pending label for the subtree's children: it equals an edge node's own label, and graph
+  // nodes have none of their own, so one field holds both.
+  using Node = detail::LinkCutNode;
+  static constexpr std::uint32_t kReversed = detail::kLinkCutReversed;
+  static constexpr std::uint32_t kPending = detail::kLinkCutUserFlag;
+  static constexpr std::uint32_t kIdMask = detail::kLinkCutIdMask, kNil = detail::kLinkCutNil;
+  static constexpr std::uint32_t kLongClimb = 8;  // cover() splays past this depth
+  struct Push {
+    [[gnu::always_inline]] void operator()(Node* t, std::uint32_t x) const;
   };
-  static constexpr std::uint32_t kReversed = 1u << 31, kPending = 1u << 30;
-  static constexpr std::uint32_t kIdMask = kPending - 1, kNil = kIdMask;
   std::uint32_t parent(std::uint32_t x) const { return nodes_[x].up & kIdMask; }
   void set_parent(std::uint32_t x, std::uint32_t p) {
     nodes_[x].up = (nodes_[x].up & ~kIdMask) | p;
   }
   std::uint32_t edge_node(EdgeId e) const { return base_ + e; }
-  bool is_splay_root(std::uint32_t x) const;
   void give_label(std::uint32_t x, EdgeId label);
-  [[gnu::always_inline]] inline void push(std::uint32_t x);
-  void rotate(std::uint32_t x, bool parent_is_root);
-  void splay(std::uint32_t x);
+  void push(std::uint32_t x) { Push{}(nodes_.get(), x); }
+  void splay(std::uint32_t x) { core_.splay(nodes_.get(), x); }
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
 
   HugeArray<Node> nodes_;
-  std::uint32_t base_;               // the node of edge 0
-  std::vector<std::uint32_t> path_;  // scratch for splay's top-down push
-  std::uint32_t root_ = kNil;        // the node last everted while it is still its tree's root
+  std::uint32_t base_;  // the node of edge 0
+  detail::LinkCutSplay<Push> core_;
+  std::uint32_t root_ = kNil;  // the node last everted while it is still its tree's root
   // The node last accessed while the preferred path from the root to it is unchanged: set by
   // access(), cleared by every operation that changes paths after it.
   std::uint32_t accessed_ = kNil;
 };
+
+inline void CoverForest::Push::operator()(Node* t, std::uint32_t x) const {
+  Node& n = t[x];
+  if (!(n.up & (kReversed | kPending))) return;
+  if (n.up & kReversed) {
+    std::swap(n.child[0], n.child[1]);
+    for (std::uint32_t c : n.child)
+      if (c != kNil) t[c].up ^= kReversed;
+  }
+  if (n.up & kPending) {
+    for (std::uint32_t c : n.child)
+      if (c != kNil) t[c].data = n.data, t[c].up |= kPending;
+  }
+  n.up &= kIdMask;
+}
 
 }  // namespace petersen::reduction

@@ -32,9 +32,9 @@ void DsChooser::remove(const ReductionGraph&, std::span<const EdgeId> edges) {
 bool DsChooser::choose_h1(const ReductionGraph& graph, const Step& step) {
   const NodeId x1 = graph.other_end(step.a1, step.u), x2 = graph.other_end(step.a2, step.u);
   const NodeId x3 = graph.other_end(step.b3, step.v), x4 = graph.other_end(step.b4, step.v);
-  // Rooted at x1, a root query answers connectivity: one access each instead of two.
+  // Rooted at x1, connectivity to x1 takes one access each instead of two.
   forest_.evert(x1);
-  if (forest_.find_root(x2) != x1) return forest_.find_root(x3) != x1;  // split 13|24 or 14|23
+  if (!forest_.in_tree_of(x1, x2)) return !forest_.in_tree_of(x1, x3);  // split 13|24 or 14|23
   // The quartet is 13|24 exactly when x2 and x4 meet below where x3 joins them. Each lca
   // starts at the node the previous one ended on (a second access of a node is a single splay
   // step): three full accesses, four when l23 == l34, against six.

@@ -53,17 +53,21 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
   HugeVector<EdgeId>& node_edges = copy.node_edges;
   HugeVector<NodeId>& edge_ends = copy.edge_ends;
   node_edges.resize(3 * std::size_t{n});
-  edge_ends.reserve(2 * (std::size_t{m} + n));  // a reduction adds at most two edges per two nodes
-  edge_ends.resize(2 * std::size_t{m});
+  // A reduction adds at most two edges per two nodes. Edge ids are given in the order the ends
+  // are written, so they are appended, as is `low`: zero-filling the two first (9.2 MB on
+  // fertility-sub3's dual) was 4.6 % of gw's LL misses there (Callgrind, 32 MiB LL).
+  edge_ends.reserve(2 * (std::size_t{m} + n));
   copy.old_node.reserve(n);
   copy.old_edge.reserve(m);
   copy.component.reserve(n);
   copy.tree_edge.reserve(n);
   copy.cover.assign(n, kNoEdge);
-  HugeVector<NodeId> low(n);  // by new id: the smallest preorder number a back edge reaches
+  HugeVector<NodeId> low;  // by new id: the smallest preorder number a back edge reaches
+  low.reserve(n);
   const auto visit = [&](NodeId v, EdgeId tree_edge) {
     const auto id = static_cast<NodeId>(copy.old_node.size());
-    new_node[v] = low[id] = id;
+    new_node[v] = id;
+    low.push_back(id);
     copy.old_node.push_back(v);
     copy.component.push_back(copy.components);
     copy.tree_edge.push_back(tree_edge);
@@ -103,8 +107,8 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
         low[nv] = new_node[w];  // a back edge to an ancestor
         copy.cover[nv] = id;
       }
-      edge_ends[2 * std::size_t{id}] = new_node[a];
-      edge_ends[2 * std::size_t{id} + 1] = new_node[b];
+      edge_ends.push_back(new_node[a]);
+      edge_ends.push_back(new_node[b]);
       if (tree_edge) stack.push_back({w, 0});  // after the last use of the reference v
     }
     ++copy.components;

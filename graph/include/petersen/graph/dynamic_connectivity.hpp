@@ -80,7 +80,13 @@ class DynamicConnectivity {
   std::vector<Block> vertex_block_, arc_block_;
   std::vector<std::uint32_t> pool_;
   std::array<std::vector<std::uint32_t>, 32> free_blocks_;  // bases of free blocks of size 2^i
-  void reserve_block(Block& block, std::uint32_t i);  // room for index i, moving the block if not
+  // Room for index i, moving the block if not. The check inline, the move not: a call per arc
+  // and vertex lookup was 3 % of ds's instructions (Callgrind, armadillo's dual).
+  void reserve_block(Block& block, std::uint32_t i) {
+    if (i >= block.capacity) [[unlikely]]
+      grow_block(block, i);
+  }
+  void grow_block(Block& block, std::uint32_t i);
   void release_block(Block& block);
   std::uint64_t replacement_searches_ = 0;
 };

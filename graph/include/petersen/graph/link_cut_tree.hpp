@@ -3,14 +3,16 @@
 // under link, cut and evert, with roots and lowest common ancestors, all O(log n) amortized.
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/link_cut_splay.hpp"
 
 namespace petersen {
 
-/// A dynamic forest on nodes 0..n-1 in flat arrays: splay trees over preferred paths with a
-/// reversal bit for evert. Splaying is iterative. Every operation is O(log n) amortized.
+/// A dynamic forest on nodes 0..n-1 (n < 2^30 - 1) in flat arrays: splay trees over preferred paths
+/// with a reversal bit for evert. Splaying is iterative. Every operation is O(log n) amortized.
 class LinkCutTree {
  public:
   explicit LinkCutTree(std::uint32_t node_count);
@@ -20,31 +22,39 @@ class LinkCutTree {
   void evert(NodeId u);
   /// Adds the edge {u, v}; u and v must be in different trees. u becomes a child of v.
   void link(NodeId u, NodeId v);
-  /// Removes the edge {u, v}, which must be in the forest.
+  /// Removes the edge {u, v}, which must be in the forest. The part that held the root keeps it;
+  /// the other is rooted at its end of the edge. One access and a splay.
   void cut(NodeId u, NodeId v);
   /// The root of u's tree.
   NodeId find_root(NodeId u);
   bool connected(NodeId u, NodeId v) { return find_root(u) == find_root(v); }
+  /// Whether u lies in the tree of r, which must be its tree's root (as after evert(r)). One
+  /// access, and no splay of the root as find_root(u) == r has.
+  bool in_tree_of(NodeId r, NodeId u);
   /// The lowest common ancestor of u and v under the current roots; they must be connected.
   NodeId lca(NodeId u, NodeId v);
 
  private:
-  // A node's children, parent and reversal bit in one 16-byte record, four to a cache line: a
-  // splay step reads x, its parent and grandparent, one line each (they were three or four lines
-  // each in separate arrays).
-  struct Node {
-    NodeId child[2] = {kNoNode, kNoNode};  // left (toward the root), right
-    NodeId parent = kNoNode;               // splay parent, or path parent for a splay root
-    std::uint32_t reversed = 0;
+  // The splay core and 16-byte records are the cover forest's (link_cut_splay.hpp); this tree's
+  // only lazy flag is the reversal.
+  struct Push {
+    [[gnu::always_inline]] void operator()(detail::LinkCutNode* t, std::uint32_t x) const;
   };
-  bool is_splay_root(NodeId x) const;
-  void push(NodeId x);
-  void rotate(NodeId x, bool parent_is_root);  // x's parent and grandparent are pushed
-  void splay(NodeId x);
-  NodeId access(NodeId x);  // returns the last node where the path to the root was switched
+  void push(NodeId x) { Push{}(nodes_.data(), x); }
+  void splay(NodeId x) { core_.splay(nodes_.data(), x); }
+  NodeId access(NodeId x) { return core_.access(nodes_.data(), x); }
 
-  std::vector<Node> nodes_;
-  std::vector<NodeId> path_;  // scratch for splay's top-down push
+  std::vector<detail::LinkCutNode> nodes_;
+  detail::LinkCutSplay<Push> core_;
 };
+
+inline void LinkCutTree::Push::operator()(detail::LinkCutNode* t, std::uint32_t x) const {
+  detail::LinkCutNode& n = t[x];
+  if (!(n.up & detail::kLinkCutReversed)) return;
+  std::swap(n.child[0], n.child[1]);
+  for (std::uint32_t c : n.child)
+    if (c != detail::kLinkCutNil) t[c].up ^= detail::kLinkCutReversed;
+  n.up &= detail::kLinkCutIdMask;
+}
 
 }  // namespace petersen
