@@ -560,7 +560,8 @@ class BlossomSolver {
 
   // Removes top-level unlabelled blossom b of dual zero, and its children of dual zero.
   void dissolve(std::uint32_t b) {
-    std::vector<std::uint32_t> stack{b};
+    std::vector<std::uint32_t>& stack = dissolve_stack_;
+    stack.assign(1, b);
     while (!stack.empty()) {
       const std::uint32_t c = stack.back();
       stack.pop_back();
@@ -600,6 +601,8 @@ class BlossomSolver {
     const std::uint32_t nb = new_blossom();
     std::vector<std::uint32_t>& ch = children_[nb - n_];
     std::vector<Conn>& conn = conn_[nb - n_];
+    ch.reserve(1 + path_u_.size() + path_v_.size());
+    conn.reserve(ch.capacity());
     ch.push_back(lca);
     for (std::size_t i = path_u_.size(); i-- > 0;) {
       const std::uint32_t x = path_u_[i];
@@ -635,8 +638,15 @@ class BlossomSolver {
   // one the tree enters by to the base, take b's place in the tree; the others become unlabelled.
   void expand_odd(std::uint32_t b) {
     ++stats_.blossoms_expanded;
-    std::vector<std::uint32_t> ch = std::move(children_[b - n_]);
-    std::vector<Conn> conn = std::move(conn_[b - n_]);
+    // The cycle is swapped out into scratch vectors, which hand their (cleared) buffers to the
+    // freed id: moving it out left the id without capacity, and shrink's pushes into it
+    // reallocated (malloc, free and the copies: 4 % of the instructions, armadillo's dual).
+    std::vector<std::uint32_t>& ch = expand_children_;
+    std::vector<Conn>& conn = expand_conn_;
+    ch.clear();
+    conn.clear();
+    ch.swap(children_[b - n_]);
+    conn.swap(conn_[b - n_]);
     const std::size_t k = ch.size();
     const std::uint32_t entry = child_holding(b, link_[b].to);
     for (std::uint32_t c : ch) rec_[c].parent = kNone;
@@ -648,7 +658,8 @@ class BlossomSolver {
 
     // The path from the entry child to the base child: backward when j is even, else forward.
     ++stamp_;
-    std::vector<std::uint32_t> even_children;
+    std::vector<std::uint32_t>& even_children = even_children_;
+    even_children.clear();
     std::size_t i = j;
     mark_[ch[i]] = stamp_;
     label_odd(ch[i], from, to, edge, tree);
@@ -803,6 +814,8 @@ class BlossomSolver {
   std::vector<std::uint32_t> released_;
   std::vector<NodeId> scratch_;
   std::vector<std::uint32_t> odd_children_;
+  std::vector<std::uint32_t> dissolve_stack_, expand_children_, even_children_;
+  std::vector<Conn> expand_conn_;
   std::vector<std::uint32_t> path_u_, path_v_;
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
