@@ -63,6 +63,27 @@ TEST(RadixQueue, EqualKeysAllComeOutBeforeALargerOne) {
   EXPECT_TRUE(queue.empty());
 }
 
+// Keys differing from the last one in the top bits land on the top digit, which covers fewer
+// bits than the others when the digit width does not divide 64.
+TEST(RadixQueue, KeysUpToTheTopBit) {
+  RadixQueue<int> queue;
+  constexpr std::uint64_t top = std::uint64_t{1} << 63;
+  queue.push(top + 7, 3);
+  queue.push(~std::uint64_t{0}, 4);
+  queue.push(top - 1, 2);
+  queue.push(1, 1);
+  int item = 0;
+  EXPECT_EQ(queue.pop(item), 1u);
+  EXPECT_EQ(item, 1);
+  EXPECT_EQ(queue.pop(item), top - 1);
+  EXPECT_EQ(item, 2);
+  EXPECT_EQ(queue.pop(item), top + 7);
+  EXPECT_EQ(item, 3);
+  EXPECT_EQ(queue.pop(item), ~std::uint64_t{0});
+  EXPECT_EQ(item, 4);
+  EXPECT_TRUE(queue.empty());
+}
+
 // Buckets hold their items in blocks of 64: thousands of items on a few keys fill many blocks
 // per bucket, and every item still comes out once, in key order.
 RC_GTEST_PROP(RadixQueue, CrowdedBucketsGiveBackEveryItemInKeyOrder, ()) {

@@ -1,16 +1,18 @@
 #pragma once
 // A monotone priority queue on integer keys (a radix heap): the key taken out never decreases,
 // and every key put in is at least the last one taken out. An item lives in the bucket named by
-// the highest 4-bit digit in which its key differs from the last key taken and by its value in
+// the highest 6-bit digit in which its key differs from the last key taken and by its value in
 // that digit (the current key's own items in bucket 0); taking out empties bucket 0, or else
 // takes the first non-empty bucket (a bitmap finds it): on the lowest digit all its keys are
 // equal and it becomes bucket 0 whole, higher up its items move around its smallest key (kept
 // per bucket) to buckets of lower digits. An item moves at most once per digit: 2 moves per item
-// taken instead of 6 with one bucket per bit (armadillo-sub2's dual), where the moves, the scans
-// for the first non-empty bucket and for a bucket's smallest key were 17 % of the solver's
-// instructions (callgrind, armadillo's dual). The buckets are read sequentially: the binary heap
-// before them missed the cache on every level of a 3M-entry heap (27 % of the time on
-// fertility-sub3's dual).
+// taken with 4-bit digits instead of 6 with one bucket per bit (armadillo-sub2's dual), where the
+// moves, the scans for the first non-empty bucket and for a bucket's smallest key were 17 % of
+// the solver's instructions (callgrind, armadillo's dual). 6-bit digits against 4 (callgrind,
+// fertility-sub3's dual): 5.7 % fewer of the solver's instructions, 1.7 % more D1 and 1 % more
+// last-level read misses; 8-bit: 9.1 % fewer instructions, 4.6 % and 3.4 % more misses. The
+// buckets are read sequentially: the binary heap before them missed the cache on every level of
+// a 3M-entry heap (27 % of the time on fertility-sub3's dual).
 
 #include <array>
 #include <bit>
@@ -52,9 +54,10 @@ class RadixQueue {
   }
 
  private:
-  static constexpr int kDigitBits = 4;
+  static constexpr int kDigitBits = 6;
   static constexpr int kDigits = 1 << kDigitBits;
-  static constexpr int kBuckets = 1 + 64 / kDigitBits * kDigits;  // 0: the current key
+  static constexpr int kLevels = (64 + kDigitBits - 1) / kDigitBits;
+  static constexpr int kBuckets = 1 + kLevels * kDigits;  // 0: the current key
   static constexpr int kWords = (kBuckets + 63) / 64;
   static constexpr std::uint64_t kNoKey = std::numeric_limits<std::uint64_t>::max();
   static constexpr std::uint32_t kBlockEntries = 64;
