@@ -541,21 +541,20 @@ class BlossomSolver {
   // whose dual is zero dissolve: they constrain nothing.
   void release(std::uint32_t t) {
     --alive_trees_;
-    released_.clear();
     members_.drain(member_heads_[t], [&](std::uint32_t b) {
       if (rec_[b].label == kUnlabelled || rec_[b].parent != kNone || rec_[b].tree != t) return;
       settle(b);
       rec_[b].label = kUnlabelled;
-      released_.push_back(b);
+      if (b >= n_ && rec_[b].y == 0) dissolvable_.push_back(b);  // nodes are most members
     });
     parked_.drain(parked_heads_[t], [&](const Event& event) {
       queue_.push(static_cast<std::uint64_t>(delta_), event);
       ++stats_.queue_pushes;
     });
-    for (std::uint32_t b : released_) {
-      if (b >= n_ && rec_[b].parent == kNone && !children_[b - n_].empty() && rec_[b].y == 0)
-        dissolve(b);
+    for (std::uint32_t b : dissolvable_) {
+      if (rec_[b].parent == kNone && !children_[b - n_].empty()) dissolve(b);
     }
+    dissolvable_.clear();
   }
 
   // Removes top-level unlabelled blossom b of dual zero, and its children of dual zero.
@@ -811,7 +810,7 @@ class BlossomSolver {
   ChainPool<Event> parked_;
   std::vector<std::uint32_t> parked_heads_;
   std::size_t alive_trees_ = 0;
-  std::vector<std::uint32_t> released_;
+  std::vector<std::uint32_t> dissolvable_;  // release: its blossoms of dual zero
   std::vector<NodeId> scratch_;
   std::vector<std::uint32_t> odd_children_;
   std::vector<std::uint32_t> dissolve_stack_, expand_children_, even_children_;
