@@ -711,36 +711,44 @@ class BlossomSolver {
   }
 
   // Makes node v the base of blossom b, flipping the matched edges on the even side of each
-  // cycle between v's child and the base child, level by level (an explicit stack).
+  // cycle between v's child and the base child, level by level (an explicit stack of (blossom,
+  // node) to rebase). Each entry walks once from its node up to its blossom and rebases every
+  // level of that walk, top down, the child holding the node being the blossom one step below:
+  // finding that child afresh at each level walked the nested blossoms again from the node
+  // (fertility-sub3's dual nests over 100 deep).
   void rebase(std::uint32_t b, NodeId v) {
     if (b < n_) return;
     rebase_stack_.assign(1, {b, v});
     while (!rebase_stack_.empty()) {
-      auto [blossom, node] = rebase_stack_.back();
+      const auto [outer, node] = rebase_stack_.back();
       rebase_stack_.pop_back();
-      std::vector<std::uint32_t>& ch = children_[blossom - n_];
-      std::vector<Conn>& conn = conn_[blossom - n_];
-      const std::size_t k = ch.size();
-      const std::uint32_t c = child_holding(blossom, node);
-      const std::size_t j =
-          static_cast<std::size_t>(std::find(ch.begin(), ch.end(), c) - ch.begin());
-      if (c >= n_) rebase_stack_.push_back({c, node});
-      auto match = [&](std::size_t i) {
-        const Conn& cn = conn[i];
-        rec_[cn.x].mate = {cn.e, cn.y};
-        rec_[cn.y].mate = {cn.e, cn.x};
-        if (ch[i] >= n_) rebase_stack_.push_back({ch[i], cn.x});
-        const std::uint32_t d = ch[(i + 1) % k];
-        if (d >= n_) rebase_stack_.push_back({d, cn.y});
-      };
-      if (j % 2 == 0) {
-        for (std::size_t i = 0; i + 1 < j; i += 2) match(i);
-      } else {
-        for (std::size_t i = j + 1; i < k; i += 2) match(i);
+      rebase_chain_.clear();
+      for (std::uint32_t x = node; x != outer; x = rec_[x].parent) rebase_chain_.push_back(x);
+      rebase_chain_.push_back(outer);
+      for (std::size_t level = rebase_chain_.size() - 1; level > 0; --level) {
+        const std::uint32_t blossom = rebase_chain_[level], c = rebase_chain_[level - 1];
+        std::vector<std::uint32_t>& ch = children_[blossom - n_];
+        std::vector<Conn>& conn = conn_[blossom - n_];
+        const std::size_t k = ch.size();
+        const std::size_t j =
+            static_cast<std::size_t>(std::find(ch.begin(), ch.end(), c) - ch.begin());
+        auto match = [&](std::size_t i) {
+          const Conn& cn = conn[i];
+          rec_[cn.x].mate = {cn.e, cn.y};
+          rec_[cn.y].mate = {cn.e, cn.x};
+          if (ch[i] >= n_) rebase_stack_.push_back({ch[i], cn.x});
+          const std::uint32_t d = ch[(i + 1) % k];
+          if (d >= n_) rebase_stack_.push_back({d, cn.y});
+        };
+        if (j % 2 == 0) {
+          for (std::size_t i = 0; i + 1 < j; i += 2) match(i);
+        } else {
+          for (std::size_t i = j + 1; i < k; i += 2) match(i);
+        }
+        std::rotate(ch.begin(), ch.begin() + static_cast<std::ptrdiff_t>(j), ch.end());
+        std::rotate(conn.begin(), conn.begin() + static_cast<std::ptrdiff_t>(j), conn.end());
+        base_[blossom] = node;
       }
-      std::rotate(ch.begin(), ch.begin() + static_cast<std::ptrdiff_t>(j), ch.end());
-      std::rotate(conn.begin(), conn.begin() + static_cast<std::ptrdiff_t>(j), conn.end());
-      base_[blossom] = node;
     }
   }
 
@@ -818,6 +826,7 @@ class BlossomSolver {
   std::vector<std::uint32_t> path_u_, path_v_;
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
+  std::vector<std::uint32_t> rebase_chain_;
 };
 
 }  // namespace petersen::weighted_detail
