@@ -1,9 +1,10 @@
 // Exact minimum-cost perfect matching under issue 14's quad measure: petersen's certified solver
 // against LEMON's MaxWeightedPerfectMatching on the same integer costs, beside PS with local
 // augmentation (shape-blind, the cardinality floor), on the dual of each mesh.
-// Usage: petersen_weighted_speed [--no-lemon] [mesh files...]; without files it measures every
-// shared mesh of at least 80k triangles from ../shared/meshes (when present).
-// Columns: ours_s and ps_s are wall-time medians of 3 rounds, cpu_s that of the thread's CPU time
+// Usage: petersen_weighted_speed [--no-lemon] [--rounds N] [mesh files...]; without files it
+// measures every shared mesh of at least 80k triangles from ../shared/meshes (when present).
+// --rounds 1 runs the solver once per mesh (for callgrind; the default is 3).
+// Columns: ours_s and ps_s are wall-time medians of the rounds, cpu_s that of the thread's CPU time
 // (cpu_min the least); xfaster = LEMON's wall time / ours, xcpu = LEMON's CPU time / ours, x_ps
 // and xcpu_ps = ours / PS in wall and CPU time. On a loaded machine the CPU ratios are the
 // steadier ones: both programs are single-threaded, and wall time adds whatever else ran.
@@ -51,17 +52,16 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-// The machine is shared: ours and PS run kRounds times alternately and report medians; LEMON,
+// The machine is shared: ours and PS run `rounds` times alternately and report medians; LEMON,
 // far slower, runs once.
-void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon) {
-  constexpr int kRounds = 3;
+void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon, int rounds) {
   const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
   const HugeVector<double> degrees = dual_edge_quality(mesh, dual);
   const HugeVector<Cost> costs = scale_costs(degrees);
   std::vector<double> ours, ours_cpu, ps, ps_cpu;
   MinCostResult result;
-  for (int round = 0; round < kRounds; ++round) {
+  for (int round = 0; round < rounds; ++round) {
     ours.push_back(seconds_of([&] {
       ours_cpu.push_back(cpu_seconds_of([&] { result = min_cost_perfect_matching(g, costs); }));
     }));
@@ -121,10 +121,17 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon)
 int main(int argc, char** argv) {
   std::vector<std::string> files;
   bool with_lemon = true;
+  int rounds = 3;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--no-lemon") {
       with_lemon = false;
+    } else if (arg == "--rounds" && i + 1 < argc) {
+      rounds = std::atoi(argv[++i]);
+      if (rounds < 1) {
+        std::fprintf(stderr, "--rounds needs a positive count\n");
+        return 2;
+      }
     } else {
       files.push_back(arg);
     }
@@ -142,6 +149,7 @@ int main(int argc, char** argv) {
       "xfaster", "xcpu", "ps_s", "x_ps", "xcpu_ps", "mean_deg", "free0", "blossoms", "pushes",
       "labels", "even_scan", "rel_scan");
   for (const std::string& file : files) {
-    measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon);
+    measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon,
+            rounds);
   }
 }

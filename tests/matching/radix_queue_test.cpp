@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <map>
+#include <vector>
 
 namespace petersen::weighted_detail {
 namespace {
@@ -60,6 +61,55 @@ TEST(RadixQueue, EqualKeysAllComeOutBeforeALargerOne) {
   EXPECT_EQ(queue.pop(item), 7u);
   EXPECT_EQ(item, 3);
   EXPECT_TRUE(queue.empty());
+}
+
+// Keys differing from the last one in the top bits land on the top digit, which covers fewer
+// bits than the others when the digit width does not divide 64.
+TEST(RadixQueue, KeysUpToTheTopBit) {
+  RadixQueue<int> queue;
+  constexpr std::uint64_t top = std::uint64_t{1} << 63;
+  queue.push(top + 7, 3);
+  queue.push(~std::uint64_t{0}, 4);
+  queue.push(top - 1, 2);
+  queue.push(1, 1);
+  int item = 0;
+  EXPECT_EQ(queue.pop(item), 1u);
+  EXPECT_EQ(item, 1);
+  EXPECT_EQ(queue.pop(item), top - 1);
+  EXPECT_EQ(item, 2);
+  EXPECT_EQ(queue.pop(item), top + 7);
+  EXPECT_EQ(item, 3);
+  EXPECT_EQ(queue.pop(item), ~std::uint64_t{0});
+  EXPECT_EQ(item, 4);
+  EXPECT_TRUE(queue.empty());
+}
+
+// Buckets hold their items in blocks of 64: thousands of items on a few keys fill many blocks
+// per bucket, and every item still comes out once, in key order.
+RC_GTEST_PROP(RadixQueue, CrowdedBucketsGiveBackEveryItemInKeyOrder, ()) {
+  const auto count = *rc::gen::inRange(1, 5000);
+  const auto spread = *rc::gen::inRange<std::uint64_t>(1, 300);
+  RadixQueue<std::uint32_t> queue;
+  std::multimap<std::uint64_t, std::uint32_t> reference;
+  for (int i = 0; i < count; ++i) {
+    const std::uint64_t key = *rc::gen::inRange<std::uint64_t>(0, spread);
+    queue.push(key, static_cast<std::uint32_t>(i));
+    reference.emplace(key, static_cast<std::uint32_t>(i));
+  }
+  std::vector<char> seen(static_cast<std::size_t>(count), 0);
+  std::uint64_t last = 0;
+  while (!queue.empty()) {
+    std::uint32_t item = 0;
+    const std::uint64_t key = queue.pop(item);
+    RC_ASSERT(key >= last);
+    RC_ASSERT(key == reference.begin()->first);
+    RC_ASSERT(item < seen.size());
+    RC_ASSERT(seen[item] == 0);
+    seen[item] = 1;
+    reference.erase(reference.begin());
+    last = key;
+  }
+  RC_ASSERT(reference.empty());
 }
 
 }  // namespace

@@ -24,8 +24,9 @@
 // took 27 % of the time on fertility-sub3, whose blossoms nest deeply.
 //
 // The forest labels top-level blossoms even or odd (each with its tree) and keeps one clock,
-// delta: a labelled blossom's dual is its stored value plus (even) or minus (odd) the time since
-// its label. The priority queue holds when each constraint meets zero: an edge from an even to
+// delta: a labelled blossom's dual is its stored value plus (even) or minus (odd) delta, the
+// stored value being offset by the clock when the label is set (an unlabelled blossom stores its
+// dual as it is). The priority queue holds when each constraint meets zero: an edge from an even to
 // an unlabelled blossom (its slack, at rate 1), an edge between two even blossoms (half its
 // slack: a blossom to shrink within a tree, an augmenting path between two trees), an odd
 // blossom's dual (to expand it). Entries are not removed when they go stale; each is checked
@@ -164,7 +165,8 @@ class BlossomSolver {
 
   /// Grows the alternating trees of all free nodes at once until none is left. Throws
   /// GraphError when no event is left while a tree is: then there is no perfect matching.
-  void run() {
+  /// Out of line, so that a profile (callgrind --toggle-collect) can single out the search.
+  [[gnu::noinline]] void run() {
     // Every root's dual is made even (lowering a free node's dual keeps every constraint), so
     // all labelled nodes share one parity and even-even slacks stay even (see the top).
     std::vector<NodeId> roots;
@@ -177,18 +179,17 @@ class BlossomSolver {
     parked_heads_.assign(roots.size(), kEnd);
     alive_trees_ = roots.size();
     delta_ = 0;
-    mates_.resize(n_);
     for (NodeId v = 0; v < n_; ++v) {
-      mates_[v] = {mate_[v], kNone};
+      rec_[v].mate = {mate_[v], kNone};
       for (const Slot& slot : slots_of(v)) {
-        if (slot.edge == mate_[v]) mates_[v].node = slot.other;
+        if (slot.edge == mate_[v]) rec_[v].mate.node = slot.other;
       }
     }
     for (std::uint32_t t = 0; t < roots.size(); ++t) {
       label_even(top(roots[t]), kNone, roots[t], kNoEdge, t);
     }
     while (alive_trees_ > 0) step();
-    for (NodeId v = 0; v < n_; ++v) mate_[v] = mates_[v].edge;
+    for (NodeId v = 0; v < n_; ++v) mate_[v] = rec_[v].mate.edge;
   }
 
   /// The dual solution; run() must have returned. O(n).
@@ -259,19 +260,26 @@ class BlossomSolver {
   [[gnu::always_inline]] std::int64_t current_dual(std::uint32_t b) const {
     switch (rec_[b].label) {
       case kEven:
-        return rec_[b].y + (delta_ - rec_[b].since);
+        return rec_[b].y + delta_;
       case kOdd:
-        return rec_[b].y - (delta_ - rec_[b].since);
+        return rec_[b].y - delta_;
       default:
         return rec_[b].y;
     }
   }
   // v's outermost blossom; the duals of the sets holding v below it go to `below`.
   // Most nodes scanned are their own top-level blossom: that case is inline, without the walk.
-  std::uint32_t find(NodeId v, std::int64_t& below) {
-    if (rec_[v].parent == kNone) [[likely]] {
+  [[gnu::always_inline]] std::uint32_t find(NodeId v, std::int64_t& below) {
+    const std::uint32_t p = rec_[v].parent;
+    if (p == kNone) [[likely]] {
       below = 0;
       return v;
+    }
+    // A node right inside a top-level blossom: its own dual is all there is below, and its
+    // shortcut (another array, another miss) is not read or written.
+    if (rec_[p].parent == kNone) {
+      below = rec_[v].y;
+      return p;
     }
     return find_nested(v, below);
   }
@@ -301,11 +309,8 @@ class BlossomSolver {
     return find(v, below);
   }
 
-  // Stores b's current dual, so its label can change.
-  void settle(std::uint32_t b) {
-    rec_[b].y = current_dual(b);
-    rec_[b].since = delta_;
-  }
+  // Stores b's current dual as it is; the caller unlabels b.
+  void settle(std::uint32_t b) { rec_[b].y = current_dual(b); }
 
   // ---- the queue
 
@@ -382,11 +387,11 @@ class BlossomSolver {
 
   // ---- labels
 
-  // Labels b without scanning it (the caller scans once every label around is set).
+  // Labels unlabelled b without scanning it (the caller scans once every label around is set).
   void set_label(std::uint32_t b, std::uint8_t label, NodeId from, NodeId to, EdgeId e,
                  std::uint32_t tree) {
     rec_[b].label = label;
-    rec_[b].since = delta_;
+    rec_[b].y += label == kEven ? -delta_ : delta_;  // so that current_dual(b) is unchanged
     link_[b] = {from, to, e};
     rec_[b].tree = tree;
     members_.push(member_heads_[tree], b);
@@ -398,7 +403,7 @@ class BlossomSolver {
   }
   void label_odd(std::uint32_t b, NodeId from, NodeId to, EdgeId e, std::uint32_t tree) {
     set_label(b, kOdd, from, to, e, tree);
-    if (b >= n_) push_expand(delta_ + rec_[b].y, b);
+    if (b >= n_) push_expand(delta_ + current_dual(b), b);
   }
 
   // Queues every edge from the nodes of blossom b (now even, b itself or inside the even blossom
@@ -423,13 +428,9 @@ class BlossomSolver {
     const std::uint32_t bx = find(x, below_x);
     const std::int64_t room = -below_x - current_dual(bx);  // the slack less 2·cost
     // The neighbours' records are requested together: each is a likely cache miss, and the
-    // loop below would otherwise wait for them one at a time. So are their mates, which a
-    // grow into an unlabelled neighbour reads next (the edge's event, at slack 0, comes out
-    // soon: the queue takes the last entry of the current key first).
-    for (const Slot& slot : slots_of(x)) {
-      __builtin_prefetch(&rec_[slot.other]);
-      __builtin_prefetch(&mates_[slot.other]);
-    }
+    // loop below would otherwise wait for them one at a time. A node's mate, which a grow into
+    // an unlabelled neighbour reads next, is in its record.
+    for (const Slot& slot : slots_of(x)) __builtin_prefetch(&rec_[slot.other]);
     for (const Slot& slot : slots_of(x)) {
       const std::uint32_t bw = find(slot.other, below_w);
       if (bw == bx) continue;
@@ -522,8 +523,8 @@ class BlossomSolver {
     } else {
       // Every free node is a root, so an unlabelled blossom has a matched base.
       const NodeId b = bv < n_ ? bv : base_[bv];
-      const EdgeId m = mates_[b].edge;
-      const NodeId z = mates_[b].node;
+      const EdgeId m = rec_[b].mate.edge;
+      const NodeId z = rec_[b].mate.node;
       label_odd(bv, u, v, e, rec_[bu].tree);
       label_even(top(z), b, z, m, rec_[bu].tree);
     }
@@ -540,26 +541,26 @@ class BlossomSolver {
   // whose dual is zero dissolve: they constrain nothing.
   void release(std::uint32_t t) {
     --alive_trees_;
-    released_.clear();
     members_.drain(member_heads_[t], [&](std::uint32_t b) {
       if (rec_[b].label == kUnlabelled || rec_[b].parent != kNone || rec_[b].tree != t) return;
       settle(b);
       rec_[b].label = kUnlabelled;
-      released_.push_back(b);
+      if (b >= n_ && rec_[b].y == 0) dissolvable_.push_back(b);  // nodes are most members
     });
     parked_.drain(parked_heads_[t], [&](const Event& event) {
       queue_.push(static_cast<std::uint64_t>(delta_), event);
       ++stats_.queue_pushes;
     });
-    for (std::uint32_t b : released_) {
-      if (b >= n_ && rec_[b].parent == kNone && !children_[b - n_].empty() && rec_[b].y == 0)
-        dissolve(b);
+    for (std::uint32_t b : dissolvable_) {
+      if (rec_[b].parent == kNone && !children_[b - n_].empty()) dissolve(b);
     }
+    dissolvable_.clear();
   }
 
   // Removes top-level unlabelled blossom b of dual zero, and its children of dual zero.
   void dissolve(std::uint32_t b) {
-    std::vector<std::uint32_t> stack{b};
+    std::vector<std::uint32_t>& stack = dissolve_stack_;
+    stack.assign(1, b);
     while (!stack.empty()) {
       const std::uint32_t c = stack.back();
       stack.pop_back();
@@ -599,6 +600,8 @@ class BlossomSolver {
     const std::uint32_t nb = new_blossom();
     std::vector<std::uint32_t>& ch = children_[nb - n_];
     std::vector<Conn>& conn = conn_[nb - n_];
+    ch.reserve(1 + path_u_.size() + path_v_.size());
+    conn.reserve(ch.capacity());
     ch.push_back(lca);
     for (std::size_t i = path_u_.size(); i-- > 0;) {
       const std::uint32_t x = path_u_[i];
@@ -613,9 +616,8 @@ class BlossomSolver {
 
     base_[nb] = base_[lca];
     rec_[nb].parent = kNone;
-    rec_[nb].y = 0;
+    rec_[nb].y = -delta_;  // a dual of zero, even from now on
     rec_[nb].label = kEven;
-    rec_[nb].since = delta_;
     link_[nb] = link_[lca];
     rec_[nb].tree = rec_[lca].tree;
     members_.push(member_heads_[rec_[lca].tree], nb);
@@ -635,8 +637,15 @@ class BlossomSolver {
   // one the tree enters by to the base, take b's place in the tree; the others become unlabelled.
   void expand_odd(std::uint32_t b) {
     ++stats_.blossoms_expanded;
-    std::vector<std::uint32_t> ch = std::move(children_[b - n_]);
-    std::vector<Conn> conn = std::move(conn_[b - n_]);
+    // The cycle is swapped out into scratch vectors, which hand their (cleared) buffers to the
+    // freed id: moving it out left the id without capacity, and shrink's pushes into it
+    // reallocated (malloc, free and the copies: 4 % of the instructions, armadillo's dual).
+    std::vector<std::uint32_t>& ch = expand_children_;
+    std::vector<Conn>& conn = expand_conn_;
+    ch.clear();
+    conn.clear();
+    ch.swap(children_[b - n_]);
+    conn.swap(conn_[b - n_]);
     const std::size_t k = ch.size();
     const std::uint32_t entry = child_holding(b, link_[b].to);
     for (std::uint32_t c : ch) rec_[c].parent = kNone;
@@ -648,7 +657,8 @@ class BlossomSolver {
 
     // The path from the entry child to the base child: backward when j is even, else forward.
     ++stamp_;
-    std::vector<std::uint32_t> even_children;
+    std::vector<std::uint32_t>& even_children = even_children_;
+    even_children.clear();
     std::size_t i = j;
     mark_[ch[i]] = stamp_;
     label_odd(ch[i], from, to, edge, tree);
@@ -681,7 +691,7 @@ class BlossomSolver {
 
   // ---- augmentation
 
-  void set_mate(NodeId v, EdgeId e, NodeId w) { mates_[v] = {e, w}; }
+  void set_mate(NodeId v, EdgeId e, NodeId w) { rec_[v].mate = {e, w}; }
 
   // Edge `along` joins even node s to node `across` in another tree: flips the path from s up
   // to its root.
@@ -701,62 +711,70 @@ class BlossomSolver {
   }
 
   // Makes node v the base of blossom b, flipping the matched edges on the even side of each
-  // cycle between v's child and the base child, level by level (an explicit stack).
+  // cycle between v's child and the base child, level by level (an explicit stack of (blossom,
+  // node) to rebase). Each entry walks once from its node up to its blossom and rebases every
+  // level of that walk, top down, the child holding the node being the blossom one step below:
+  // finding that child afresh at each level walked the nested blossoms again from the node
+  // (fertility-sub3's dual nests over 100 deep).
   void rebase(std::uint32_t b, NodeId v) {
     if (b < n_) return;
     rebase_stack_.assign(1, {b, v});
     while (!rebase_stack_.empty()) {
-      auto [blossom, node] = rebase_stack_.back();
+      const auto [outer, node] = rebase_stack_.back();
       rebase_stack_.pop_back();
-      std::vector<std::uint32_t>& ch = children_[blossom - n_];
-      std::vector<Conn>& conn = conn_[blossom - n_];
-      const std::size_t k = ch.size();
-      const std::uint32_t c = child_holding(blossom, node);
-      const std::size_t j =
-          static_cast<std::size_t>(std::find(ch.begin(), ch.end(), c) - ch.begin());
-      if (c >= n_) rebase_stack_.push_back({c, node});
-      auto match = [&](std::size_t i) {
-        const Conn& cn = conn[i];
-        mates_[cn.x] = {cn.e, cn.y};
-        mates_[cn.y] = {cn.e, cn.x};
-        if (ch[i] >= n_) rebase_stack_.push_back({ch[i], cn.x});
-        const std::uint32_t d = ch[(i + 1) % k];
-        if (d >= n_) rebase_stack_.push_back({d, cn.y});
-      };
-      if (j % 2 == 0) {
-        for (std::size_t i = 0; i + 1 < j; i += 2) match(i);
-      } else {
-        for (std::size_t i = j + 1; i < k; i += 2) match(i);
+      rebase_chain_.clear();
+      for (std::uint32_t x = node; x != outer; x = rec_[x].parent) rebase_chain_.push_back(x);
+      rebase_chain_.push_back(outer);
+      for (std::size_t level = rebase_chain_.size() - 1; level > 0; --level) {
+        const std::uint32_t blossom = rebase_chain_[level], c = rebase_chain_[level - 1];
+        std::vector<std::uint32_t>& ch = children_[blossom - n_];
+        std::vector<Conn>& conn = conn_[blossom - n_];
+        const std::size_t k = ch.size();
+        const std::size_t j =
+            static_cast<std::size_t>(std::find(ch.begin(), ch.end(), c) - ch.begin());
+        auto match = [&](std::size_t i) {
+          const Conn& cn = conn[i];
+          rec_[cn.x].mate = {cn.e, cn.y};
+          rec_[cn.y].mate = {cn.e, cn.x};
+          if (ch[i] >= n_) rebase_stack_.push_back({ch[i], cn.x});
+          const std::uint32_t d = ch[(i + 1) % k];
+          if (d >= n_) rebase_stack_.push_back({d, cn.y});
+        };
+        if (j % 2 == 0) {
+          for (std::size_t i = 0; i + 1 < j; i += 2) match(i);
+        } else {
+          for (std::size_t i = j + 1; i < k; i += 2) match(i);
+        }
+        std::rotate(ch.begin(), ch.begin() + static_cast<std::ptrdiff_t>(j), ch.end());
+        std::rotate(conn.begin(), conn.begin() + static_cast<std::ptrdiff_t>(j), conn.end());
+        base_[blossom] = node;
       }
-      std::rotate(ch.begin(), ch.begin() + static_cast<std::ptrdiff_t>(j), ch.end());
-      std::rotate(conn.begin(), conn.begin() + static_cast<std::ptrdiff_t>(j), conn.end());
-      base_[blossom] = node;
     }
   }
 
   const Graph& graph_;
   std::span<const Cost> cost_;
   HugeVector<EdgeId>& mate_;
-  // During run(): each node's matched edge and the node across it (the grow step reads both at
-  // once); mate_ is filled from it when run() returns.
+  // During run(): a node's matched edge and the node across it (the grow step reads both at
+  // once); mate_ is filled from them when run() returns.
   struct Mate {
-    EdgeId edge;
-    NodeId node;
+    EdgeId edge = kNoEdge;
+    NodeId node = kNone;
   };
-  HugeVector<Mate> mates_;
   MinCostStats& stats_;
   std::uint32_t n_;
   std::size_t ids_;  // the most ids: n nodes and n/2 blossoms (the arrays below are reserved so)
   // What finding a blossom and its current dual reads, in one cache line's half: the stored
-  // dual y, the clock at its last label change, the parent blossom (kNone at the top level),
-  // the tree of a labelled blossom, the generation its shortcuts are checked against, and the
-  // label. Separate arrays cost a cache miss each per neighbour scanned.
+  // dual y (offset by the clock while labelled, see the top), the parent blossom (kNone at the
+  // top level), the tree of a labelled blossom, the generation its shortcuts are checked
+  // against, the label, and a node's mate, which growing into an unlabelled node reads right
+  // after its record. Separate arrays cost a cache miss each per neighbour scanned.
   struct alignas(32) Record {
     std::int64_t y = 0;
-    std::int64_t since = 0;
     std::uint32_t parent = kNone;
     std::uint32_t tree = kNone;
     std::uint32_t generation = 0;  // bumped when the blossom id is freed (see the top)
+    Mate mate;                     // nodes only
     std::uint8_t label = kUnlabelled;
   };
   HugeVector<Record> rec_;
@@ -800,12 +818,15 @@ class BlossomSolver {
   ChainPool<Event> parked_;
   std::vector<std::uint32_t> parked_heads_;
   std::size_t alive_trees_ = 0;
-  std::vector<std::uint32_t> released_;
+  std::vector<std::uint32_t> dissolvable_;  // release: its blossoms of dual zero
   std::vector<NodeId> scratch_;
   std::vector<std::uint32_t> odd_children_;
+  std::vector<std::uint32_t> dissolve_stack_, expand_children_, even_children_;
+  std::vector<Conn> expand_conn_;
   std::vector<std::uint32_t> path_u_, path_v_;
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
+  std::vector<std::uint32_t> rebase_chain_;
 };
 
 }  // namespace petersen::weighted_detail
