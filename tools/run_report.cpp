@@ -52,9 +52,10 @@ void print_summary(std::FILE* out, const RunReport& r) {
   std::fprintf(out, "load        %.4f s\n", r.load_seconds);
   std::fprintf(out, "check       %.4f s\n", s.check_seconds);
   std::fprintf(out, "dual        %.4f s\n", s.dual_seconds);
-  std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "\n",
+  std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "%s\n",
                s.matching.initial_seconds, initial_paired_percent(s),
-               std::uint64_t{s.matching.unpaired_after_initial});
+               std::uint64_t{s.matching.unpaired_after_initial},
+               s.matching.schrijver ? "  (Schrijver's exact matching: a bipartite dual)" : "");
   std::fprintf(
       out, "augment     %.4f s  paths %" PRIu64 "  blossoms %" PRIu64 "  labelled %" PRIu64 "\n",
       s.matching.augment_seconds, s.matching.augmenting_paths, s.matching.blossoms,

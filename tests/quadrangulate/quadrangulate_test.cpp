@@ -73,6 +73,23 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
 }
 
 // No triangle at all: every face kept as it is (the pairable graph has no node).
+// ps on a regular plate, whose dual is bipartite, is Schrijver's exact matching (nothing left to
+// augment); on the same plate made irregular (odd cycles in the dual) PS runs, and the summary
+// says which ran.
+TEST(Quadrangulate, ReportsSchrijversMatchingOnABipartiteDual) {
+  const TriangleMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
+  const QuadResult regular = quadrangulate(to_polygon_mesh(plate));
+  EXPECT_TRUE(regular.stats.matching.schrijver);
+  EXPECT_EQ(regular.stats.matching.unpaired_after_initial, 0u);
+  EXPECT_EQ(regular.stats.triangles_left, 0u);
+  EXPECT_TRUE(regular.stats.maximum_certified);
+  const QuadResult irregular =
+      quadrangulate(to_polygon_mesh(randomize_triangulation(plate, 7, 200, 1)));
+  EXPECT_FALSE(irregular.stats.matching.schrijver);
+  EXPECT_EQ(irregular.stats.triangles_left, 0u);
+  EXPECT_TRUE(irregular.stats.maximum_certified);
+}
+
 TEST(Quadrangulate, KeepsAMeshOfQuadsAsItIs) {
   const PolygonMesh mesh =
       mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}},
