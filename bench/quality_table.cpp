@@ -68,8 +68,13 @@ Row by_petersen(const PolygonMesh& mesh, std::string method, const QuadOptions& 
   std::vector<double> costs;
   const auto& p = result.mesh.positions;
   for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
+    // Every quad made of two triangles, lrs's included: one whose triangle a flip made names no
+    // input face for it (kNoFace), and skipping those left lrs's worst quads out of its row (the
+    // bunny read a median of 54.3° instead of the 67.0° its summary prints). Only an input
+    // polygon kept as it is (its own face, no partner) is not a pair's quad.
     const auto [f, g] = result.sources[o];
-    if (result.mesh.arity(o) != 4 || f == kNoFace || g == kNoFace) continue;
+    if (result.mesh.arity(o) != 4) continue;
+    if (f != kNoFace && g == kNoFace && mesh.arity(f) == 4) continue;
     const auto c = result.mesh.face(o);
     costs.push_back(quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
   }
