@@ -133,19 +133,18 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
   for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
   out.corners.reserve(corners_in - paired_nodes);
   if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
-  // The sources are made when asked for and when all_quad or the attributes read them; otherwise
-  // each face's kind (1 byte where a source is 8: 0.8 GB of fresh memory less at 10^8
-  // triangles) tells the quads' measure below which faces are pairs' quads.
+  // Each face's kind (1 byte) tells the quads' measure below which faces are pairs' quads, and
+  // all_quad which to split. The sources (8 bytes: 0.8 GB of fresh memory at 10^8 triangles) are
+  // made when asked for and when all_quad or the attributes read them.
   const bool make_sources = options.sources || options.all_quad ||
                             mesh.attributes.has_corner_attributes() ||
                             mesh.attributes.has_face_attributes();
-  const bool make_kinds = options.all_quad || !make_sources;
   if (make_sources) result.sources.reserve(face_count - paired_nodes / 2);
   std::vector<quad_detail::FaceKind> kinds;
-  if (make_kinds) kinds.reserve(face_count - paired_nodes / 2);
+  kinds.reserve(face_count - paired_nodes / 2);
   auto emitted = [&](quad_detail::FaceKind kind, std::array<FaceId, 2> sources) {
     if (make_sources) result.sources.push_back(sources);
-    if (make_kinds) kinds.push_back(kind);
+    kinds.push_back(kind);
   };
   for (FaceId f = 0; f < face_count; ++f) {
     // A pair's second triangle is anywhere in the mesh: its corners are fetched a few faces
@@ -200,10 +199,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
         }
       }
       const auto c = out.face(o);
-      const bool pair_quad = make_sources ? c.size() == 4 && (result.sources[o][1] != kNoFace ||
-                                                              result.sources[o][0] == kNoFace ||
-                                                              mesh.arity(result.sources[o][0]) == 3)
-                                          : kinds[o] == quad_detail::FaceKind::pair;
+      const bool pair_quad = kinds[o] == quad_detail::FaceKind::pair;
       costs[o] = pair_quad ? quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]) : -1.0;
     }
   });
