@@ -107,9 +107,17 @@ void print_inputs(std::ostream& out, const std::vector<InputResult>& results) {
   }
 }
 
+// The runs, and the calls per run when they were repeated (RunnerOptions::min_run_seconds).
+std::string runs_text(const Cell& cell) {
+  if (cell.runs == 0) return "";
+  std::string text = std::to_string(cell.runs);
+  if (cell.median.repeats > 1) text += " x" + std::to_string(cell.median.repeats);
+  return text;
+}
+
 void print_table(std::ostream& out, const std::vector<InputResult>& results) {
   char line[1024];
-  const char* header = "%-16s %-14s %10s %10s %9s %10s %10s %8s %9s %4s  %s\n";
+  const char* header = "%-16s %-14s %10s %10s %9s %10s %10s %8s %9s %8s  %s\n";
   std::snprintf(line, sizeof line, header, "Triang.", "Alg.", "(a)", "(b)", "(c)", "(d)", "(e)",
                 "xBFS", "peak MiB", "runs", "counters | paper's (a) (b) (c) (d) (e)");
   out << line;
@@ -127,8 +135,7 @@ void print_table(std::ostream& out, const std::vector<InputResult>& results) {
       }
       std::snprintf(line, sizeof line, header, r.spec.name.c_str(), cell.contestant.c_str(),
                     c.a.c_str(), c.b.c_str(), c.c.c_str(), c.d.c_str(), c.e.c_str(),
-                    c.ratio.c_str(), c.peak.c_str(), std::to_string(cell.runs).c_str(),
-                    tail.c_str());
+                    c.ratio.c_str(), c.peak.c_str(), runs_text(cell).c_str(), tail.c_str());
       out << line;
     }
     out << "\n";
@@ -137,7 +144,7 @@ void print_table(std::ostream& out, const std::vector<InputResult>& results) {
 
 void write_csv(const std::string& path, const std::vector<InputResult>& results) {
   std::ofstream out(path);
-  out << "input,group,vertices,edges,triangles,genus,contestant,status,runs,initial_s,"
+  out << "input,group,vertices,edges,triangles,genus,contestant,status,runs,repeats,initial_s,"
          "paired_percent,unpaired,augment_s,total_s,ratio_to_bfs,peak_mib,augmenting_paths,"
          "reductions,flips,paper_initial_s,paper_paired_percent,paper_unpaired,paper_augment_s,"
          "paper_total_s\n";
@@ -147,7 +154,8 @@ void write_csv(const std::string& path, const std::vector<InputResult>& results)
       const bool ok = cell.status == Cell::Status::ok;
       out << r.spec.name << "," << r.spec.group << "," << r.facts.vertices << "," << r.facts.edges
           << "," << r.facts.triangles << "," << r.facts.genus << "," << cell.contestant << ","
-          << (ok ? "ok" : "\"" + cell.message + "\"") << "," << cell.runs << ",";
+          << (ok ? "ok" : "\"" + cell.message + "\"") << "," << cell.runs << ","
+          << (ok ? cell.median.repeats : 0) << ",";
       if (ok) {
         out << m.initial_seconds << ",";
         if (m.two_phase)
@@ -196,8 +204,7 @@ void write_markdown(std::ostream& out, const std::vector<InputResult>& results) 
         paper_text = std::string(paper->algorithm) + ": " + paper_columns(*paper, " / ");
       out << "| " << r.spec.name << " | " << cell.contestant << " | " << c.a << " | " << c.b
           << " | " << c.c << " | " << c.d << " | " << c.e << " | " << c.ratio << " | " << c.peak
-          << " | " << (cell.runs ? std::to_string(cell.runs) : "") << " | " << c.counters << " | "
-          << paper_text << " |\n";
+          << " | " << runs_text(cell) << " | " << c.counters << " | " << paper_text << " |\n";
     }
   }
 }

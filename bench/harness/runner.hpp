@@ -16,6 +16,11 @@ struct RunnerOptions {
   double cap_seconds = 10;     ///< per run; a slower run is killed and reported as "> cap"
   double budget_seconds = 10;  ///< no further repeats once a contestant's runs add up to this
   std::uint64_t seed = 1;      ///< run r of a seeded contestant uses seed + r
+  /// A run whose first call takes less is repeated in its process until its calls add up to this,
+  /// and reports their median. Off (0) by default, so every row is one cold call per process as
+  /// in the paper's tables; on, a sub-millisecond row measures the algorithm on warm memory
+  /// instead of its first page touches (bench/RESULTS.md, "The small meshes, warm").
+  double min_run_seconds = 0;
 };
 
 /// One contestant on one input.
