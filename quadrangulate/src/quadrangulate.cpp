@@ -75,7 +75,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
   }();
   HugeVector<double> degrees;
   if (options.objective == Objective::quality || options.max_corner_deviation) {
-    degrees = pairable_edge_quality(graph, mesh);
+    degrees = pairable_edge_quality(graph, mesh, options.threads);
   }
   if (options.max_corner_deviation) {
     quad_detail::cut_by_shape(graph, mesh, degrees, *options.max_corner_deviation);

@@ -7,10 +7,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <random>
 
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/quads.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -132,6 +134,33 @@ TEST(QuadQuality, DualEdgeCostIsTheCostOfTheQuadsFromMatching) {
   }
   EXPECT_EQ(q, quads.quads.size());
   EXPECT_GT(checked, quads.quads.size() / 2);
+}
+
+// The pairable graph's costs are measured in blocks of 65,536 nodes on the threads: the same
+// costs, bit for bit, on one thread or three, each the cost of the quad its two faces make.
+TEST(QuadQuality, PairableEdgeCostsDoNotDependOnTheThreads) {
+  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(1, 70000, 20000, 3));
+  const PairableGraph graph = build_pairable_graph(mesh);
+  ASSERT_GT(graph.node_count, 2u << 16);  // three blocks
+  const HugeVector<double> one = pairable_edge_quality(graph, mesh, 1);
+  const HugeVector<double> three = pairable_edge_quality(graph, mesh, 3);
+  ASSERT_EQ(one.size(), graph.edge_count());
+  ASSERT_EQ(three.size(), one.size());
+  for (EdgeId e = 0; e < one.size(); ++e) {
+    ASSERT_EQ(std::memcmp(&one[e], &three[e], sizeof(double)), 0) << "edge " << e;
+  }
+  // Spot checks against the quad of the edge's two faces, in the lower face's orientation.
+  for (EdgeId e = 0; e < graph.edge_count(); e += 997) {
+    NodeId v = graph.edge_ends[2 * std::size_t{e}], w = graph.edge_ends[2 * std::size_t{e} + 1];
+    if (graph.face_of(w) < graph.face_of(v)) std::swap(v, w);
+    const auto t1 = mesh.face(graph.face_of(v)), t2 = mesh.face(graph.face_of(w));
+    int k = 0;
+    while (graph.node_edges[3 * std::size_t{v} + k] != e) ++k;
+    const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
+    const VertexId d = t2[0] != a && t2[0] != b ? t2[0] : t2[1] != a && t2[1] != b ? t2[1] : t2[2];
+    const auto& p = mesh.positions;
+    EXPECT_EQ(one[e], quad_corner_deviation(p[a], p[d], p[b], p[c])) << "edge " << e;
+  }
 }
 
 TEST(QuadQuality, ATrapezoidOf45And135DegreesCosts45InAnyPlane) {

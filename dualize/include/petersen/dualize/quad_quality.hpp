@@ -38,8 +38,10 @@ HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual)
 
 /// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
 /// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b
-/// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F).
-HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh);
+/// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F), on `threads` threads (0:
+/// every core); the costs do not depend on the threads.
+HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh,
+                                         std::uint32_t threads = 1);
 
 /// Quads summarised by their costs: how many, the median and 95th percentile (the nearest-rank
 /// element of the sorted costs; 0 when there are no quads), how many are non-convex (cost above
