@@ -78,6 +78,35 @@ TEST(HugePages, SmallerRequestsSplitAKeptRange) {
   huge_pages::release_retained();
 }
 
+// A request no kept range fits alone takes the kept ranges' pages, moved, not copied or zeroed,
+// and fresh zeroed pages for the rest; the pool keeps nothing of them.
+TEST(HugePages, ALargerRequestIsMadeOfTheKeptRanges) {
+  const PoolOn pool;
+  void* a = huge_pages::acquire(kRange);
+  void* b = huge_pages::acquire(2 * kRange);
+  std::memset(a, 0xAB, kRange);
+  std::memset(b, 0xCD, 2 * kRange);
+  huge_pages::release(a, kRange);
+  huge_pages::release(b, 2 * kRange);
+  auto* whole = static_cast<unsigned char*>(huge_pages::acquire(4 * kRange));
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+  EXPECT_TRUE(all_bytes(whole, 2 * kRange, 0xCD));           // the largest first
+  EXPECT_TRUE(all_bytes(whole + 2 * kRange, kRange, 0xAB));  // then the next
+  EXPECT_TRUE(all_bytes(whole + 3 * kRange, kRange, 0));     // fresh
+  std::memset(whole, 0x5A, 4 * kRange);                      // all of it writable
+  huge_pages::release(whole, 4 * kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), 4 * kRange);
+  // Part of a kept range: its head is taken, its tail stays kept where it was.
+  void* c = huge_pages::acquire(kRange);
+  void* d = huge_pages::acquire(4 * kRange);
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+  EXPECT_TRUE(all_bytes(d, 3 * kRange, 0x5A));
+  EXPECT_TRUE(all_bytes(static_cast<char*>(d) + 3 * kRange, kRange, 0));
+  huge_pages::release(c, kRange);
+  huge_pages::release(d, 4 * kRange);
+  huge_pages::release_retained();
+}
+
 TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
   const PoolOn pool;
   void* range = huge_pages::acquire(kRange);

@@ -19,9 +19,10 @@ inline constexpr std::size_t kRetainedBytes = std::size_t{1} << 30;
 /// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory, advised onto huge pages, its
 /// contents unspecified. With the pool off (the default) it is mapped fresh from the kernel. With
 /// the pool on, the smallest kept range that is large enough is handed out again (split if
-/// larger); when none is, the largest kept ranges go back to the kernel, as many bytes as the
-/// request, and the range is mapped fresh, so that kept memory does not pile up beside the live
-/// arrays. Throws std::bad_alloc.
+/// larger); when none is, the range is made of the largest kept ranges, as many bytes as it takes
+/// (their pages moved into it with mremap, neither copied nor faulted in again), and fresh pages
+/// for whatever they lack, so that kept memory does not pile up beside the live arrays. Throws
+/// std::bad_alloc.
 void* acquire(std::size_t bytes);
 
 /// Gives back a range from acquire(): unmapped at once with the pool off; with it on, kept for
