@@ -1,6 +1,7 @@
 #include "petersen/graph/cubic_graph.hpp"
 
 #include "check_edge_ends.hpp"
+#include "petersen/graph/parallel.hpp"
 
 namespace petersen {
 
@@ -92,6 +93,20 @@ void CubicGraph::write_neighbour_rows(NodeId* rows) const {
 HugeVector<NodeId> CubicGraph::into_neighbour_rows() && {
   write_neighbour_rows(node_edges_.data());
   edge_ends_ = HugeVector<NodeId>();  // `= {}` would keep the capacity
+  return std::move(node_edges_);
+}
+
+HugeVector<NodeId> CubicGraph::into_neighbour_rows(
+    std::uint32_t threads, const std::function<void(std::span<const NodeId>)>& beside) && {
+  // The rows only read edge_ends_ and write node_edges_, so `beside` may read the edges meanwhile.
+  run_parallel(threads, 2, [&](std::uint32_t task) {
+    if (task == 0) {
+      write_neighbour_rows(node_edges_.data());
+    } else {
+      beside(edge_ends_);
+    }
+  });
+  edge_ends_ = HugeVector<NodeId>();
   return std::move(node_edges_);
 }
 

@@ -90,5 +90,26 @@ TEST(CubicGraph, NeighbourRowsNameTheOtherEndOfEachSlot) {
             (std::vector<NodeId>{1, 1, 1, 0, 0, 0}));
 }
 
+TEST(CubicGraph, NeighbourRowsWithWorkBesideReadTheEdgesBeforeTheyAreFreed) {
+  for (std::uint32_t threads : {1u, 2u, 3u}) {
+    CubicGraph g = random_cubic_bridgeless(1000, threads);
+    const std::vector<NodeId> ends(g.edge_ends().begin(), g.edge_ends().end());
+    std::vector<NodeId> expected;
+    for (NodeId v = 0; v < g.node_count(); ++v)
+      for (EdgeId e : g.incident_edges(v)) expected.push_back(g.other_end(e, v));
+    std::vector<NodeId> seen;
+    const HugeVector<NodeId> rows =
+        std::move(g).into_neighbour_rows(threads, [&](std::span<const NodeId> edge_ends) {
+          seen.assign(edge_ends.begin(), edge_ends.end());
+        });
+    EXPECT_EQ(std::vector<NodeId>(rows.begin(), rows.end()), expected);
+    EXPECT_EQ(seen, ends);
+  }
+  // The work's exception reaches the caller.
+  EXPECT_THROW(CubicGraph::from_incidence({0, 1, 2, 2, 1, 0}, {0, 1, 0, 1, 0, 1})
+                   .into_neighbour_rows(2, [](std::span<const NodeId>) { throw GraphError("x"); }),
+               GraphError);
+}
+
 }  // namespace
 }  // namespace petersen

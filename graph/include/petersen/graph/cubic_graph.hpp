@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -86,6 +87,11 @@ class CubicGraph {
   /// lists in place and the edge list is freed, so a caller that needs only who is adjacent to
   /// whom (perfect_partners) holds 12 bytes per node instead of 24, and never both. O(n).
   HugeVector<NodeId> into_neighbour_rows() &&;
+  /// The same, with beside(edge_ends()) run on a second thread (given threads > 1; 0 means every
+  /// core) while the rows are written, and before the edge list is freed: work that reads the
+  /// edges, done on a core the rows leave idle. Its exception is rethrown here.
+  HugeVector<NodeId> into_neighbour_rows(
+      std::uint32_t threads, const std::function<void(std::span<const NodeId>)>& beside) &&;
   /// The same rows written to `rows` (3 · node_count() entries), the graph kept. O(n).
   void write_neighbour_rows(NodeId* rows) const;
 
