@@ -123,6 +123,8 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
   graph.chosen_cut_ends = HugeVector<NodeId>();  // `= {}` would keep the capacity
   stats.check_seconds = clock.lap();
 
+  // Counted before the pairing, which may free the mesh's corners.
+  const std::size_t corners_in = mesh.corners.size();
   quad_detail::TrianglePairing pairing = quad_detail::pair_triangles(
       graph, mesh, movable != nullptr ? &movable->corners : nullptr, degrees, options, stats);
   if (graph.cubic && graph.inconsistent_edges == 0 && stats.polygons_kept == 0) {
@@ -143,124 +145,47 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
   } else {
     out.positions = mesh.positions;
   }
-  // Each face of the input gives its output face (a pair's quad where its first triangle was,
-  // nothing where its second was, or itself), so the output is made in blocks of faces on the
-  // threads: one pass counts each block's faces and corners, the next writes them at the counts'
-  // offsets, into arrays of their exact sizes (a pair turns six corners into four).
-  // The face kinds (1 byte per face) tell the quads' measure below which faces are pairs' quads,
-  // and all_quad which to split. The sources (8 bytes: 0.8 GB of fresh memory at 10^8 triangles)
-  // are made when asked for and when all_quad or the attributes read them.
+  // Exact sizes, so that no array grows past what it holds: a pair turns six corners into four.
+  std::size_t paired_nodes = 0;
+  for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
+  out.corners.reserve(corners_in - paired_nodes);
+  if (paired_nodes > 0) out.face_start.reserve(face_count - paired_nodes / 2 + 1);
+  // Each face's kind (1 byte) tells the quads' measure below which faces are pairs' quads, and
+  // all_quad which to split. The sources (8 bytes: 0.8 GB of fresh memory at 10^8 triangles) are
+  // made when asked for and when all_quad or the attributes read them.
   const bool make_sources = options.sources || options.all_quad ||
                             mesh.attributes.has_corner_attributes() ||
                             mesh.attributes.has_face_attributes();
-  enum class Emit : std::uint8_t { face, quad, none };
-  auto emit_of = [&](FaceId f, NodeId& v, NodeId& partner) {
-    v = face_node.empty() ? f : face_node[f];
-    partner = v == kNoNode ? kNoNode : pairing.partner[v];
-    if (v == kNoNode || partner == kNoNode) return Emit::face;
-    return partner != quad_detail::kLrsNode && v < partner ? Emit::quad : Emit::none;
-  };
-  struct Block {
-    std::uint64_t faces = 0, corners = 0, pairs = 0, triangles_left = 0;
-    bool polygons = false;  // a face of other than three corners
-  };
-  constexpr FaceId kFaceBlock = 1 << 16;
-  const std::uint32_t blocks =
-      static_cast<std::uint32_t>((std::uint64_t{face_count} + kFaceBlock - 1) / kFaceBlock);
-  std::vector<Block> block_at(blocks);
-  auto block_end = [&](std::uint32_t b) {
-    return static_cast<FaceId>(
-        std::min<std::uint64_t>(face_count, std::uint64_t{b + 1} * kFaceBlock));
-  };
-  run_parallel(options.threads, blocks, [&](std::uint32_t b) {
-    Block block;  // counted here, stored once: neighbouring blocks share cache lines
-    const FaceId end = block_end(b);
-    for (FaceId f = b * kFaceBlock; f < end; ++f) {
-      NodeId v, partner;
-      switch (emit_of(f, v, partner)) {
-        case Emit::face:
-          ++block.faces;
-          block.corners += mesh.arity(f);
-          block.polygons |= mesh.arity(f) != 3;
-          block.triangles_left += v != kNoNode;
-          break;
-        case Emit::quad:
-          ++block.faces, ++block.pairs;
-          block.corners += 4;
-          block.polygons = true;
-          break;
-        case Emit::none:
-          break;
-      }
-    }
-    block_at[b] = block;
-  });
-  std::vector<std::uint64_t> first_face(blocks + 1, 0), first_corner(blocks + 1, 0);
-  bool polygons = !pairing.lrs_quads.empty();
-  for (std::uint32_t b = 0; b < blocks; ++b) {
-    first_face[b + 1] = first_face[b] + block_at[b].faces;
-    first_corner[b + 1] = first_corner[b] + block_at[b].corners;
-    stats.pairs += block_at[b].pairs;
-    stats.triangles_left += block_at[b].triangles_left;
-    polygons |= block_at[b].polygons;
-  }
-  const std::size_t lrs_quads = pairing.lrs_quads.size();
-  out.corners.reserve(first_corner[blocks] + 4 * lrs_quads);
-  out.corners.resize(first_corner[blocks]);
-  // Explicit starts only when some face is not a triangle, as add_face keeps them.
-  if (polygons) {
-    out.face_start.reserve(first_face[blocks] + lrs_quads + 1);
-    out.face_start.resize(first_face[blocks] + 1);
-  }
-  if (make_sources) {
-    result.sources.reserve(first_face[blocks] + lrs_quads);
-    result.sources.resize(first_face[blocks]);
-  }
+  if (make_sources) result.sources.reserve(face_count - paired_nodes / 2);
   std::vector<quad_detail::FaceKind> kinds;
-  kinds.reserve(first_face[blocks] + lrs_quads);
-  kinds.resize(first_face[blocks]);
-  run_parallel(options.threads, blocks, [&](std::uint32_t b) {
-    std::uint64_t o = first_face[b], c = first_corner[b];
-    auto emit = [&](std::span<const VertexId> corners, quad_detail::FaceKind kind,
-                    std::array<FaceId, 2> sources) {
-      std::copy(corners.begin(), corners.end(), out.corners.begin() + c);
-      c += corners.size();
-      if (polygons) out.face_start[o + 1] = static_cast<std::uint32_t>(c);
-      if (make_sources) result.sources[o] = sources;
-      kinds[o++] = kind;
-    };
-    const FaceId end = block_end(b);
-    for (FaceId f = b * kFaceBlock; f < end; ++f) {
-      // A pair's second triangle is anywhere in the mesh: its corners are fetched a few faces
-      // ahead (armadillo-sub2, this loop, medians of 5 alternated at load 3: 0.029 -> 0.022 s).
-      if (constexpr FaceId kAhead = 8; f + kAhead < end) {
-        const NodeId ahead = face_node.empty() ? f + kAhead : face_node[f + kAhead];
-        const NodeId partner = ahead == kNoNode ? kNoNode : pairing.partner[ahead];
-        if (partner < graph.node_count) {
-          __builtin_prefetch(mesh.face(graph.face_of(partner)).data());
-        }
-      }
-      NodeId v, partner;
-      switch (emit_of(f, v, partner)) {
-        case Emit::face:
-          emit(mesh.face(f),
-               v != kNoNode ? quad_detail::FaceKind::left : quad_detail::FaceKind::kept,
-               {f, kNoFace});
-          break;
-        case Emit::quad: {
-          const FaceId g = graph.face_of(partner);
-          emit(quad_of(mesh.face(f), mesh.face(g)), quad_detail::FaceKind::pair, {f, g});
-          break;
-        }
-        case Emit::none:
-          break;
-      }
-    }
-  });
+  kinds.reserve(face_count - paired_nodes / 2);
   auto emitted = [&](quad_detail::FaceKind kind, std::array<FaceId, 2> sources) {
     if (make_sources) result.sources.push_back(sources);
     kinds.push_back(kind);
   };
+  for (FaceId f = 0; f < face_count; ++f) {
+    // A pair's second triangle is anywhere in the mesh: its corners are fetched a few faces
+    // ahead (armadillo-sub2, this loop, medians of 5 alternated at load 3: 0.029 -> 0.022 s).
+    if (constexpr FaceId kAhead = 8; f + kAhead < face_count) {
+      const NodeId ahead = face_node.empty() ? f + kAhead : face_node[f + kAhead];
+      const NodeId partner = ahead == kNoNode ? kNoNode : pairing.partner[ahead];
+      if (partner < graph.node_count) __builtin_prefetch(mesh.face(graph.face_of(partner)).data());
+    }
+    const NodeId v = face_node.empty() ? f : face_node[f];
+    const NodeId partner = v == kNoNode ? kNoNode : pairing.partner[v];
+    if (v == kNoNode || partner == kNoNode) {
+      out.add_face(mesh.face(f));
+      stats.triangles_left += v != kNoNode;
+      emitted(v != kNoNode ? quad_detail::FaceKind::left : quad_detail::FaceKind::kept,
+              {f, kNoFace});
+    } else if (partner != quad_detail::kLrsNode && v < partner) {
+      const FaceId g = graph.face_of(partner);
+      const std::array<VertexId, 4> quad = quad_of(mesh.face(f), mesh.face(g));
+      out.add_face(quad);
+      ++stats.pairs;
+      emitted(quad_detail::FaceKind::pair, {f, g});
+    }
+  }
   for (const quad_detail::LrsQuad& quad : pairing.lrs_quads) {
     out.add_face(quad.corners);
     ++stats.pairs;
