@@ -303,6 +303,69 @@ TEST(ParsePolygons, BinaryPlyInBothByteOrdersAndBothLayouts) {
   }
 }
 
+// The common binary layout (float x y z, a face list alone) in the machine's byte order, whose
+// runs of triangles are read by a loop of their own: the same faces as the ASCII file of the same
+// content, and the same error at the same face, wherever a face that is not a triangle of
+// in-range corners interrupts the run (a quad, a corner past the vertices, a negative corner).
+TEST(ParsePly, RunsOfTrianglesReadAsTheAsciiFile) {
+  const std::string order =
+      std::endian::native == std::endian::little ? "binary_little_endian" : "binary_big_endian";
+  std::uint64_t state = 12345;
+  auto next = [&](std::uint64_t bound) {
+    state = state * 6364136223846793005u + 1442695040888963407u;
+    return (state >> 33) % bound;
+  };
+  constexpr std::int64_t kVertices = 7;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<std::vector<std::int64_t>> faces(1 + next(40));
+    for (auto& face : faces) {
+      // Mostly triangles; now and then a quad, a corner out of range or a negative one.
+      face.resize(next(12) == 0 ? 4 : 3);
+      for (auto& corner : face) corner = static_cast<std::int64_t>(next(kVertices));
+      if (next(25) == 0) face[next(face.size())] = kVertices + static_cast<std::int64_t>(next(3));
+      if (next(40) == 0) face[next(face.size())] = -1;
+    }
+    for (const std::string type : {"int", "uint"}) {
+      std::string header = "element vertex " + std::to_string(kVertices) +
+                           "\nproperty float x\nproperty float y\nproperty float z\nelement face " +
+                           std::to_string(faces.size()) + "\nproperty list uchar " + type +
+                           " vertex_indices\nend_header\n";
+      std::string binary = "ply\nformat " + order + " 1.0\n" + header;
+      std::string ascii = "ply\nformat ascii 1.0\n" + header;
+      for (std::int64_t v = 0; v < kVertices; ++v) {
+        const float xyz[3] = {float(v), float(v * v), 1};
+        binary.append(reinterpret_cast<const char*>(xyz), sizeof xyz);
+        ascii += std::to_string(v) + " " + std::to_string(v * v) + " 1\n";
+      }
+      for (const auto& face : faces) {
+        binary += static_cast<char>(face.size());
+        ascii += std::to_string(face.size());
+        for (std::int64_t corner : face) {
+          const std::uint32_t raw = static_cast<std::uint32_t>(corner);
+          binary.append(reinterpret_cast<const char*>(&raw), 4);
+          ascii += " " + std::to_string(type == "int" ? corner : std::int64_t{raw});
+        }
+        ascii += "\n";
+      }
+      const std::string binary_error = polygon_error_of(binary, MeshFormat::ply);
+      const std::string ascii_error = polygon_error_of(ascii, MeshFormat::ply);
+      if (ascii_error == "no error") {
+        ASSERT_EQ(binary_error, "no error") << trial;
+        EXPECT_EQ(faces_of(parse_mesh(binary, MeshFormat::ply, "in")),
+                  faces_of(parse_mesh(ascii, MeshFormat::ply, "in")))
+            << trial;
+      } else {
+        // The ASCII error names its line ("in:N: face ..."), the binary one its byte.
+        const std::string what = ascii_error.substr(ascii_error.find(" face "));
+        EXPECT_EQ(binary_error.substr(0, 3 + what.size()), "in:" + what) << trial;
+      }
+      EXPECT_EQ(error_of(binary, MeshFormat::ply).find("no error") == 0,
+                error_of(ascii, MeshFormat::ply).find("no error") == 0)
+          << trial;
+    }
+  }
+}
+
 TEST(ParsePolygons, FewerThanThreeCornersAndOtherErrors) {
   const std::string vs = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_EQ(polygon_error_of(vs + "f 1 2 3\nf 1 2\n", MeshFormat::obj),
