@@ -253,12 +253,12 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
       ++slice.edges;
     });
   };
-  // Numbers the slice's pairable edges from `first_edge` on, in entry order.
   // Halfedge h's slot in node_edges: side h - first(f) of its face f's node.
   auto slot = [&](std::uint32_t h) {
     const FaceId f = half.face(h);
     return 3 * std::size_t{node_of(f)} + (h - half.first(f));
   };
+  // Numbers the slice's pairable edges from `first_edge` on, in entry order.
   auto number = [&](const Slice& slice, EdgeId first_edge) {
     const auto& entries = slice.groups.entries;
     const std::uint32_t entry_count = static_cast<std::uint32_t>(entries.size());

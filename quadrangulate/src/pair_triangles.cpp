@@ -296,9 +296,10 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 // the graph (24), its table (28) and the mate edges (4) at once, 80 bytes per triangle with the
 // mesh before PS's own sets: over the 64 the tool aims at (issue 15). The same pairs, checked
 // against the same adjacency.
-// The components are counted on the edge list while the rows are written over the incidences
-// (each a single-threaded pass of random reads; on armadillo-sub2 ~0.025 and ~0.012 s), not
-// before: the forest (4 bytes per node) is gone before the matching's peak.
+// The components are counted on the edge list while the rows are written over the incidences,
+// not before: each is a single-threaded pass of random reads (on armadillo-sub2 about 0.03 s
+// together, one after the other), and the forest (4 bytes per node) is still gone before the
+// matching's peak.
 void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePairing& pairing,
                       QuadStats& stats, LapClock& clock) {
   const std::uint32_t node_count = cubic.node_count();
