@@ -113,4 +113,20 @@ HugeArray<T> make_huge_array(std::size_t size) {
   return HugeArray<T>(HugePageAllocator<T>().allocate(size), HugeArrayRelease<T>{size});
 }
 
+/// Shrinks `array` (of array.get_deleter().size elements) to its first `size`, giving back at once
+/// the whole huge pages past them, released as the array's own are (kept by the pool or unmapped):
+/// for an array whose tail is dead while its head lives on. Nothing is given back when either
+/// size is below a huge page (operator new's blocks).
+template <class T>
+void shrink_huge_array(HugeArray<T>& array, std::size_t size) {
+  const std::size_t had = array.get_deleter().size * sizeof(T), keep = size * sizeof(T);
+  if (keep < huge_pages::kPageBytes || had < keep) return;
+  const std::size_t kept_bytes = HugePageAllocator<T>::round_up(keep);
+  const std::size_t had_bytes = HugePageAllocator<T>::round_up(had);
+  if (kept_bytes < had_bytes) {
+    huge_pages::release(reinterpret_cast<char*>(array.get()) + kept_bytes, had_bytes - kept_bytes);
+  }
+  array.get_deleter().size = size;
+}
+
 }  // namespace petersen
