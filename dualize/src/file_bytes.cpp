@@ -200,7 +200,7 @@ class TemporaryFile {
   // A large write whose bytes start on a block boundary in memory and in the file goes past the
   // page cache (O_DIRECT), all but its last partial block: through the cache, each page of the
   // file is a fresh page of memory, and on this development VM (free page reporting) those are
-  // filled at 0.2-0.3 GB/s. 2 GB written and flushed: 5.3-7.9 s through the cache, 1.0-2.0 s
+  // filled at 0.2-0.3 GB/s. 2 GB written and flushed: 5.3-8.0 s through the cache, 1.3-2.0 s
   // direct (a standalone test; bench/RESULTS.md, stop 16). Where the file system refuses direct
   // writes, or the device wants larger blocks, the bytes go through the cache as before.
   void write(std::string_view bytes) {
