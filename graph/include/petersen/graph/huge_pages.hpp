@@ -24,6 +24,12 @@ inline constexpr std::size_t kRetainedBytes = std::size_t{1} << 30;
 /// arrays. Throws std::bad_alloc.
 void* acquire(std::size_t bytes);
 
+/// Advises a range from acquire() (`bytes` long) for an array of `used` bytes: huge pages over its
+/// whole huge pages, ordinary ones over the rest, so that a partial last huge page becomes
+/// resident only as far as the array writes it, not 2 MiB at its first touch (armadillo-sub2's
+/// lrs: five arrays at its peak, 2.1 MiB of unwritten tails). Advice only.
+void advise_used(void* range, std::size_t bytes, std::size_t used);
+
 /// Gives back a range from acquire(): unmapped at once with the pool off; with it on, kept for
 /// the next acquire() while the pool holds less than its limit (the rest goes back to the kernel).
 void release(void* range, std::size_t bytes);
@@ -75,7 +81,9 @@ struct HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge_pages::kPageBytes)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
-    return static_cast<T*>(huge_pages::acquire(round_up(bytes)));
+    void* range = huge_pages::acquire(round_up(bytes));
+    huge_pages::advise_used(range, round_up(bytes), bytes);
+    return static_cast<T*>(range);
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
