@@ -1,6 +1,7 @@
 #pragma once
 // Whole-file reads and atomic whole-file writes, gzip through libdeflate.
 
+#include <memory>
 #include <string>
 #include <string_view>
 
@@ -8,20 +9,31 @@
 
 namespace petersen {
 
-/// A file's bytes, in an uninitialised buffer on huge pages (a multi-gigabyte file is neither
+/// The pages of a file mapped read-only, unmapped with it.
+struct Unmap {
+  std::size_t size = 0;
+  void operator()(const char* bytes) const;
+};
+using MappedBytes = std::unique_ptr<const char, Unmap>;
+
+/// A file's bytes: a regular file's mapped from the page cache, read-only; a decompressed or
+/// piped file's in an uninitialised buffer on huge pages (a multi-gigabyte file is neither
 /// zero-filled first nor faulted in afresh; huge_pages.hpp).
 struct FileBytes {
-  HugeArray<char> data;
+  HugeArray<char> data;  // empty when mapped
   std::size_t size = 0;
+  MappedBytes mapped;
 
-  std::string_view view() const { return {data.get(), size}; }
+  std::string_view view() const { return {mapped ? mapped.get() : data.get(), size}; }
 };
 
 /// The file's bytes, decompressed when they start with the gzip magic (any name; concatenated
 /// gzip members are decompressed one after the other, trailing zero bytes ignored). Throws
 /// MeshError naming the path when the file cannot be opened or read, when the gzip data is
 /// corrupt, or when it would decompress beyond deflate's largest ratio (1032:1) or the machine's
-/// physical memory. O(decompressed size).
+/// physical memory. A regular file is mapped, not copied: like any reader of a mapped file, the
+/// process is killed (SIGBUS) if another truncates the file while it is being read.
+/// O(decompressed size).
 FileBytes read_file_bytes(const std::string& path);
 
 /// Writes the bytes to `path` atomically, gzip-compressed when the path ends in .gz: into a new

@@ -153,6 +153,17 @@ void* acquire(std::size_t bytes) {
   return range;
 }
 
+void advise_used(void* range, std::size_t bytes, std::size_t used) {
+#if defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
+  // A kept range may hold a tail advised for an earlier array: the whole range is advised afresh.
+  madvise(range, bytes, MADV_HUGEPAGE);
+  const std::size_t whole = used / kPageBytes * kPageBytes;
+  if (whole < bytes) madvise(static_cast<char*>(range) + whole, bytes - whole, MADV_NOHUGEPAGE);
+#else
+  (void)range, (void)bytes, (void)used;
+#endif
+}
+
 void release(void* range, std::size_t bytes) {
   if (pool_on.load(std::memory_order_acquire)) {
     Retained& kept = retained();
@@ -240,6 +251,7 @@ void* acquire(std::size_t bytes) {
   if (range == nullptr) throw std::bad_alloc();
   return range;
 }
+void advise_used(void*, std::size_t, std::size_t) {}
 void release(void* range, std::size_t) {
   std::free(range);
 }

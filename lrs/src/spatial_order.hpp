@@ -23,8 +23,8 @@ struct SpatialMesh {
 
 /// The vertices ordered by Morton cell of their position, for a surface of `face_count` faces (a
 /// few hundred faces per cell; ties in input order): new vertex v is input vertex order[v]. On
-/// huge pages, as its scratch, so that from_dual takes them from what its slots freed (the
-/// huge-page pool's kept ranges) rather than from fresh memory.
+/// huge pages, as its scratch, so that they come from the huge-page pool's kept ranges rather
+/// than from fresh memory.
 HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count);
 
 /// `mesh` with its vertices ordered by Morton cell (a few hundred faces per cell; ties in input

@@ -49,7 +49,7 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
   const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
 
   Triangulation tri;
-  tri.links_.resize(2 * std::size_t{edges});
+  tri.links_ = Links(2 * std::size_t{edges});  // every halfedge is written below
   tri.edge_alive_.assign(edges, 1);
   tri.out_.assign(mesh.positions.size(), kNoHalfedge);
   tri.degree_.assign(mesh.positions.size(), 0);

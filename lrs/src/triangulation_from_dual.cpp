@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -12,7 +13,8 @@ namespace petersen::lrs {
 Triangulation Triangulation::from_dual(const Positions& positions,
                                        std::span<const VertexId> corners,
                                        HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
-                                       Connectivity connectivity) {
+                                       Connectivity connectivity,
+                                       const std::function<void()>& corners_read) {
   const auto faces = static_cast<std::uint32_t>(corners.size() / 3);
   const auto edges = static_cast<std::uint32_t>(edge_ends.size() / 2);
   const auto vertices = static_cast<std::uint32_t>(positions.size());
@@ -23,11 +25,12 @@ Triangulation Triangulation::from_dual(const Positions& positions,
                                 " edge slots and " + std::to_string(edges) +
                                 " edges are not a closed mesh's dual");
   }
+  const std::size_t kept = huge_pages::retained_bytes();
   Triangulation tri;
   {
-    const HugeVector<VertexId> order = spatial_vertex_order(positions, faces);
+    tri.input_vertex_ = spatial_vertex_order(positions, faces);
     HugeVector<VertexId> new_id(vertices);
-    for (VertexId v = 0; v < vertices; ++v) new_id[order[v]] = v;
+    for (VertexId v = 0; v < vertices; ++v) new_id[tri.input_vertex_[v]] = v;
 
     // Edges by their smaller vertex (new ids), a stable counting sort: the edges around a vertex
     // get neighbouring ids, as build_dual's (min, max) order gives them on the spatial copy. Each
@@ -82,24 +85,47 @@ Triangulation Triangulation::from_dual(const Positions& positions,
   edge_ends = HugeVector<NodeId>();
 
   // The links with the input's vertex ids, and each input vertex's halfedge in the last triangle
-  // that has it (what `out` was before, so the contraction walks as it did). The vertex order and
-  // its inverse are not held through this pass, where the slots, the links and the input's corners
-  // are all alive (the peak of lrs in quadrangulate, issue 15: 2 of 64 bytes per triangle); the
-  // order is made again from the positions once the slots are freed.
-  tri.links_.resize(2 * std::size_t{edges});
+  // that has it (what `out` was before, so the contraction walks as it did). Made in three steps
+  // so that the slots, the input's corners and all of the links are never alive at once (the
+  // peak of lrs in quadrangulate, issue 15: 62 bytes per triangle with the positions, 52 so):
+  // each halfedge's origin into the links' first half (halfedge h's word is field h & 1 of link
+  // h / 2; the second half's pages are not touched yet), after which the corners are done with;
+  // each halfedge's next into an array of its own, after which the slots are; then the pairs
+  // spread out in place from the back (link h is written after link h / 2 < h is read). The
+  // vertex order (2 bytes per triangle) is held through these passes, whose peak is now below
+  // the augmentation's: it was made again from the positions when the links were made in one
+  // pass beside the slots and corners (its cells' pass: 3.1 -> 1.4 % of the run's samples on the
+  // 8M plate, about 0.1 s).
+  const std::size_t halfedges = 2 * std::size_t{edges};
+  tri.links_ = Links(halfedges);
+  const auto half_word = [&tri](std::size_t h) -> std::uint32_t& {
+    Link& link = tri.links_[h / 2];
+    return h % 2 == 0 ? link.origin : link.next;
+  };
   {
     HugeVector<Halfedge> last_out(vertices, kNoHalfedge);
-    for (FaceId t = 0; t < faces; ++t) {
-      const Halfedge* h = node_edges.data() + 3 * std::size_t{t};
-      for (std::size_t k = 0; k < 3; ++k) {
-        const VertexId v = corners[3 * std::size_t{t} + k];
-        tri.links_[h[k]] = {v, h[(k + 1) % 3]};
-        last_out[v] = h[k];
-      }
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+      const VertexId v = corners[c];
+      half_word(node_edges[c]) = v;
+      last_out[v] = node_edges[c];
     }
-    node_edges = HugeVector<EdgeId>();
+    if (corners_read) corners_read();
+    {
+      const HugeArray<Halfedge> next = make_huge_array<Halfedge>(halfedges);
+      for (FaceId t = 0; t < faces; ++t) {
+        const Halfedge* h = node_edges.data() + 3 * std::size_t{t};
+        for (std::size_t k = 0; k < 3; ++k) next[h[k]] = h[(k + 1) % 3];
+      }
+      // The slots, then the nexts (12 bytes per triangle each), go back to the kernel: kept by the
+      // huge-page pool, they stayed resident while the links' second half is filled and beside
+      // the arrays made after them, none of which takes them again whole (armadillo-sub2: peak
+      // 94-95 MB against 89 MB with the pool off).
+      node_edges = HugeVector<EdgeId>();
+      huge_pages::trim_retained(kept);
+      for (std::size_t h = halfedges; h-- > 0;) tri.links_[h] = {half_word(h), next[h]};
+    }
+    huge_pages::trim_retained(kept);
 
-    tri.input_vertex_ = spatial_vertex_order(positions, faces);
     tri.out_.resize(vertices);
     for (VertexId v = 0; v < vertices; ++v) tri.out_[v] = last_out[tri.input_vertex_[v]];
   }
@@ -107,7 +133,8 @@ Triangulation Triangulation::from_dual(const Positions& positions,
     HugeVector<VertexId> new_id(vertices);
     for (VertexId v = 0; v < vertices; ++v) new_id[tri.input_vertex_[v]] = v;
     tri.degree_.assign(vertices, 0);
-    for (Link& link : tri.links_) {
+    for (std::size_t h = 0; h < halfedges; ++h) {
+      Link& link = tri.links_[h];
       link.origin = new_id[link.origin];
       ++tri.degree_[link.origin];
     }

@@ -139,6 +139,27 @@ TEST(HugePages, TrimGivesBackTheLargestKeptRangesFirst) {
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
 }
 
+// A shrunk array keeps its head, gives back the whole pages past it at once (kept by the pool
+// here), and releases only what it kept when freed; below a page nothing is given back.
+TEST(HugePages, ShrinkGivesBackTheWholePagesPastTheHead) {
+  const PoolOn pool;
+  const std::size_t ints = 3 * huge_pages::kPageBytes / sizeof(std::uint32_t);
+  {
+    HugeArray<std::uint32_t> array = make_huge_array<std::uint32_t>(ints);
+    for (std::size_t i = 0; i < ints; ++i) array[i] = static_cast<std::uint32_t>(i);
+    const std::size_t head = ints / 2;  // a page and a half
+    shrink_huge_array(array, head);
+    EXPECT_EQ(array.get_deleter().size, head);
+    EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);  // the third page
+    for (std::size_t i = 0; i < head; ++i) ASSERT_EQ(array[i], i);
+    shrink_huge_array(array, 16);  // below a page: kept whole
+    EXPECT_EQ(array.get_deleter().size, head);
+    EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);
+  }
+  EXPECT_EQ(huge_pages::retained_bytes(), 3 * huge_pages::kPageBytes);
+  huge_pages::release_retained();
+}
+
 TEST(HugePages, ForkedChildDoesNotReuseItsParentsRanges) {
   const PoolOn pool;
   void* range = huge_pages::acquire(kRange);

@@ -127,6 +127,34 @@ RC_GTEST_PROP(Triangulation, FromDualTrustsTheCallersCount, ()) {
   }
 }
 
+// The corners are not read after corners_read, which is called once: a caller that overwrites
+// (or frees) them there gets the same triangulation.
+RC_GTEST_PROP(Triangulation, FromDualReadsNoCornerAfterSayingSo, ()) {
+  const TriangleMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
+  const CubicGraph dual = build_dual(mesh).graph;
+  std::vector<VertexId> corners = testing::flat_corners(mesh);
+  int calls = 0;
+  const Triangulation spoiled = Triangulation::from_dual(
+      mesh.positions, corners, {dual.node_edges().begin(), dual.node_edges().end()},
+      {dual.edge_ends().begin(), dual.edge_ends().end()}, Triangulation::Connectivity::unknown,
+      [&] {
+        ++calls;
+        std::fill(corners.begin(), corners.end(), 0xFFFFFFFFu);
+      });
+  const Triangulation kept = testing::from_dual_of(mesh);
+  RC_ASSERT(calls == 1);
+  RC_ASSERT(spoiled.check() == "");
+  RC_ASSERT(spoiled.edge_capacity() == kept.edge_capacity());
+  for (Halfedge h = 0; h < 2 * kept.edge_capacity(); ++h) {
+    RC_ASSERT(spoiled.origin(h) == kept.origin(h));
+    RC_ASSERT(spoiled.next(h) == kept.next(h));
+  }
+  for (VertexId v = 0; v < kept.vertex_capacity(); ++v) {
+    RC_ASSERT(spoiled.out(v) == kept.out(v));
+    RC_ASSERT(spoiled.degree(v) == kept.degree(v));
+  }
+}
+
 TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
   const auto message = [](const TriangleMesh& mesh, std::span<const VertexId> corners,
                           const CubicGraph& dual) -> std::string {

@@ -25,6 +25,12 @@ inline constexpr std::size_t kRetainedBytes = std::size_t{1} << 30;
 /// std::bad_alloc.
 void* acquire(std::size_t bytes);
 
+/// Advises a range from acquire() (`bytes` long) for an array of `used` bytes: huge pages over its
+/// whole huge pages, ordinary ones over the rest, so that a partial last huge page becomes
+/// resident only as far as the array writes it, not 2 MiB at its first touch (armadillo-sub2's
+/// lrs: five arrays at its peak, 2.1 MiB of unwritten tails). Advice only.
+void advise_used(void* range, std::size_t bytes, std::size_t used);
+
 /// Gives back a range from acquire(): unmapped at once with the pool off; with it on, kept for
 /// the next acquire() while the pool holds less than its limit (the rest goes back to the kernel).
 void release(void* range, std::size_t bytes);
@@ -76,7 +82,9 @@ struct HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge_pages::kPageBytes)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
-    return static_cast<T*>(huge_pages::acquire(round_up(bytes)));
+    void* range = huge_pages::acquire(round_up(bytes));
+    huge_pages::advise_used(range, round_up(bytes), bytes);
+    return static_cast<T*>(range);
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
@@ -112,6 +120,22 @@ using HugeArray = std::unique_ptr<T[], HugeArrayRelease<T>>;
 template <class T>
 HugeArray<T> make_huge_array(std::size_t size) {
   return HugeArray<T>(HugePageAllocator<T>().allocate(size), HugeArrayRelease<T>{size});
+}
+
+/// Shrinks `array` (of array.get_deleter().size elements) to its first `size`, giving back at once
+/// the whole huge pages past them, released as the array's own are (kept by the pool or unmapped):
+/// for an array whose tail is dead while its head lives on. Nothing is given back when either
+/// size is below a huge page (operator new's blocks).
+template <class T>
+void shrink_huge_array(HugeArray<T>& array, std::size_t size) {
+  const std::size_t had = array.get_deleter().size * sizeof(T), keep = size * sizeof(T);
+  if (keep < huge_pages::kPageBytes || had < keep) return;
+  const std::size_t kept_bytes = HugePageAllocator<T>::round_up(keep);
+  const std::size_t had_bytes = HugePageAllocator<T>::round_up(had);
+  if (kept_bytes < had_bytes) {
+    huge_pages::release(reinterpret_cast<char*>(array.get()) + kept_bytes, had_bytes - kept_bytes);
+  }
+  array.get_deleter().size = size;
 }
 
 }  // namespace petersen

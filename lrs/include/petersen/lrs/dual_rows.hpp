@@ -24,10 +24,10 @@ struct DualRows {
 
 /// Takes K (the triangulation expand_and_match left, every face alive) and the expansion's edge
 /// states over and gives DualRows, freeing each array once the next is made: beside K's links
-/// (24 bytes per face), at most the triangles (12), M's side (1) and the rows (12; the edge states,
-/// 1.5, are freed before them), where dual_graph and matching_of add 28 and an augmentation on them
-/// 28 more. The triangulation is left empty. Throws std::logic_error if a face is dead or two edges
-/// of M share a face. O(F).
+/// (24 bytes per face), at most the triangles (12) and M's side (1), then the rows (12) beside half
+/// the links, the triangles and M's side (the edge states, 1.5, are freed before them), where
+/// dual_graph and matching_of add 28 and an augmentation on them 28 more. The triangulation is left
+/// empty. Throws std::logic_error if a face is dead or two edges of M share a face. O(F).
 DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 }  // namespace petersen::lrs

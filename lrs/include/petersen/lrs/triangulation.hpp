@@ -5,8 +5,10 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "petersen/dualize/mesh.hpp"
@@ -73,13 +75,17 @@ class Triangulation {
   /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
   /// form several fans) or orientation is inconsistent around it, and when the triangles form
   /// several components (unless `connectivity` says the caller has counted one);
-  /// std::invalid_argument when the arrays are not a dual of the triangles. Each array is freed
-  /// once the next is made: beside the caller's positions and corners, at most the slots (12
-  /// bytes per triangle), the links (24) and one vertex array (2) at a time, where from_mesh holds
-  /// two copies of the mesh, its own dual and the surface check's scratch. O(V + F).
+  /// std::invalid_argument when the arrays are not a dual of the triangles. `corners_read`, when
+  /// given, is called as soon as `corners` is read no more (before the links are complete), so
+  /// that a caller done with them frees them there. Each array is freed once the next is made:
+  /// beside the caller's positions, at most the corners, the slots (12 bytes per triangle), half
+  /// the links (12) and one vertex array (2) at a time, then the slots, all the links (24) and
+  /// their nexts (12) without the corners if the caller has freed them, where from_mesh holds two
+  /// copies of the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
                                  HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
-                                 Connectivity connectivity = Connectivity::unknown);
+                                 Connectivity connectivity = Connectivity::unknown,
+                                 const std::function<void()>& corners_read = {});
 
   /// The input mesh's id of vertex v.
   VertexId input_vertex(VertexId v) const { return input_vertex_.empty() ? v : input_vertex_[v]; }
@@ -164,7 +170,37 @@ class Triangulation {
     VertexId origin;
     Halfedge next;
   };
-  HugeVector<Link> links_;
+  // The links in an uninitialised array (copied whole with the triangulation): from_dual fills it
+  // a half at a time, and into_dual_rows gives its second half back early, so that neither phase
+  // holds all of it beside its other arrays (quad's lrs, issue 15).
+  class Links {
+   public:
+    Links() = default;
+    explicit Links(std::size_t size) : data_(make_huge_array<Link>(size)), size_(size) {}
+    Links(const Links& other) : Links(other.size_) {
+      std::copy_n(other.data_.get(), size_, data_.get());
+    }
+    Links(Links&& other) noexcept
+        : data_(std::move(other.data_)), size_(std::exchange(other.size_, 0)) {}
+    Links& operator=(Links other) noexcept {
+      std::swap(data_, other.data_);
+      std::swap(size_, other.size_);
+      return *this;
+    }
+    Link& operator[](std::size_t h) { return data_[h]; }
+    const Link& operator[](std::size_t h) const { return data_[h]; }
+    std::size_t size() const { return size_; }
+    /// Keeps the first `size` links (shrink_huge_array).
+    void shrink(std::size_t size) {
+      shrink_huge_array(data_, size);
+      size_ = size;
+    }
+
+   private:
+    HugeArray<Link> data_;
+    std::size_t size_ = 0;
+  };
+  Links links_;
   HugeVector<std::uint8_t> edge_alive_;
   HugeVector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
   HugeVector<std::uint32_t> degree_;
