@@ -511,10 +511,6 @@ class PlyParser {
     }
   }
 
-  // The layouts most tools write (write_mesh too), in the host's byte order: vertices of just x,
-  // y, z of one floating type, faces of just a uchar-counted list of int or uint. Read with
-  // fixed-size copies instead of a switch per value, with the same checks and messages as the
-  // general loop. False (nothing read) for any other layout.
   // Appends faces i, i + 1, ... of `count` while each is a triangle whose three 32-bit corners
   // are in range and fit, in a loop of its own; returns the first face it did not take, for the
   // general loop to read or refuse with its error. armadillo-sub2's 1.38M faces, each a count
@@ -543,6 +539,10 @@ class PlyParser {
     return i;
   }
 
+  // The layouts most tools write (write_mesh too), in the host's byte order: vertices of just x,
+  // y, z of one floating type, faces of just a uchar-counted list of int or uint. Read with
+  // fixed-size copies instead of a switch per value, with the same checks and messages as the
+  // general loop. False (nothing read) for any other layout.
   bool read_common_layout(const Element& element, BinaryCursor& in, std::uint64_t& i,
                           const auto& fail, const auto& need) {
     if ((encoding_ == Encoding::big) != (std::endian::native == std::endian::big)) return false;
