@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <span>
 #include <stdexcept>
 
@@ -70,22 +71,24 @@ void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
                             HugeVector<VertexId>* releasable_corners, const QuadOptions& options,
                             TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
   // The input's corners are read once more only to find the quads' sources: without those, the
-  // consuming door's are freed once from_dual has returned (12 bytes per triangle through the
-  // contraction, the expansion and K's rows), and given back to the kernel: the pool would keep
-  // them resident beside those phases' arrays (4M plate: peak 263 -> 252 MB), while what it kept
-  // before is what they reuse (emptying the pool instead cost 0.1-0.25 s of fresh pages in those
-  // phases at 4M). Not earlier, through from_dual's corners_read: from_dual can still refuse the
-  // mesh after reading them (a pinched vertex, found by its rotation check), and the caller then
-  // pairs the mesh another way, from these corners (invalid/cow.obj.gz crashed so).
-  // The caller has counted one component (the choice of this path).
-  lrs::Triangulation tri = lrs::Triangulation::from_dual(
-      mesh.positions, mesh.corners, std::move(graph.node_edges), std::move(graph.edge_ends),
-      lrs::Triangulation::Connectivity::connected);
-  if (!options.sources && releasable_corners != nullptr) {
+  // consuming door's are freed as soon as from_dual is done with them (before it completes the
+  // links: 12 bytes per triangle through the rest of from_dual, the contraction, the expansion
+  // and K's rows; armadillo-sub2's peak 103.5 -> 88 MB), and given back to the kernel: the pool
+  // would keep them resident beside those phases' arrays (4M plate: peak 263 -> 252 MB), while
+  // what it kept before is what they reuse (emptying the pool instead cost 0.1-0.25 s of fresh
+  // pages in those phases at 4M). from_dual refuses a mesh (a pinched vertex: the caller then
+  // pairs it from these corners) only before it calls corners_read.
+  const bool free_corners = !options.sources && releasable_corners != nullptr;
+  const auto corners_read = [&] {
     const std::size_t kept = huge_pages::retained_bytes();
     *releasable_corners = HugeVector<VertexId>();  // `= {}` would keep the buffer
     huge_pages::trim_retained(kept);
-  }
+  };
+  // The caller has counted one component (the choice of this path).
+  lrs::Triangulation tri = lrs::Triangulation::from_dual(
+      mesh.positions, mesh.corners, std::move(graph.node_edges), std::move(graph.edge_ends),
+      lrs::Triangulation::Connectivity::connected,
+      free_corners ? std::function<void()>(corners_read) : std::function<void()>());
   stats.dual_seconds += clock.lap();
 
   // The contraction's stack dies once the expansion has undone it; K then becomes its dual's

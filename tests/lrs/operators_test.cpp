@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/dualize/surface_check.hpp"
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/lrs/edge_contraction.hpp"
 #include "petersen/lrs/edge_flip.hpp"
@@ -155,16 +157,61 @@ RC_GTEST_PROP(Triangulation, FromDualReadsNoCornerAfterSayingSo, ()) {
   }
 }
 
+// Closed surfaces with vertices pinched (pinch_vertices merges two vertices' cones): from_dual
+// refuses them, naming a vertex that the surface check (inspect_surface, which counts each
+// vertex's fans its own way) finds pinched, and before corners_read; without a pinch it builds.
+RC_GTEST_PROP(Triangulation, FromDualRefusesEveryPinchBeforeReadingOn, ()) {
+  const TriangleMesh surface = random_closed_surface(
+      *rc::gen::inRange<std::uint32_t>(0, 3), *rc::gen::inRange<std::uint32_t>(0, 200),
+      *rc::gen::inRange<std::uint32_t>(0, 200), *rc::gen::arbitrary<std::uint64_t>());
+  const TriangleMesh mesh = to_triangle_mesh(pinch_vertices(to_polygon_mesh(surface),
+                                                            *rc::gen::inRange<std::uint32_t>(0, 4),
+                                                            *rc::gen::arbitrary<std::uint64_t>()));
+  const SurfaceReport report = inspect_surface(mesh);
+  const CubicGraph dual = build_dual(mesh).graph;
+  const std::vector<VertexId> corners = testing::flat_corners(mesh);
+  int reads = 0;
+  std::string refusal;
+  try {
+    Triangulation::from_dual(mesh.positions, corners,
+                             {dual.node_edges().begin(), dual.node_edges().end()},
+                             {dual.edge_ends().begin(), dual.edge_ends().end()},
+                             Triangulation::Connectivity::unknown, [&] { ++reads; });
+  } catch (const MeshError& e) {
+    refusal = e.what();
+  }
+  RC_TAG(report.pinched_vertices.count);
+  if (report.pinched_vertices.empty()) {
+    RC_ASSERT(refusal == "");
+    RC_ASSERT(reads == 1);
+    return;
+  }
+  RC_ASSERT(reads == 0);
+  bool named = false;
+  for (const VertexId v : report.pinched_vertices.first) {
+    named |= refusal ==
+             "pinched vertex " + std::to_string(v) + " (its triangles form more than one fan)";
+  }
+  RC_ASSERT(named || report.pinched_vertices.count > report.pinched_vertices.first.size());
+  RC_ASSERT(refusal.rfind("pinched vertex ", 0) == 0);
+}
+
 TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
+  // A refusal comes before corners_read: a caller that frees the corners there and falls back
+  // to another method on MeshError reads them again.
   const auto message = [](const TriangleMesh& mesh, std::span<const VertexId> corners,
                           const CubicGraph& dual) -> std::string {
+    bool read = false;
     try {
       Triangulation::from_dual(mesh.positions, corners,
                                {dual.node_edges().begin(), dual.node_edges().end()},
-                               {dual.edge_ends().begin(), dual.edge_ends().end()});
+                               {dual.edge_ends().begin(), dual.edge_ends().end()},
+                               Triangulation::Connectivity::unknown, [&] { read = true; });
     } catch (const MeshError& e) {
+      EXPECT_FALSE(read) << e.what();
       return e.what();
     }
+    EXPECT_TRUE(read);
     return "";
   };
   // Two tetrahedra apart.
@@ -197,9 +244,12 @@ TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
   std::swap(corners[1], corners[2]);
   HugeVector<EdgeId> slots(dual.node_edges().begin(), dual.node_edges().end());
   std::swap(slots[0], slots[2]);
+  bool read = false;
   EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, std::move(slots),
-                                        {dual.edge_ends().begin(), dual.edge_ends().end()}),
+                                        {dual.edge_ends().begin(), dual.edge_ends().end()},
+                                        Triangulation::Connectivity::unknown, [&] { read = true; }),
                MeshError);
+  EXPECT_FALSE(read);
   // Arrays of the wrong sizes, and an edge that is no side of its triangle.
   EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, {}, {}),
                std::invalid_argument);

@@ -196,6 +196,12 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToPs) {
   EXPECT_EQ(lrs.mesh.corners, ps.mesh.corners);
   EXPECT_EQ(lrs.sources, ps.sources);
   EXPECT_EQ(check_quad_result(pinched, lrs, false, true), "");
+  // The consuming door without sources lets lrs free the corners once its triangulation has read
+  // them: the pinch is refused before that, and ps pairs the corners as they were.
+  const QuadResult consumed =
+      quadrangulate(PolygonMesh(pinched), {.algorithm = Algorithm::lrs, .sources = false});
+  EXPECT_EQ(consumed.stats.lrs_fallback_components, 1u);
+  EXPECT_EQ(consumed.mesh.corners, ps.mesh.corners);
   // Without the pinch (vertex 12 split into one apex per cone) lrs pairs it, with flips allowed.
   positions.push_back({0, 0, 1.5});
   for (VertexId i = 0; i < 4; ++i) faces[16 + 2 * i + 1][2] = 13;

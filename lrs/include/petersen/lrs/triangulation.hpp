@@ -75,11 +75,12 @@ class Triangulation {
   /// ids back. Throws MeshError naming the input vertex when a vertex is pinched (its triangles
   /// form several fans) or orientation is inconsistent around it, and when the triangles form
   /// several components (unless `connectivity` says the caller has counted one);
-  /// std::invalid_argument when the arrays are not a dual of the triangles. `corners_read`, when
-  /// given, is called as soon as `corners` is read no more (before the links are complete), so
-  /// that a caller done with them frees them there. Each array is freed once the next is made:
-  /// beside the caller's positions, at most the corners, the slots (12 bytes per triangle), half
-  /// the links (12) and one vertex array (2) at a time, then the slots, all the links (24) and
+  /// std::invalid_argument when the arrays are not a dual of the triangles, all of it before
+  /// `corners_read` is called. `corners_read`, when given, is called as soon as `corners` is read
+  /// no more (before the links are complete), so that a caller done with them frees them there:
+  /// once it is called, from_dual refuses nothing. Each array is freed once the next is
+  /// made: beside the caller's positions, at most the corners, the slots (12 bytes per triangle),
+  /// half the links (12) and one vertex array (2) at a time, then the slots, all the links (24) and
   /// their nexts (12) without the corners if the caller has freed them, where from_mesh holds two
   /// copies of the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
