@@ -73,11 +73,7 @@ void* map_fresh(std::size_t bytes) {
   const std::uintptr_t end = aligned + bytes;
   if (start + bytes + kPageBytes > end)
     munmap(reinterpret_cast<void*>(end), start + bytes + kPageBytes - end);
-  void* range = reinterpret_cast<void*>(aligned);
-#if defined(MADV_HUGEPAGE)
-  madvise(range, bytes, MADV_HUGEPAGE);  // advice only: a refusal leaves ordinary pages
-#endif
-  return range;
+  return reinterpret_cast<void*>(aligned);  // advised by acquire, like a kept range
 }
 
 // Moves the pages of [from, from + bytes) over [to, to + bytes), a part of a fresh mapping not
@@ -97,9 +93,8 @@ void move_pages(char* from, std::size_t bytes, char* to) {
   move_pages(from + half, bytes - half, to + half);
 }
 
-}  // namespace
-
-void* acquire(std::size_t bytes) {
+// A range of `bytes` from the pool or the kernel, not yet advised.
+void* obtain(std::size_t bytes) {
   if (!pool_on.load(std::memory_order_acquire)) return map_fresh(bytes);
   Retained& kept = retained();
   std::vector<Range> pieces;
@@ -153,15 +148,20 @@ void* acquire(std::size_t bytes) {
   return range;
 }
 
-void advise_used(void* range, std::size_t bytes, std::size_t used) {
+}  // namespace
+
+void* acquire(std::size_t bytes, std::size_t used) {
+  void* range = obtain(bytes);
 #if defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
-  // A kept range may hold a tail advised for an earlier array: the whole range is advised afresh.
+  // Advice only (a refusal leaves ordinary pages). A kept range may hold a tail advised for an
+  // earlier array: the whole range is advised afresh.
   madvise(range, bytes, MADV_HUGEPAGE);
   const std::size_t whole = used / kPageBytes * kPageBytes;
   if (whole < bytes) madvise(static_cast<char*>(range) + whole, bytes - whole, MADV_NOHUGEPAGE);
 #else
-  (void)range, (void)bytes, (void)used;
+  (void)used;
 #endif
+  return range;
 }
 
 void release(void* range, std::size_t bytes) {
@@ -246,12 +246,11 @@ std::size_t retained_bytes() {
 
 #else  // no huge pages to advise, and no ranges to keep: aligned heap blocks
 
-void* acquire(std::size_t bytes) {
+void* acquire(std::size_t bytes, std::size_t) {
   void* range = std::aligned_alloc(kPageBytes, bytes);
   if (range == nullptr) throw std::bad_alloc();
   return range;
 }
-void advise_used(void*, std::size_t, std::size_t) {}
 void release(void* range, std::size_t) {
   std::free(range);
 }

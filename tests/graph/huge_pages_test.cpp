@@ -24,29 +24,29 @@ struct PoolOn {
 };
 
 TEST(HugePages, WithThePoolOffNothingIsKept) {
-  void* range = huge_pages::acquire(kRange);
+  void* range = huge_pages::acquire(kRange, kRange);
   std::memset(range, 0xAB, kRange);
   huge_pages::release(range, kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
-  void* fresh = huge_pages::acquire(kRange);
+  void* fresh = huge_pages::acquire(kRange, kRange);
   EXPECT_TRUE(all_bytes(fresh, kRange, 0));  // mapped afresh, zero-filled
   huge_pages::release(fresh, kRange);
 }
 
 TEST(HugePages, DisablingThePoolReturnsWhatItKept) {
   huge_pages::enable_pool();
-  huge_pages::release(huge_pages::acquire(kRange), kRange);
+  huge_pages::release(huge_pages::acquire(kRange, kRange), kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), kRange);
   huge_pages::disable_pool();
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
-  huge_pages::release(huge_pages::acquire(kRange), kRange);
+  huge_pages::release(huge_pages::acquire(kRange, kRange), kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
 }
 
 TEST(HugePages, ThePoolKeepsNoMoreThanItsLimit) {
   huge_pages::enable_pool(kRange);
-  void* a = huge_pages::acquire(kRange);
-  void* b = huge_pages::acquire(kRange);
+  void* a = huge_pages::acquire(kRange, kRange);
+  void* b = huge_pages::acquire(kRange, kRange);
   huge_pages::release(a, kRange);
   huge_pages::release(b, kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), kRange);
@@ -55,10 +55,10 @@ TEST(HugePages, ThePoolKeepsNoMoreThanItsLimit) {
 
 TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
   const PoolOn pool;
-  void* first = huge_pages::acquire(kRange);
+  void* first = huge_pages::acquire(kRange, kRange);
   std::memset(first, 0xAB, kRange);
   huge_pages::release(first, kRange);
-  void* again = huge_pages::acquire(kRange);
+  void* again = huge_pages::acquire(kRange, kRange);
   EXPECT_EQ(again, first);
   EXPECT_TRUE(all_bytes(again, kRange, 0xAB));  // reused as it was, not mapped afresh
   huge_pages::release(again, kRange);
@@ -67,10 +67,11 @@ TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
 
 TEST(HugePages, SmallerRequestsSplitAKeptRange) {
   const PoolOn pool;
-  auto* range = static_cast<char*>(huge_pages::acquire(kRange));
+  auto* range = static_cast<char*>(huge_pages::acquire(kRange, kRange));
   huge_pages::release(range, kRange);
-  void* front = huge_pages::acquire(huge_pages::kPageBytes);
-  void* rest = huge_pages::acquire(kRange - huge_pages::kPageBytes);
+  void* front = huge_pages::acquire(huge_pages::kPageBytes, huge_pages::kPageBytes);
+  void* rest =
+      huge_pages::acquire(kRange - huge_pages::kPageBytes, kRange - huge_pages::kPageBytes);
   EXPECT_EQ(front, range);
   EXPECT_EQ(rest, range + huge_pages::kPageBytes);
   huge_pages::release(front, huge_pages::kPageBytes);
@@ -82,13 +83,13 @@ TEST(HugePages, SmallerRequestsSplitAKeptRange) {
 // and fresh zeroed pages for the rest; the pool keeps nothing of them.
 TEST(HugePages, ALargerRequestIsMadeOfTheKeptRanges) {
   const PoolOn pool;
-  void* a = huge_pages::acquire(kRange);
-  void* b = huge_pages::acquire(2 * kRange);
+  void* a = huge_pages::acquire(kRange, kRange);
+  void* b = huge_pages::acquire(2 * kRange, 2 * kRange);
   std::memset(a, 0xAB, kRange);
   std::memset(b, 0xCD, 2 * kRange);
   huge_pages::release(a, kRange);
   huge_pages::release(b, 2 * kRange);
-  auto* whole = static_cast<unsigned char*>(huge_pages::acquire(4 * kRange));
+  auto* whole = static_cast<unsigned char*>(huge_pages::acquire(4 * kRange, 4 * kRange));
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
   EXPECT_TRUE(all_bytes(whole, 2 * kRange, 0xCD));           // the largest first
   EXPECT_TRUE(all_bytes(whole + 2 * kRange, kRange, 0xAB));  // then the next
@@ -97,8 +98,8 @@ TEST(HugePages, ALargerRequestIsMadeOfTheKeptRanges) {
   huge_pages::release(whole, 4 * kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), 4 * kRange);
   // Part of a kept range: its head is taken, its tail stays kept where it was.
-  void* c = huge_pages::acquire(kRange);
-  void* d = huge_pages::acquire(4 * kRange);
+  void* c = huge_pages::acquire(kRange, kRange);
+  void* d = huge_pages::acquire(4 * kRange, 4 * kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), 0u);
   EXPECT_TRUE(all_bytes(d, 3 * kRange, 0x5A));
   EXPECT_TRUE(all_bytes(static_cast<char*>(d) + 3 * kRange, kRange, 0));
@@ -109,11 +110,11 @@ TEST(HugePages, ALargerRequestIsMadeOfTheKeptRanges) {
 
 TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
   const PoolOn pool;
-  void* range = huge_pages::acquire(kRange);
+  void* range = huge_pages::acquire(kRange, kRange);
   std::memset(range, 0xAB, kRange);
   huge_pages::release(range, kRange);
   huge_pages::release_retained();
-  void* fresh = huge_pages::acquire(kRange);
+  void* fresh = huge_pages::acquire(kRange, kRange);
   EXPECT_TRUE(all_bytes(fresh, kRange, 0));  // a new anonymous mapping, zero-filled
   huge_pages::release(fresh, kRange);
   huge_pages::release_retained();
@@ -121,15 +122,16 @@ TEST(HugePages, ReleaseRetainedReturnsKeptRangesToTheKernel) {
 
 TEST(HugePages, TrimGivesBackTheLargestKeptRangesFirst) {
   const PoolOn pool;
-  auto* small = static_cast<char*>(huge_pages::acquire(huge_pages::kPageBytes));
-  void* large = huge_pages::acquire(kRange);
+  auto* small =
+      static_cast<char*>(huge_pages::acquire(huge_pages::kPageBytes, huge_pages::kPageBytes));
+  void* large = huge_pages::acquire(kRange, kRange);
   std::memset(small, 0xAB, huge_pages::kPageBytes);
   huge_pages::release(small, huge_pages::kPageBytes);
   huge_pages::release(large, kRange);
   EXPECT_EQ(huge_pages::retained_bytes(), kRange + huge_pages::kPageBytes);
   huge_pages::trim_retained(kRange);  // over by the small range: the large one goes
   EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);
-  void* again = huge_pages::acquire(huge_pages::kPageBytes);
+  void* again = huge_pages::acquire(huge_pages::kPageBytes, huge_pages::kPageBytes);
   EXPECT_EQ(again, small);  // the small one is still kept, as it was
   EXPECT_TRUE(all_bytes(again, huge_pages::kPageBytes, 0xAB));
   huge_pages::release(again, huge_pages::kPageBytes);
@@ -162,19 +164,19 @@ TEST(HugePages, ShrinkGivesBackTheWholePagesPastTheHead) {
 
 TEST(HugePages, ForkedChildDoesNotReuseItsParentsRanges) {
   const PoolOn pool;
-  void* range = huge_pages::acquire(kRange);
+  void* range = huge_pages::acquire(kRange, kRange);
   std::memset(range, 0xAB, kRange);
   huge_pages::release(range, kRange);
   const pid_t child = fork();
   ASSERT_GE(child, 0);
   if (child == 0) {
     // Reusing the parent's range would copy every page it writes; a fresh one is zero-filled.
-    _exit(all_bytes(huge_pages::acquire(kRange), kRange, 0) ? 0 : 1);
+    _exit(all_bytes(huge_pages::acquire(kRange, kRange), kRange, 0) ? 0 : 1);
   }
   int status = 0;
   ASSERT_EQ(waitpid(child, &status, 0), child);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-  EXPECT_EQ(huge_pages::acquire(kRange), range);  // the parent keeps it
+  EXPECT_EQ(huge_pages::acquire(kRange, kRange), range);  // the parent keeps it
   huge_pages::release(range, kRange);
   huge_pages::release_retained();
 }

@@ -16,20 +16,17 @@ namespace huge_pages {
 inline constexpr std::size_t kPageBytes = std::size_t{2} << 20;
 inline constexpr std::size_t kRetainedBytes = std::size_t{1} << 30;
 
-/// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory, advised onto huge pages, its
-/// contents unspecified. With the pool off (the default) it is mapped fresh from the kernel. With
+/// `bytes` (a multiple of kPageBytes) of kPageBytes-aligned memory for an array of `used` bytes,
+/// its contents unspecified, advised onto huge pages over its whole huge pages and ordinary ones
+/// over the rest, so that a partial last huge page becomes resident only as far as the array
+/// writes it, not 2 MiB at its first touch (armadillo-sub2's lrs: five arrays at its peak, 2.1 MiB
+/// of unwritten tails). With the pool off (the default) it is mapped fresh from the kernel. With
 /// the pool on, the smallest kept range that is large enough is handed out again (split if
 /// larger); when none is, the range is made of the largest kept ranges, as many bytes as it takes
 /// (their pages moved into it with mremap, neither copied nor faulted in again), and fresh pages
 /// for whatever they lack, so that kept memory does not pile up beside the live arrays. Throws
 /// std::bad_alloc.
-void* acquire(std::size_t bytes);
-
-/// Advises a range from acquire() (`bytes` long) for an array of `used` bytes: huge pages over its
-/// whole huge pages, ordinary ones over the rest, so that a partial last huge page becomes
-/// resident only as far as the array writes it, not 2 MiB at its first touch (armadillo-sub2's
-/// lrs: five arrays at its peak, 2.1 MiB of unwritten tails). Advice only.
-void advise_used(void* range, std::size_t bytes, std::size_t used);
+void* acquire(std::size_t bytes, std::size_t used);
 
 /// Gives back a range from acquire(): unmapped at once with the pool off; with it on, kept for
 /// the next acquire() while the pool holds less than its limit (the rest goes back to the kernel).
@@ -82,9 +79,7 @@ struct HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge_pages::kPageBytes)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
-    void* range = huge_pages::acquire(round_up(bytes));
-    huge_pages::advise_used(range, round_up(bytes), bytes);
-    return static_cast<T*>(range);
+    return static_cast<T*>(huge_pages::acquire(round_up(bytes), bytes));
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
