@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <exception>
 #include <functional>
 #include <optional>
 #include <stdexcept>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "petersen/graph/component_forest.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/lrs/triangulation.hpp"
 #include "spatial_order.hpp"
 
@@ -22,8 +24,9 @@ namespace {
 // the caller's corners_read (a caller that falls back to another method reads the corners again:
 // the check at the end, over the links, let invalid/cow.obj.gz's pinched vertex through to a
 // fallback over freed corners). The arrays are not yet known to be a dual: every read is checked.
-// A bit per corner and per vertex (0.4 bytes per triangle). Each vertex is walked once, from its
-// first corner; a corner that no walk reached is then on a second fan.
+// Each vertex is walked once, from its first corner; a corner that no walk reached is then on a
+// second fan. walk_fans walks the vertices of one parity, setting their corners' bits in
+// `visited` (a bit per corner and, its own, per vertex: 0.8 bytes per triangle for both parities).
 //
 // A walk is a chain of dependent random reads (the edge's ends, then the next triangle's corners
 // and slots) in the input's order, not yet the spatial one: walked one at a time, the check took
@@ -33,12 +36,13 @@ namespace {
 // threw the other lanes' reads away: 8 lanes with branches measured slower than one). Measured on
 // armadillo-sub2 at load 2 (dual phase, least of 7 runs): one walk at a time 0.33 s more than
 // without the check, 16 lanes 0.11-0.14 s more (about 100 instructions a corner, callgrind).
-void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
-                std::span<const NodeId> edge_ends, std::uint32_t vertices) {
+void walk_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
+               std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t parity,
+               std::vector<std::uint64_t>& visited) {
   const std::size_t corner_count = corners.size();
   const auto faces = static_cast<NodeId>(corner_count / 3);
   const std::size_t edges = edge_ends.size() / 2;
-  std::vector<std::uint64_t> visited((corner_count + 63) / 64, 0), has_fan((vertices + 63) / 64, 0);
+  std::vector<std::uint64_t> has_fan((vertices + 63) / 64, 0);
   const auto is_set = [](const std::vector<std::uint64_t>& bits, std::size_t i) {
     return (bits[i / 64] >> (i % 64) & 1) != 0;
   };
@@ -67,7 +71,7 @@ void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_
       if (v >= vertices) {
         throw not_a_dual("triangle " + std::to_string(scan / 3) + " has a corner out of range");
       }
-      if (is_set(has_fan, v)) continue;
+      if (v % 2 != parity || is_set(has_fan, v)) continue;
       set(has_fan, v);
       set(visited, scan);
       const std::size_t k = scan % 3;
@@ -117,11 +121,34 @@ void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_
       ++i;
     }
   }
+}
+
+// The even and the odd vertices' walks on up to two threads, each setting bits of its own (the
+// walks are most of the check's time: ... on armadillo-sub2). Each parity's first error is kept
+// and the even one's is reported first: the same error for any number of threads.
+void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
+                std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t threads) {
+  const std::size_t words = (corners.size() + 63) / 64;
+  std::array<std::vector<std::uint64_t>, 2> visited;
+  std::array<std::exception_ptr, 2> errors;
+  run_parallel(threads, 2, [&](std::uint32_t parity) {
+    try {
+      visited[parity].assign(words, 0);
+      walk_fans(corners, node_edges, edge_ends, vertices, parity, visited[parity]);
+    } catch (...) {
+      errors[parity] = std::current_exception();
+    }
+  });
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
   // A word at a time: the corners past the end count as reached.
-  if (corner_count % 64 != 0) visited.back() |= ~std::uint64_t{0} << (corner_count % 64);
-  for (std::size_t word = 0; word < visited.size(); ++word) {
-    if (visited[word] != ~std::uint64_t{0}) {
-      const std::size_t c = 64 * word + static_cast<std::size_t>(std::countr_one(visited[word]));
+  std::vector<std::uint64_t>& reached = visited[0];
+  if (corners.size() % 64 != 0) reached.back() |= ~std::uint64_t{0} << (corners.size() % 64);
+  for (std::size_t word = 0; word < words; ++word) {
+    reached[word] |= visited[1][word];
+    if (reached[word] != ~std::uint64_t{0}) {
+      const std::size_t c = 64 * word + static_cast<std::size_t>(std::countr_one(reached[word]));
       throw MeshError("pinched vertex " + std::to_string(corners[c]) +
                       " (its triangles form more than one fan)");
     }
@@ -134,7 +161,8 @@ Triangulation Triangulation::from_dual(const Positions& positions,
                                        std::span<const VertexId> corners,
                                        HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
                                        Connectivity connectivity,
-                                       const std::function<void()>& corners_read) {
+                                       const std::function<void()>& corners_read,
+                                       std::uint32_t threads) {
   const auto faces = static_cast<std::uint32_t>(corners.size() / 3);
   const auto edges = static_cast<std::uint32_t>(edge_ends.size() / 2);
   const auto vertices = static_cast<std::uint32_t>(positions.size());
@@ -145,7 +173,7 @@ Triangulation Triangulation::from_dual(const Positions& positions,
                                 " edge slots and " + std::to_string(edges) +
                                 " edges are not a closed mesh's dual");
   }
-  check_fans(corners, node_edges, edge_ends, vertices);
+  check_fans(corners, node_edges, edge_ends, vertices, threads);
   const std::size_t kept = huge_pages::retained_bytes();
   Triangulation tri;
   {
@@ -167,9 +195,11 @@ Triangulation Triangulation::from_dual(const Positions& positions,
     };
     for (EdgeId e = 0; e < edges; ++e) {
       const NodeId t = edge_ends[2 * e], u = edge_ends[2 * e + 1];
-      // Both ends name the edge among their sides: with 3 sides per triangle and 2 ends per edge,
-      // every side then names an edge that ends at its triangle, once.
-      if (t >= faces || u >= faces || u == t || !names(t, e) || !names(u, e)) {
+      // The first end names the edge among its sides. check_fans has seen every side's edge end
+      // at its triangle and be named by the other end, so an edge named by three sides or more
+      // would leave another edge named by none, whose first end fails here: every edge is then
+      // named by its two ends once (u's sides are not read again: a random read per edge).
+      if (t >= faces || u >= faces || u == t || !names(t, e)) {
         throw std::invalid_argument("lrs::Triangulation::from_dual: edge " + std::to_string(e) +
                                     " is not a side of its triangles");
       }
@@ -240,7 +270,8 @@ Triangulation Triangulation::from_dual(const Positions& positions,
       // The slots, then the nexts (12 bytes per triangle each), go back to the kernel: kept by the
       // huge-page pool, they stayed resident while the links' second half is filled and beside
       // the arrays made after them, none of which takes them again whole (armadillo-sub2: peak
-      // 94-95 MB against 89 MB with the pool off).
+      // 94-95 MB against 89 MB with the pool off; since the pool assembles ranges from kept ones,
+      // 101 MB without these two trims against 88 MB, the 4M plate 270 MB against 236 MB).
       node_edges = HugeVector<EdgeId>();
       huge_pages::trim_retained(kept);
       for (std::size_t h = halfedges; h-- > 0;) tri.links_[h] = {half_word(h), next[h]};

@@ -88,7 +88,8 @@ void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
   lrs::Triangulation tri = lrs::Triangulation::from_dual(
       mesh.positions, mesh.corners, std::move(graph.node_edges), std::move(graph.edge_ends),
       lrs::Triangulation::Connectivity::connected,
-      free_corners ? std::function<void()>(corners_read) : std::function<void()>());
+      free_corners ? std::function<void()>(corners_read) : std::function<void()>(),
+      options.threads);
   stats.dual_seconds += clock.lap();
 
   // The contraction's stack dies once the expansion has undone it; K then becomes its dual's

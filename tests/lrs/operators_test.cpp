@@ -5,6 +5,7 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <random>
 #include <string>
 #include <vector>
@@ -158,8 +159,9 @@ RC_GTEST_PROP(Triangulation, FromDualReadsNoCornerAfterSayingSo, ()) {
 }
 
 // Closed surfaces with vertices pinched (pinch_vertices merges two vertices' cones): from_dual
-// refuses them, naming a vertex that the surface check (inspect_surface, which counts each
-// vertex's fans its own way) finds pinched, and before corners_read; without a pinch it builds.
+// refuses them, on one thread or two, naming a vertex that the surface check (inspect_surface,
+// which counts each vertex's fans its own way) finds pinched, and before corners_read; without a
+// pinch it builds.
 RC_GTEST_PROP(Triangulation, FromDualRefusesEveryPinchBeforeReadingOn, ()) {
   const TriangleMesh surface = random_closed_surface(
       *rc::gen::inRange<std::uint32_t>(0, 3), *rc::gen::inRange<std::uint32_t>(0, 200),
@@ -171,19 +173,24 @@ RC_GTEST_PROP(Triangulation, FromDualRefusesEveryPinchBeforeReadingOn, ()) {
   const CubicGraph dual = build_dual(mesh).graph;
   const std::vector<VertexId> corners = testing::flat_corners(mesh);
   int reads = 0;
-  std::string refusal;
-  try {
-    Triangulation::from_dual(mesh.positions, corners,
-                             {dual.node_edges().begin(), dual.node_edges().end()},
-                             {dual.edge_ends().begin(), dual.edge_ends().end()},
-                             Triangulation::Connectivity::unknown, [&] { ++reads; });
-  } catch (const MeshError& e) {
-    refusal = e.what();
+  // The refusal on one thread and on two (the fans' walks split by vertex parity): the same.
+  std::array<std::string, 2> refusals;
+  for (std::uint32_t threads : {1u, 2u}) {
+    try {
+      Triangulation::from_dual(
+          mesh.positions, corners, {dual.node_edges().begin(), dual.node_edges().end()},
+          {dual.edge_ends().begin(), dual.edge_ends().end()}, Triangulation::Connectivity::unknown,
+          [&] { ++reads; }, threads);
+    } catch (const MeshError& e) {
+      refusals[threads - 1] = e.what();
+    }
   }
+  RC_ASSERT(refusals[0] == refusals[1]);
+  const std::string& refusal = refusals[0];
   RC_TAG(report.pinched_vertices.count);
   if (report.pinched_vertices.empty()) {
     RC_ASSERT(refusal == "");
-    RC_ASSERT(reads == 1);
+    RC_ASSERT(reads == 2);
     return;
   }
   RC_ASSERT(reads == 0);

@@ -78,7 +78,8 @@ class Triangulation {
   /// std::invalid_argument when the arrays are not a dual of the triangles, all of it before
   /// `corners_read` is called. `corners_read`, when given, is called as soon as `corners` is read
   /// no more (before the links are complete), so that a caller done with them frees them there:
-  /// once it is called, from_dual refuses nothing. Each array is freed once the next is
+  /// once it is called, from_dual refuses nothing. The fans are checked on up to `threads`
+  /// threads (two at most; 0: as many as the machine has). Each array is freed once the next is
   /// made: beside the caller's positions, at most the corners, the slots (12 bytes per triangle),
   /// half the links (12) and one vertex array (2) at a time, then the slots, all the links (24) and
   /// their nexts (12) without the corners if the caller has freed them, where from_mesh holds two
@@ -86,7 +87,8 @@ class Triangulation {
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
                                  HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
                                  Connectivity connectivity = Connectivity::unknown,
-                                 const std::function<void()>& corners_read = {});
+                                 const std::function<void()>& corners_read = {},
+                                 std::uint32_t threads = 1);
 
   /// The input mesh's id of vertex v.
   VertexId input_vertex(VertexId v) const { return input_vertex_.empty() ? v : input_vertex_[v]; }
