@@ -56,6 +56,11 @@ struct MinCostOptions {
   /// tight edges are matched greedily (Blossom V's greedy start), then the matching is grown to
   /// a maximum one of the tight edges (augment_matching). Off: nothing is matched at the start.
   bool greedy_start = true;
+  /// Before the forest grows: short primal-dual searches of one tree each, from every free
+  /// node in turn, with growing label budgets, augmenting where a free node is near (in reduced
+  /// cost) and stopping at a blossom or the budget. Fewer trees for the forest, whose labels
+  /// cost several times more each.
+  bool short_searches = true;
 };
 
 struct MinCostStats {
@@ -71,6 +76,8 @@ struct MinCostStats {
   std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
   std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
   std::uint64_t released_scans = 0;  ///< nodes scanned on leaving an expanded odd blossom
+  std::uint64_t short_labels = 0;    ///< labels given by the short single-tree searches
+  std::uint64_t short_augmentations = 0;
 };
 
 struct MinCostResult {
