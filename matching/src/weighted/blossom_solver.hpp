@@ -119,7 +119,7 @@ class BlossomSolver {
   }
 
   /// Blossom V's greedy start: each free node in id order raises y_v by its smallest slack and
-  /// takes a tight edge to a free neighbour; then augment_tight.
+  /// takes a tight edge to a free neighbour.
   void greedy_start() {
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
@@ -136,7 +136,6 @@ class BlossomSolver {
         }
       }
     }
-    augment_tight();
   }
 
   /// Grows the matching to a maximum matching of the tight edges by the project's cardinality
@@ -165,13 +164,16 @@ class BlossomSolver {
   }
 
   /// Short single-tree searches before the forest (see short_search): passes over the free
-  /// nodes with a label budget per search of 16, 32, .., 1024, each pass from the nodes the
-  /// last one left free. Measured (petersen_weighted_speed, armadillo-sub2's dual): the free
-  /// nodes 10.5 % -> 0.2 % and the forest's labels 5.66M -> 2.59M for 4.8M labels of these
-  /// searches, which cost about a quarter as much each (a search stays in a few cache lines'
-  /// neighbourhood, the forest's events come from everywhere). A single pass at 64 left 0.9 %
-  /// free and 3.9M forest labels: a search stopped at a blossom or its budget often succeeds
-  /// on a later pass, once the searches around have moved the duals.
+  /// nodes with a label budget per search of 16, 32, .., 1024; a pass retries only the roots
+  /// whose search ran out of budget (one stopped by a blossom mostly stops there again: retrying
+  /// those cost 1.16M labels on armadillo-sub2's dual for 2.2 % fewer forest labels). Measured
+  /// (petersen_weighted_speed, armadillo-sub2's dual): the free nodes 10.5 % -> 0.2 % and the
+  /// forest's labels 5.66M -> 2.48M for 5.65M labels of these searches, which cost about a
+  /// quarter as much each (a search stays in a small neighbourhood, the forest's events come
+  /// from everywhere). A single pass at 64 left 0.9 % free and 3.9M forest labels: a search
+  /// out of budget often succeeds on a later pass, once the searches around have moved the
+  /// duals. Budgets growing 4x per pass left the forest nests of blossoms it peeled slowly
+  /// (rocker-arm-sub3: 2.2x the search time; see find_nested).
   void short_searches() {
     for (NodeId v = 0; v < n_; ++v) {
       rec_[v].mate = {mate_[v], kNone};
@@ -187,8 +189,7 @@ class BlossomSolver {
       std::size_t left = 0;
       for (NodeId r : free_nodes) {
         if (rec_[r].mate.edge != kNoEdge) continue;  // matched by an earlier search
-        short_search(r, budget);
-        if (rec_[r].mate.edge == kNoEdge) free_nodes[left++] = r;
+        if (short_search(r, budget)) free_nodes[left++] = r;
       }
       free_nodes.resize(left);
     }
@@ -330,8 +331,17 @@ class BlossomSolver {
         x = rec_[x].parent;
       }
     }
-    for (auto [w, at] : walked_) {
-      up_[w] = {sum - at, x, rec_[x].generation};
+    // The walked nodes but the last point to the last, the one just below the top, not to the
+    // top itself: odd blossoms are often expanded one level after another (a nest peeled from
+    // outside in), and a shortcut to the top died with each level, so that every later walk went
+    // up parent by parent again. On rocker-arm-sub3's dual after short searches with budgets
+    // growing 4x per pass: 273M walk steps with shortcuts to the top, 19.8M with these; with
+    // the 2x budgets kept, 11.2M -> 9.7M (fertility-sub3's: 2.8M -> 3.8M).
+    const auto [last, at_last] = walked_.back();
+    up_[last] = {sum - at_last, x, rec_[x].generation};
+    for (std::size_t i = 0; i + 1 < walked_.size(); ++i) {
+      const auto [w, at] = walked_[i];
+      up_[w] = {at_last - at, last, rec_[last].generation};
     }
     below = sum;
     return x;
@@ -508,15 +518,16 @@ class BlossomSolver {
   // before the forest, when there are no others): even nodes gain and odd nodes lose the
   // search's clock eps, the next event from a small binary heap. It augments at the first tight
   // edge to another free node; it stops without augmenting at a tight edge between two even
-  // nodes (a blossom, left to the forest) or once `budget` nodes are labelled. Stopping
-  // anywhere leaves the duals feasible and every matched and tree edge tight (every constraint
-  // that eps tightens has its entry in the heap, and eps never passes the least), so the forest
-  // starts from wherever the searches stopped.
-  void short_search(NodeId root, std::uint32_t budget) {
+  // nodes (a blossom) or once `budget` nodes are labelled; true if it stopped at the budget.
+  // Stopping anywhere leaves the duals feasible and every matched and tree edge tight (every
+  // constraint that eps tightens has its entry in the heap, and eps never passes the least), so the
+  // forest starts from wherever the searches stopped.
+  bool short_search(NodeId root, std::uint32_t budget) {
     ++stamp_;  // mark_[v] == stamp_: v is labelled in this search
     short_heap_.clear();
     short_labelled_.clear();
     std::int64_t eps = 0;
+    bool stopped_at_budget = false;
     auto in_tree = [&](NodeId v) { return mark_[v] == stamp_; };
     // As in the forest, a labelled node stores y - eps (even) or y + eps (odd) from its label on.
     auto dual = [&](NodeId v) {
@@ -570,7 +581,10 @@ class BlossomSolver {
         ++stats_.short_augmentations;
         break;
       }
-      if (short_labelled_.size() >= budget) break;
+      if (short_labelled_.size() >= budget) {
+        stopped_at_budget = true;
+        break;
+      }
       // w is matched, and so is its mate z, unlabelled (labels come in matched pairs).
       const NodeId z = rec_[w].mate.node;
       link_[w] = {u, w, event.edge};
@@ -582,6 +596,7 @@ class BlossomSolver {
       rec_[v].y = dual(v);
       rec_[v].label = kUnlabelled;
     }
+    return stopped_at_budget;
   }
 
   // ---- the forest
