@@ -165,15 +165,16 @@ class BlossomSolver {
 
   /// Short single-tree searches before the forest (see short_search): passes over the free
   /// nodes with a label budget per search of 16, 32, .., 1024; a pass retries only the roots
-  /// whose search ran out of budget (one stopped by a blossom mostly stops there again: retrying
-  /// those cost 1.16M labels on armadillo-sub2's dual for 2.2 % fewer forest labels). Measured
-  /// (petersen_weighted_speed, armadillo-sub2's dual): the free nodes 10.5 % -> 0.2 % and the
-  /// forest's labels 5.66M -> 2.48M for 5.65M labels of these searches, which cost about a
-  /// quarter as much each (a search stays in a small neighbourhood, the forest's events come
-  /// from everywhere). A single pass at 64 left 0.9 % free and 3.9M forest labels: a search
-  /// out of budget often succeeds on a later pass, once the searches around have moved the
-  /// duals. Budgets growing 4x per pass left the forest nests of blossoms it peeled slowly
-  /// (rocker-arm-sub3: 2.2x the search time; see find_nested).
+  /// whose search ran out of budget (one stopped by a blossom mostly stops there again:
+  /// retrying those too took 6.28M search labels instead of 5.65M on armadillo-sub2's dual, and
+  /// left the forest 2.2 % more labels). Measured (petersen_weighted_speed, armadillo-sub2's
+  /// dual): the free nodes 10.5 % -> 0.2 % and the forest's labels 5.66M -> 2.48M for 5.65M
+  /// labels of these searches, which cost about a third of the instructions each and fewer
+  /// misses (a search stays in a small neighbourhood, the forest's events come from everywhere).
+  /// A single pass at 64 left 0.9 % free and 3.9M forest labels: a search out of budget often
+  /// succeeds on a later pass, once the searches around have moved the duals. Budgets growing
+  /// 4x per pass left the forest nests of blossoms it peeled slowly (rocker-arm-sub3: 1.7x the
+  /// CPU time; see find_nested).
   void short_searches() {
     for (NodeId v = 0; v < n_; ++v) {
       rec_[v].mate = {mate_[v], kNone};
