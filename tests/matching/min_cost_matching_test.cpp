@@ -143,6 +143,8 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
                                                                   r.total_cost, r.certificate);
   RC_ASSERT(check.ok());
+  // The short searches' work is capped: 16 labels a node, and one search's budget beyond.
+  RC_ASSERT(r.stats.short_labels <= std::uint64_t{16} * n + 1024);
   RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
 }
 

@@ -186,9 +186,15 @@ class BlossomSolver {
     for (NodeId v = 0; v < n_; ++v) {
       if (rec_[v].mate.edge == kNoEdge) free_nodes.push_back(v);
     }
+    // At most 16 labels a node in all (and one search's budget beyond): where searches keep
+    // running out of budget (free nodes far from any partner, which the shared meshes' duals do
+    // not have: 4.1-7.4 labels a node there), a free node could cost up to 2,047 labels before
+    // the forest takes over.
+    const std::uint64_t most = stats_.short_labels + std::uint64_t{16} * n_;
     for (std::uint32_t budget = 16; budget <= 1024 && !free_nodes.empty(); budget *= 2) {
       std::size_t left = 0;
       for (NodeId r : free_nodes) {
+        if (stats_.short_labels >= most) break;      // the forest takes the rest
         if (rec_[r].mate.edge != kNoEdge) continue;  // matched by an earlier search
         if (short_search(r, budget)) free_nodes[left++] = r;
       }
