@@ -8,6 +8,9 @@
 // (cpu_min the least); xfaster = LEMON's wall time / ours, xcpu = LEMON's CPU time / ours, x_ps
 // and xcpu_ps = ours / PS in wall and CPU time. On a loaded machine the CPU ratios are the
 // steadier ones: both programs are single-threaded, and wall time adds whatever else ran.
+// free0 is the share of nodes left free for the forest (after the greedy start and the short
+// searches), labels the forest's labels, short_lab and short_aug the short searches' labels and
+// augmentations.
 
 #include <algorithm>
 #include <chrono>
