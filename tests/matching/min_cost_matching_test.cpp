@@ -108,7 +108,9 @@ RC_GTEST_PROP(MinCostPerfect, CubicBridgelessEqualsLemonAndIsCertified, ()) {
   const Cost high = *rc::gen::element<Cost>(1, 10, 1000, 1 << 24);
   const std::vector<Cost> costs = random_costs(edges.size(), 0, high);
   const bool greedy = *rc::gen::arbitrary<bool>();
-  const MinCostResult r = min_cost_perfect_matching(g, costs, {.greedy_start = greedy});
+  const bool short_searches = *rc::gen::arbitrary<bool>();
+  const MinCostResult r = min_cost_perfect_matching(
+      g, costs, {.greedy_start = greedy, .short_searches = short_searches});
   RC_ASSERT(verify_perfect_matching(g, r.matching).ok());
   const auto lemon = testing::lemon_min_cost_perfect(g.node_count(), edges, costs);
   RC_ASSERT(lemon.has_value());
@@ -129,7 +131,8 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   }
   const std::vector<Cost> costs = random_costs(edges.size(), -100, 100);
   const CsrGraph g = CsrGraph::from_edges(n, edges);
-  const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>()};
+  const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>(),
+                               .short_searches = *rc::gen::arbitrary<bool>()};
   const auto lemon = testing::lemon_min_cost_perfect(n, edges, costs);
   if (!lemon) {
     RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs, options), GraphError);
@@ -140,6 +143,8 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
                                                                   r.total_cost, r.certificate);
   RC_ASSERT(check.ok());
+  // The short searches' work is capped: 16 labels a node, and one search's budget beyond.
+  RC_ASSERT(r.stats.short_labels <= std::uint64_t{16} * n + 1024);
   RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
 }
 

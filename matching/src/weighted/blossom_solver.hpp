@@ -38,6 +38,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <utility>
@@ -118,7 +119,7 @@ class BlossomSolver {
   }
 
   /// Blossom V's greedy start: each free node in id order raises y_v by its smallest slack and
-  /// takes a tight edge to a free neighbour; then augment_tight.
+  /// takes a tight edge to a free neighbour.
   void greedy_start() {
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
@@ -135,7 +136,6 @@ class BlossomSolver {
         }
       }
     }
-    augment_tight();
   }
 
   /// Grows the matching to a maximum matching of the tight edges by the project's cardinality
@@ -161,6 +161,46 @@ class BlossomSolver {
       const EdgeId i = matching.mate_edge[v];
       mate_[v] = i == kNoEdge ? kNoEdge : original[i];
     }
+  }
+
+  /// Short single-tree searches before the forest (see short_search): passes over the free
+  /// nodes with a label budget per search of 16, 32, .., 1024; a pass retries only the roots
+  /// whose search ran out of budget (one stopped by a blossom mostly stops there again:
+  /// retrying those too took 6.28M search labels instead of 5.65M on armadillo-sub2's dual, and
+  /// left the forest 2.2 % more labels). Measured (petersen_weighted_speed, armadillo-sub2's
+  /// dual): the free nodes 10.5 % -> 0.2 % and the forest's labels 5.66M -> 2.48M for 5.65M
+  /// labels of these searches, which cost about a third of the instructions each and fewer
+  /// misses (a search stays in a small neighbourhood, the forest's events come from everywhere).
+  /// A single pass at 64 left 0.9 % free and 3.9M forest labels: a search out of budget often
+  /// succeeds on a later pass, once the searches around have moved the duals. Budgets growing
+  /// 4x per pass left the forest nests of blossoms it peeled slowly (rocker-arm-sub3: 1.7x the
+  /// CPU time; see find_nested).
+  void short_searches() {
+    for (NodeId v = 0; v < n_; ++v) {
+      rec_[v].mate = {mate_[v], kNone};
+      for (const Slot& slot : slots_of(v)) {
+        if (slot.edge == mate_[v]) rec_[v].mate.node = slot.other;
+      }
+    }
+    std::vector<NodeId> free_nodes;
+    for (NodeId v = 0; v < n_; ++v) {
+      if (rec_[v].mate.edge == kNoEdge) free_nodes.push_back(v);
+    }
+    // At most 16 labels a node in all (and one search's budget beyond): where searches keep
+    // running out of budget (free nodes far from any partner, which the shared meshes' duals do
+    // not have: 4.1-7.4 labels a node there), a free node could cost up to 2,047 labels before
+    // the forest takes over.
+    const std::uint64_t most = stats_.short_labels + std::uint64_t{16} * n_;
+    for (std::uint32_t budget = 16; budget <= 1024 && !free_nodes.empty(); budget *= 2) {
+      std::size_t left = 0;
+      for (NodeId r : free_nodes) {
+        if (stats_.short_labels >= most) break;      // the forest takes the rest
+        if (rec_[r].mate.edge != kNoEdge) continue;  // matched by an earlier search
+        if (short_search(r, budget)) free_nodes[left++] = r;
+      }
+      free_nodes.resize(left);
+    }
+    for (NodeId v = 0; v < n_; ++v) mate_[v] = rec_[v].mate.edge;
   }
 
   /// Grows the alternating trees of all free nodes at once until none is left. Throws
@@ -298,8 +338,17 @@ class BlossomSolver {
         x = rec_[x].parent;
       }
     }
-    for (auto [w, at] : walked_) {
-      up_[w] = {sum - at, x, rec_[x].generation};
+    // The walked nodes but the last point to the last, the one just below the top, not to the
+    // top itself: odd blossoms are often expanded one level after another (a nest peeled from
+    // outside in), and a shortcut to the top died with each level, so that every later walk went
+    // up parent by parent again. On rocker-arm-sub3's dual after short searches with budgets
+    // growing 4x per pass: 273M walk steps with shortcuts to the top, 19.8M with these; with
+    // the 2x budgets kept, 11.2M -> 9.7M (fertility-sub3's: 2.8M -> 3.8M).
+    const auto [last, at_last] = walked_.back();
+    up_[last] = {sum - at_last, x, rec_[x].generation};
+    for (std::size_t i = 0; i + 1 < walked_.size(); ++i) {
+      const auto [w, at] = walked_[i];
+      up_[w] = {at_last - at, last, rec_[last].generation};
     }
     below = sum;
     return x;
@@ -460,6 +509,101 @@ class BlossomSolver {
         push_edge(delta_ + slot.cost2 + room - below_w - current_dual(bw), slot, x);
       }
     }
+  }
+
+  // ---- short searches
+
+  struct ShortEvent {
+    std::int64_t key;  // the search's clock when the edge turns tight
+    Cost cost2;
+    EdgeId edge;
+    NodeId u, w;  // u even
+    bool operator>(const ShortEvent& other) const { return key > other.key; }
+  };
+
+  // One primal-dual search from free node `root` alone, on trivial blossoms only (it runs
+  // before the forest, when there are no others): even nodes gain and odd nodes lose the
+  // search's clock eps, the next event from a small binary heap. It augments at the first tight
+  // edge to another free node; it stops without augmenting at a tight edge between two even
+  // nodes (a blossom) or once `budget` nodes are labelled; true if it stopped at the budget.
+  // Stopping anywhere leaves the duals feasible and every matched and tree edge tight (every
+  // constraint that eps tightens has its entry in the heap, and eps never passes the least), so the
+  // forest starts from wherever the searches stopped.
+  bool short_search(NodeId root, std::uint32_t budget) {
+    ++stamp_;  // mark_[v] == stamp_: v is labelled in this search
+    short_heap_.clear();
+    short_labelled_.clear();
+    std::int64_t eps = 0;
+    bool stopped_at_budget = false;
+    auto in_tree = [&](NodeId v) { return mark_[v] == stamp_; };
+    // As in the forest, a labelled node stores y - eps (even) or y + eps (odd) from its label on.
+    auto dual = [&](NodeId v) {
+      if (!in_tree(v)) return rec_[v].y;
+      return rec_[v].label == kEven ? rec_[v].y + eps : rec_[v].y - eps;
+    };
+    auto label = [&](NodeId v, std::uint8_t l) {
+      mark_[v] = stamp_;
+      rec_[v].label = l;
+      rec_[v].y += l == kEven ? -eps : eps;
+      short_labelled_.push_back(v);
+      ++stats_.short_labels;
+    };
+    auto scan = [&](NodeId u) {
+      const std::int64_t yu = dual(u);
+      for (const Slot& slot : slots_of(u)) {
+        const NodeId w = slot.other;
+        const bool labelled = in_tree(w);
+        if (w == u || (labelled && rec_[w].label == kOdd)) continue;
+        const std::int64_t s = slot.cost2 - yu - dual(w);
+        short_heap_.push_back({eps + (labelled ? s / 2 : s), slot.cost2, slot.edge, u, w});
+        std::push_heap(short_heap_.begin(), short_heap_.end(), std::greater<>());
+      }
+    };
+    label(root, kEven);
+    scan(root);
+    while (!short_heap_.empty()) {
+      std::pop_heap(short_heap_.begin(), short_heap_.end(), std::greater<>());
+      const ShortEvent event = short_heap_.back();
+      short_heap_.pop_back();
+      eps = event.key;
+      const NodeId u = event.u, w = event.w;
+      if (in_tree(w)) {
+        if (rec_[w].label == kOdd) continue;                 // its slack no longer moves
+        if (event.cost2 - dual(u) - dual(w) >= 2) continue;  // keyed when w was unlabelled
+        break;                                               // a blossom
+      }
+      if (rec_[w].mate.edge == kNoEdge) {
+        // Flip the path from u to the root; (u, w) and every tree edge on it are tight.
+        NodeId at = u, across = w;
+        EdgeId along = event.edge;
+        for (;;) {
+          const Mate old = rec_[at].mate;
+          rec_[at].mate = {along, across};
+          rec_[across].mate = {along, at};
+          if (old.edge == kNoEdge) break;  // the root
+          along = link_[old.node].edge;
+          across = old.node;
+          at = link_[old.node].from;
+        }
+        ++stats_.short_augmentations;
+        break;
+      }
+      if (short_labelled_.size() >= budget) {
+        stopped_at_budget = true;
+        break;
+      }
+      // w is matched, and so is its mate z, unlabelled (labels come in matched pairs).
+      const NodeId z = rec_[w].mate.node;
+      link_[w] = {u, w, event.edge};
+      label(w, kOdd);
+      label(z, kEven);
+      scan(z);
+    }
+    for (NodeId v : short_labelled_) {
+      rec_[v].y = dual(v);
+      rec_[v].label = kUnlabelled;
+    }
+    return stopped_at_budget;
   }
 
   // ---- the forest
@@ -827,6 +971,8 @@ class BlossomSolver {
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
   std::vector<std::uint32_t> rebase_chain_;
+  std::vector<ShortEvent> short_heap_;
+  std::vector<NodeId> short_labelled_;
 };
 
 }  // namespace petersen::weighted_detail

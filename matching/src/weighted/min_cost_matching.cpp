@@ -40,6 +40,11 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
   weighted_detail::BlossomSolver<weighted_detail::RenumberedGraph<Graph>> solver(
       renumbered, costs, mate, result.stats);
   if (options.greedy_start) solver.greedy_start();
+  if (options.short_searches) {
+    solver.short_searches();
+  } else if (options.greedy_start) {
+    solver.augment_tight();
+  }
   result.stats.init_seconds = init.seconds();
   result.stats.free_after_init =
       static_cast<std::uint32_t>(std::count(mate.begin(), mate.end(), kNoEdge));

@@ -53,9 +53,15 @@ struct MatchingCertificate {
 
 struct MinCostOptions {
   /// Potentials start at y_v = the cheapest edge's cost at v. On: each is raised greedily and
-  /// tight edges are matched greedily (Blossom V's greedy start), then the matching is grown to
-  /// a maximum one of the tight edges (augment_matching). Off: nothing is matched at the start.
+  /// tight edges are matched greedily (Blossom V's greedy start), then, without short searches,
+  /// the matching is grown to a maximum one of the tight edges (augment_matching; the short
+  /// searches find those paths too). Off: nothing is matched at the start.
   bool greedy_start = true;
+  /// Before the forest grows: short primal-dual searches of one tree each, from every free
+  /// node in turn, with growing label budgets, augmenting where a free node is near (in reduced
+  /// cost) and stopping at a blossom or the budget. Fewer trees for the forest, whose labels
+  /// cost several times more each.
+  bool short_searches = true;
 };
 
 struct MinCostStats {
@@ -71,6 +77,8 @@ struct MinCostStats {
   std::uint64_t queue_pushes = 0;    ///< entries of the slack-keyed priority queue
   std::uint64_t even_scans = 0;      ///< nodes scanned on becoming even
   std::uint64_t released_scans = 0;  ///< nodes scanned on leaving an expanded odd blossom
+  std::uint64_t short_labels = 0;    ///< labels given by the short single-tree searches
+  std::uint64_t short_augmentations = 0;
 };
 
 struct MinCostResult {
@@ -82,8 +90,9 @@ struct MinCostResult {
 
 /// A minimum-cost perfect matching of `graph` under `costs` (one per edge id, |cost| <=
 /// kMaxCost), with its certificate. Edmonds' primal-dual blossom algorithm: from the greedy
-/// start, the alternating trees of all free nodes grow at once under one lazy dual clock; the
-/// next event (an edge turning tight, an odd blossom's dual reaching zero) comes from a radix
+/// start and short single-tree searches (which leave 0.1-0.9 % of the nodes free on the shared
+/// meshes' duals), the alternating trees of all free nodes grow at once under one lazy dual clock;
+/// the next event (an edge turning tight, an odd blossom's dual reaching zero) comes from a radix
 /// priority queue keyed by slack; two trees meeting augment and are released. It runs on a
 /// breadth-first renumbering of the graph (meshes' own orders scatter neighbours; the answer is
 /// in the input's ids). In the worst case O(n) augmentations, each after O(n) shrinks and
