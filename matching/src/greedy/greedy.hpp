@@ -25,7 +25,8 @@ void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
 std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed);
 
 /// The ordered sweep (ordered_sweep.cpp): the nodes in id order, each free one paired with its
-/// free neighbour of fewest free neighbours, a node left with one free neighbour paired at once.
+/// free neighbour of fewest free neighbours (of smallest id on ties), a node left with one free
+/// neighbour paired at once.
 /// Over a table whose search state (and, with `mate_edge`, the mate edges) it writes fresh for its
 /// matching, like PS; returns the number of nodes left unpaired. Returns std::nullopt, touching
 /// nothing, when the numbering is not local (the median largest id gap between sampled nodes and

@@ -1,5 +1,6 @@
 // The ordered sweep: an initial pairing in the nodes' own order, for graphs whose numbering
-// follows the surface (the bench's plates, most scanned meshes), tried in PS's place.
+// follows the surface (the bench's plates, meshes stored in a spatial order, some scanned
+// meshes), tried in PS's place.
 //   Nodes are taken in id order; a node still free is paired with the free neighbour that has
 //   the fewest free neighbours left (the min-degree rule), and a node left with one free
 //   neighbour is paired at once (Karp and Sipser's forced move; last in, first out). A node with
@@ -7,9 +8,10 @@
 // Why: PS's pass costs about two BFS passes (its priority sets, random draws and a rescan of each
 // node leaving priority 0; a flat profile, no one hot spot), while the sweep reads each node's
 // row and its neighbours' state bytes once, in the order of the rows. Where that order is local
-// the pairing front is a straight line moving over the surface, and the nodes it strands lie close
-// together, so their augmenting paths are short. petersen_bench, one run each (bench/RESULTS.md,
-// "Stop 17"): A4 0.033 s against PS's 0.140 s in the same sitting, B5 0.007 against 0.063.
+// the pairing front is a line moving over the surface and strands no more nodes than PS (A2: 230
+// against 690; B2: 514 against 550). petersen_bench, old and new alternated twice at load 4-5
+// (bench/RESULTS.md, "Stop 17"): A2 0.288 and 0.311 s with PS against 0.082 and 0.133, B2 0.510
+// and 0.434 against 0.135 and 0.132.
 // Where the order jumps about (a subdivided mesh numbers each level's triangles after the
 // coarser ones: fertility-sub3's median neighbour gap is 0.75 n), the front breaks into pieces
 // everywhere and strands 1-3 % of the nodes (armadillo-sub2 17,174 against PS's 390), so the
@@ -36,9 +38,11 @@ constexpr std::uint8_t kOut = 1 << 4;
 constexpr std::uint8_t kPaired = 1 << 5;
 constexpr std::uint8_t kStart = 3;
 
-// The order counts as local up to this many √n of median largest gap (measured: homer 3.65,
-// nefertiti 4.62, where the sweep beat PS; bunny 9.0, where it lost: bench/RESULTS.md).
-constexpr double kLocalGap = 6.0;
+// The order counts as local up to this many √n of median largest gap. Measured (bench/RESULTS.md,
+// "Stop 17"): the plates 0.01-1.9, where the sweep beat PS by 1.3-3.7x; homer 3.65, rocker-arm 1.2,
+// fandisk 0.7, where it beat PS warm by 1.2-1.9x; nefertiti 4.62, where it left 544 nodes against
+// PS's 82 and lost warm (15 against 12 ms); bunny 9.0, where it lost too.
+constexpr double kLocalGap = 4.0;
 constexpr std::uint32_t kSamples = 1024;
 
 bool order_is_local(const NeighbourTable& table) {
@@ -88,14 +92,20 @@ class OrderedSweep {
  private:
   std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
 
-  // Pairs v, in play, with its free neighbour of fewest free neighbours (the first on ties).
+  // Pairs v, in play, with its free neighbour of fewest free neighbours; on ties, the one of
+  // smallest id: the nearest to the front (every node before the sweep's position is out), so the
+  // front stays straight. The first in the row instead left 2,938 nodes on B2 against 514, and
+  // 12,642 on A2 against 230 (labels 13.1M and 1.49M against 2.3M and 1.18M; on the generated
+  // plates the same within 10 %: bench/RESULTS.md, "Stop 17").
   void pair_from(NodeId v) {
     int best = -1;
     int best_free = kStart + 1;
     for (int i = 0; i < 3; ++i) {
-      const std::uint8_t s = state_[neighbours(v)[i]];
+      const NodeId u = neighbours(v)[i];
+      const std::uint8_t s = state_[u];
       const int free = s & kFreeMask;
-      if (!(s & kOut) && free < best_free) {
+      if (s & kOut) continue;
+      if (free < best_free || (free == best_free && u < neighbours(v)[best])) {
         best = i;
         best_free = free;
       }

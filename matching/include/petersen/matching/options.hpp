@@ -49,8 +49,8 @@ struct Options {
   bool bipartite_exact = true;
   /// ps, when Schrijver's matching does not apply: pair by the ordered sweep instead of PS where
   /// the node numbering is local (Stats::ordered_sweep): each free node in id order with its free
-  /// neighbour of fewest free neighbours, about half PS's cost there. False runs PS always, as
-  /// the bench's paper-faithful rows do.
+  /// neighbour of fewest free neighbours, a third to a half of PS's cost there. False runs PS
+  /// always, as the bench's paper-faithful rows do.
   bool ordered_sweep = true;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
