@@ -69,8 +69,10 @@ void write_stats_json(const MatchReport& r) {
                r.written ? "true" : "false");
   std::fprintf(out,
                "  \"augmenting_paths\": %" PRIu64 ",\n  \"blossoms\": %" PRIu64
-               ",\n  \"reductions\": %" PRIu64 ",\n  \"schrijver\": %s,\n",
-               s.augmenting_paths, s.blossoms, s.reductions, s.schrijver ? "true" : "false");
+               ",\n  \"reductions\": %" PRIu64
+               ",\n  \"schrijver\": %s,\n  \"ordered_sweep\": %s,\n",
+               s.augmenting_paths, s.blossoms, s.reductions, s.schrijver ? "true" : "false",
+               s.ordered_sweep ? "true" : "false");
   std::fprintf(out,
                "  \"read_seconds\": %.6f,\n  \"validate_seconds\": %.6f,\n  \"initial_seconds\": "
                "%.6f,\n  \"augment_seconds\": %.6f,\n  \"match_seconds\": %.6f,\n  "

@@ -55,7 +55,9 @@ void print_summary(std::FILE* out, const RunReport& r) {
   std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "%s\n",
                s.matching.initial_seconds, initial_paired_percent(s),
                std::uint64_t{s.matching.unpaired_after_initial},
-               s.matching.schrijver ? "  (Schrijver's exact matching: a bipartite dual)" : "");
+               s.matching.schrijver       ? "  (Schrijver's exact matching: a bipartite dual)"
+               : s.matching.ordered_sweep ? "  (ordered sweep: a local numbering)"
+                                          : "");
   std::fprintf(
       out, "augment     %.4f s  paths %" PRIu64 "  blossoms %" PRIu64 "  labelled %" PRIu64 "\n",
       s.matching.augment_seconds, s.matching.augmenting_paths, s.matching.blossoms,

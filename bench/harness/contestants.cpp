@@ -38,12 +38,14 @@ Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
 Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augment augment,
                             std::uint64_t seed) {
   // The paper-faithful rows run the paper's PS alone; the local rows run what `ps` runs for a
-  // user (Schrijver's exact matching first on a bipartite dual).
+  // user (Schrijver's exact matching first on a bipartite dual, else the ordered sweep where the
+  // numbering is local).
   const Result result =
       perfect_matching(input.dual.graph, {.algorithm = algorithm,
                                           .augment = augment,
                                           .seed = seed,
                                           .bipartite_exact = augment == Augment::local,
+                                          .ordered_sweep = augment == Augment::local,
                                           .validate = false});
   require_perfect(input.dual.graph, result.matching);
   Measures measures;

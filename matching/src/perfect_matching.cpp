@@ -35,7 +35,8 @@ void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) 
 // so for SG it is built in the augmentation's time. For PS, Schrijver's algorithm is tried first
 // on the same table: it matches a bipartite graph perfectly in about 2.5 BFS passes, where PS
 // leaves patches of one colour that cost the augmentation 20 BFS passes (the regular plates),
-// and it stops at the first odd cycle, within a few hundred steps on every shared mesh.
+// and it stops at the first odd cycle, within a few hundred steps on every shared mesh. Then,
+// where the numbering is local, the ordered sweep pairs in PS's place at about half its cost.
 void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
   Stopwatch initial;
   std::optional<NeighbourTable> table;
@@ -44,7 +45,11 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
   } else {
     NeighbourTable& rows = table.emplace(graph);
     result.stats.schrijver = options.bipartite_exact && schrijver(rows, &result.matching.mate_edge);
-    if (!result.stats.schrijver) puli_segal(rows, result.matching, options.seed);
+    if (!result.stats.schrijver) {
+      result.stats.ordered_sweep =
+          options.ordered_sweep && ordered_sweep(rows, &result.matching.mate_edge).has_value();
+      if (!result.stats.ordered_sweep) puli_segal(rows, result.matching, options.seed);
+    }
   }
   result.stats.initial_seconds = initial.seconds();
   result.stats.unpaired_after_initial = result.matching.unmatched_count();

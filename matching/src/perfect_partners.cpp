@@ -1,5 +1,6 @@
 #include "petersen/matching/perfect_partners.hpp"
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -15,8 +16,13 @@ PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOption
   Stopwatch initial;
   // A bipartite graph is matched exactly by Schrijver's algorithm (perfect_matching.cpp says why).
   result.stats.schrijver = options.bipartite_exact && schrijver(table, nullptr);
-  result.stats.unpaired_after_initial =
-      result.stats.schrijver ? 0 : puli_segal_on_rows(table, options.seed);
+  if (!result.stats.schrijver) {
+    // Where the numbering is local, the ordered sweep pairs at about half PS's cost.
+    const std::optional<std::uint32_t> swept =
+        options.ordered_sweep ? ordered_sweep(table, nullptr) : std::nullopt;
+    result.stats.ordered_sweep = swept.has_value();
+    result.stats.unpaired_after_initial = swept ? *swept : puli_segal_on_rows(table, options.seed);
+  }
   result.stats.initial_seconds = initial.seconds();
   Stopwatch augment;
   const AugmentStats augmented = augment_on_rows(table, options.augment);

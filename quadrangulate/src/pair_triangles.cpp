@@ -30,7 +30,8 @@ void add_run(Stats& total, const Stats& run) {
   total.reductions += run.reductions;
   total.replacement_searches += run.replacement_searches;
   total.cover_swaps += run.cover_swaps;
-  total.schrijver = total.schrijver || run.schrijver;  // some component matched by it
+  total.schrijver = total.schrijver || run.schrijver;              // some component matched by it
+  total.ordered_sweep = total.ordered_sweep || run.ordered_sweep;  // some component paired by it
   for (int k = 0; k < 3; ++k) total.lift_cases[k] += run.lift_cases[k];
 }
 

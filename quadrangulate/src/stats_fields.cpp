@@ -44,6 +44,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
         : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) / double(s.triangles));
   u("unpaired_after_initial", s.matching.unpaired_after_initial);
   if (a == Algorithm::ps && !quality) add("schrijver", s.matching.schrijver);
+  if (a == Algorithm::ps && !quality) add("ordered_sweep", s.matching.ordered_sweep);
   d("augment_seconds", s.matching.augment_seconds);
   d("matching_seconds", s.matching.matching_seconds());
   u("augmenting_paths", s.matching.augmenting_paths);

@@ -1,5 +1,6 @@
 // SG and PS (paper §3.1) alone: valid matchings, maximal, seeded; Schrijver's exact matching of
-// bipartite graphs, which PS hands bipartite graphs to.
+// bipartite graphs, which PS hands bipartite graphs to; the ordered sweep, which PS hands graphs
+// with a local numbering to.
 
 #include "greedy/greedy.hpp"
 
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "neighbour_table.hpp"
@@ -173,15 +175,98 @@ TEST(Schrijver, MatchesTheRegularPlatesAndLeavesThePetersenGraphToPS) {
 // bipartite_exact = false runs the paper's PS alone: on the plate it leaves nodes to augment.
 TEST(Schrijver, IsSkippedWhenNotAsked) {
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const Result r = perfect_matching(plate, {.bipartite_exact = false});
+  const Result r = perfect_matching(plate, {.bipartite_exact = false, .ordered_sweep = false});
   EXPECT_FALSE(r.stats.schrijver);
   EXPECT_GT(r.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
   const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
-  const PartnerResult p = perfect_partners(rows, {.bipartite_exact = false});
+  const PartnerResult p =
+      perfect_partners(rows, {.bipartite_exact = false, .ordered_sweep = false});
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_GT(p.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
+}
+
+// The graph with its node ids permuted at random, so that neighbours' ids lie far apart.
+CubicGraph shuffled(const CubicGraph& g, std::uint64_t seed) {
+  SeededRandom random(seed);
+  std::vector<NodeId> id(g.node_count());
+  std::iota(id.begin(), id.end(), 0);
+  for (std::uint32_t i = g.node_count() - 1; i > 0; --i) std::swap(id[i], id[random.below(i + 1)]);
+  std::vector<std::array<NodeId, 2>> edges;
+  for (EdgeId e = 0; e < g.edge_count(); ++e) {
+    auto [a, b] = g.endpoints(e);
+    edges.push_back({id[a], id[b]});
+  }
+  return CubicGraph::from_edges(g.node_count(), edges);
+}
+
+RC_GTEST_PROP(OrderedSweep, ReturnsAValidMaximalMatchingWithAFreshSearchStateOrNothing, ()) {
+  const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
+  NeighbourTable table(g);
+  Matching m(g.node_count());
+  const std::optional<std::uint32_t> unpaired = ordered_sweep(table, &m.mate_edge);
+  RC_TAG(unpaired ? "swept" : "order not local");
+  if (!unpaired) {
+    RC_ASSERT(m.unmatched_count() == g.node_count());  // refused: nothing written
+    return;
+  }
+  RC_ASSERT(verify_matching(g, m).ok());
+  RC_ASSERT(is_maximal(g, m));
+  RC_ASSERT(*unpaired == m.unmatched_count());
+  for (NodeId v = 0; v < g.node_count(); ++v) {
+    const augment_detail::Slot& slot = table.slot(v);
+    RC_ASSERT(slot.mate == (m.is_matched(v) ? g.other_end(m.mate_edge[v], v) : kNoNode));
+    RC_ASSERT(slot.tag == 0u);
+    RC_ASSERT(slot.link == augment_detail::kNone);
+    RC_ASSERT(slot.base == v);
+  }
+}
+
+TEST(OrderedSweep, SweepsALocalNumberingAndRefusesAShuffledOne) {
+  // The plate's generator numbers its triangles row by row: a local numbering. (Its dual is
+  // bipartite, which the sweep does not care about.)
+  const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 3, .subdivision = 6}));
+  NeighbourTable table(plate);
+  Matching m(plate.node_count());
+  const std::optional<std::uint32_t> unpaired = ordered_sweep(table, &m.mate_edge);
+  ASSERT_TRUE(unpaired.has_value());
+  EXPECT_LT(*unpaired / double(plate.node_count()), 0.01);
+  EXPECT_TRUE(verify_matching(plate, m).ok());
+  const CubicGraph mixed = shuffled(plate, 5);
+  NeighbourTable mixed_table(mixed);
+  Matching untouched(mixed.node_count());
+  EXPECT_FALSE(ordered_sweep(mixed_table, &untouched.mate_edge).has_value());
+  EXPECT_EQ(untouched.unmatched_count(), mixed.node_count());
+}
+
+TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
+  // A plate with its bipartite exact matching turned off stands for a non-bipartite graph.
+  const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
+  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  for (const std::uint64_t seed : {1u, 2u}) {
+    const Result r = perfect_matching(plate, {.seed = seed, .bipartite_exact = false});
+    EXPECT_TRUE(r.stats.ordered_sweep);
+    EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
+    const PartnerResult p = perfect_partners(rows, {.seed = seed, .bipartite_exact = false});
+    EXPECT_TRUE(p.stats.ordered_sweep);
+    EXPECT_EQ(p.stats.unpaired_after_initial, r.stats.unpaired_after_initial);
+    EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
+    for (NodeId v = 0; v < plate.node_count(); ++v)
+      ASSERT_EQ(p.partner[v], plate.other_end(r.matching.mate_edge[v], v));
+  }
+  // Not asked, or a numbering that is not local: PS pairs, as before.
+  EXPECT_FALSE(perfect_matching(plate, {.bipartite_exact = false, .ordered_sweep = false})
+                   .stats.ordered_sweep);
+  const CubicGraph mixed = shuffled(plate, 9);
+  const Result ps = perfect_matching(mixed, {.bipartite_exact = false});
+  EXPECT_FALSE(ps.stats.ordered_sweep);
+  EXPECT_TRUE(verify_perfect_matching(mixed, ps.matching).ok());
+  // The Petersen graph (not bipartite, ten nodes: any numbering is local) goes to the sweep.
+  const Result petersen = perfect_matching(petersen_graph());
+  EXPECT_FALSE(petersen.stats.schrijver);
+  EXPECT_TRUE(petersen.stats.ordered_sweep);
+  EXPECT_TRUE(verify_perfect_matching(petersen_graph(), petersen.matching).ok());
 }
 
 }  // namespace

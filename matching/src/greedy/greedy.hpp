@@ -2,6 +2,7 @@
 // The two greedy initial pairings of the paper's §3.1; perfect_matching augments what they leave.
 
 #include <cstdint>
+#include <optional>
 
 #include "neighbour_table.hpp"
 #include "petersen/matching/matching.hpp"
@@ -22,6 +23,16 @@ void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
 /// PS over a table built on neighbour rows (no CubicGraph, so no mate edges): the matching is
 /// the table's search state, each slot's mate node. Returns the number of nodes left unpaired.
 std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed);
+
+/// The ordered sweep (ordered_sweep.cpp): the nodes in id order, each free one paired with its
+/// free neighbour of fewest free neighbours (of smallest id on ties), a node left with one free
+/// neighbour paired at once.
+/// Over a table whose search state (and, with `mate_edge`, the mate edges) it writes fresh for its
+/// matching, like PS; returns the number of nodes left unpaired. Returns std::nullopt, touching
+/// nothing, when the numbering is not local (the median largest id gap between sampled nodes and
+/// their neighbours above a few √n), where its pairing front would break up. Θ(n); n bytes of
+/// state.
+std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge);
 
 /// Schrijver's perfect matching of a 3-regular bipartite graph (schrijver.cpp), over a table
 /// whose search state it writes fresh for the matching (and, with `mate_edge`, the mate edges),

@@ -47,6 +47,11 @@ struct Options {
   /// leaves patches of one colour (Stats::schrijver). False runs the paper's PS alone, as the
   /// bench's paper-faithful rows do.
   bool bipartite_exact = true;
+  /// ps, when Schrijver's matching does not apply: pair by the ordered sweep instead of PS where
+  /// the node numbering is local (Stats::ordered_sweep): each free node in id order with its free
+  /// neighbour of fewest free neighbours, a third to a half of PS's cost there. False runs PS
+  /// always, as the bench's paper-faithful rows do.
+  bool ordered_sweep = true;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
   /// The matcher Algorithm::lemon runs. The core links no peer library: a caller that compares
@@ -74,6 +79,9 @@ struct Stats {
   /// It does on every bipartite graph (where PS leaves patches of one colour, bench/RESULTS.md);
   /// it gives up at the first odd cycle its walk meets, and PS runs as before.
   bool schrijver = false;
+  /// ps: the ordered sweep made the initial pairing in PS's place (Options::ordered_sweep): the
+  /// graph was not bipartite and its numbering was local.
+  bool ordered_sweep = false;
 
   double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)
   double paired_percent(std::uint32_t node_count) const {                        ///< (b)

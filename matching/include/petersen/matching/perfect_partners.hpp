@@ -14,6 +14,7 @@ struct PartnerOptions {
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
   bool bipartite_exact = true;  ///< as Options::bipartite_exact
+  bool ordered_sweep = true;    ///< as Options::ordered_sweep
 };
 
 struct PartnerResult {
@@ -33,7 +34,8 @@ struct PartnerResult {
 /// answer with verify_perfect_partners. Θ(n) for PS; the augmentation's cost follows the regions
 /// its searches explore. A bipartite graph is matched by Schrijver's algorithm instead (Θ(n),
 /// stats.schrijver; its walk's path takes 8 bytes per node on it, about 10^4 nodes on the 4M-node
-/// plates), as in perfect_matching.
+/// plates), as in perfect_matching; where the numbering is local, the ordered sweep pairs in PS's
+/// place (stats.ordered_sweep), as there.
 PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options = {});
 
 /// Tarjan's augmenting paths (augment_matching's, the same searches) from a pairing the caller
