@@ -203,9 +203,9 @@ Triangulation Triangulation::from_dual(const Positions& positions,
     for (EdgeId e = 0; e < edges; ++e) {
       const NodeId t = edge_ends[2 * e], u = edge_ends[2 * e + 1];
       // The first end names the edge among its sides. check_fans has seen every side's edge end
-      // at its triangle and be named by the other end, so an edge named by three sides or more
-      // would leave another edge named by none, whose first end fails here: every edge is then
-      // named by its two ends once (u's sides are not read again: a random read per edge).
+      // at the side's triangle and be named by its other end too, so an edge named by three sides
+      // or more would leave another edge named by none, whose first end fails here: every edge is
+      // then named by its two ends once (u's sides are not read again: a random read per edge).
       if (t >= faces || u >= faces || u == t || !names(t, e)) {
         throw std::invalid_argument("lrs::Triangulation::from_dual: edge " + std::to_string(e) +
                                     " is not a side of its triangles");
