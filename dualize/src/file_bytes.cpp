@@ -38,7 +38,7 @@ struct Descriptor {
 
 FileBytes allocate(const std::string& path, std::size_t size) {
   try {
-    return {make_huge_array<char>(size), 0};
+    return {make_huge_array<char>(size), 0, {}};
   } catch (const std::bad_alloc&) {
     throw MeshError(path + ": cannot allocate " + std::to_string(size) + " bytes to read it");
   }
