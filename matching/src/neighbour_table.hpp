@@ -68,6 +68,34 @@ class NeighbourTable {
   std::span<const NodeId, 3> neighbours(NodeId v) const {
     return std::span<const NodeId, 3>(&next_[3 * std::size_t{v}], 3);
   }
+  /// The index, among u's three edges, of the edge that v's i-th edge names (u its neighbour
+  /// there): the one place in u's row that holds v, except across parallel edges, where the edge
+  /// ids decide when `exact` (mate edges are to be written); otherwise any copy does, each leading
+  /// to the same node. The greedy pairings keep it for their final pass (start_searches).
+  int index_across(NodeId v, int i, NodeId u, bool exact) const {
+    const std::span<const NodeId, 3> row = neighbours(u);
+    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1 || !exact) {
+      return row[0] == v ? 0 : row[1] == v ? 1 : 2;
+    }
+    return graph_->edge_index(u, graph_->incident_edge(v, i));
+  }
+
+  /// A greedy pairing's last pass, in one sequential sweep: each node v paired across its edge
+  /// paired_index(v) (free when < 0) gets its fresh search state and, with `mate`, its mate edge
+  /// (looked up at pairing time, v's incidence list was a cache miss of its own on every
+  /// pairing). Returns the number of nodes left free.
+  template <class PairedIndex>
+  std::uint32_t start_searches(PairedIndex paired_index, HugeVector<EdgeId>* mate) {
+    std::uint32_t unpaired = 0;
+    for (NodeId v = 0; v < node_count_; ++v) {
+      const int i = paired_index(v);
+      if (i >= 0 && mate != nullptr) (*mate)[v] = graph_->incident_edge(v, i);
+      unpaired += i < 0;
+      start_search(v, i);
+    }
+    return unpaired;
+  }
+
   /// Writes v's fresh search state, v matched to its i-th neighbour (free when i < 0).
   void start_search(NodeId v, int i) {
     slots_[v] = {i < 0 ? kNoNode : next_[3 * std::size_t{v} + i], 0, augment_detail::kNone, v};

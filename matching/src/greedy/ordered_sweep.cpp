@@ -77,16 +77,8 @@ class OrderedSweep {
         if (!(state_[v] & kOut)) pair_from(v);
       }
     }
-    // The mate edges and the table's fresh search state, in one sequential pass (as PS's).
-    std::uint32_t unpaired = 0;
-    for (NodeId v = 0; v < n; ++v) {
-      const bool paired = state_[v] & kPaired;
-      const int i = state_[v] & kFreeMask;
-      if (paired && mate_ != nullptr) (*mate_)[v] = table_.graph()->incident_edge(v, i);
-      unpaired += !paired;
-      table_.start_search(v, paired ? i : -1);
-    }
-    return unpaired;
+    return table_.start_searches(
+        [&](NodeId v) { return state_[v] & kPaired ? state_[v] & kFreeMask : -1; }, mate_);
   }
 
  private:
@@ -116,7 +108,8 @@ class OrderedSweep {
     }
     const NodeId u = neighbours(v)[best];
     state_[v] = static_cast<std::uint8_t>(kOut | kPaired | best);
-    state_[u] = static_cast<std::uint8_t>(kOut | kPaired | index_of(v, best, u));
+    state_[u] = static_cast<std::uint8_t>(kOut | kPaired |
+                                          table_.index_across(v, best, u, mate_ != nullptr));
     for (NodeId w : {v, u}) {
       for (NodeId z : neighbours(w)) {
         if (state_[z] & kOut) continue;
@@ -128,17 +121,6 @@ class OrderedSweep {
         }
       }
     }
-  }
-
-  // The index, among u's three edges, of the edge that v's edge `at` names (as PS's index_of):
-  // across parallel edges the edge ids decide, over rows alone any copy does.
-  int index_of(NodeId v, int at, NodeId u) const {
-    const std::span<const NodeId, 3> row = neighbours(u);
-    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1 || mate_ == nullptr) {
-      return row[0] == v ? 0 : row[1] == v ? 1 : 2;
-    }
-    const CubicGraph& graph = *table_.graph();
-    return graph.edge_index(u, graph.incident_edge(v, at));
   }
 
   NeighbourTable& table_;

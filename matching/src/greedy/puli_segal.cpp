@@ -70,7 +70,8 @@ class PuliSegal {
       }
       state_[v] = static_cast<std::uint8_t>(kOut | kPaired | best);
       const NodeId u = neighbours(v)[best];
-      state_[u] = static_cast<std::uint8_t>(kOut | kPaired | index_of(v, best, u));
+      state_[u] = static_cast<std::uint8_t>(kOut | kPaired |
+                                            table_.index_across(v, best, u, mate_ != nullptr));
       // The neighbours that lose a free edge, their incidence lists and edge ends fetched
       // together before any is updated, so the cache misses overlap instead of queueing.
       std::array<NodeId, 6> losers;
@@ -84,34 +85,13 @@ class PuliSegal {
       }
       for (int i = 0; i < count; ++i) lose_free_edge(losers[i]);
     }
-    // The mate edges, and the table's fresh search state, in one sequential pass: looked up at
-    // pairing time, v's incidence list was a cache miss of its own on every pairing.
-    std::uint32_t unpaired = 0;
-    for (NodeId v = 0; v < table_.node_count(); ++v) {
-      const bool paired = state_[v] & kPaired;
-      const int i = state_[v] & kFreeMask;
-      if (paired && mate_ != nullptr) (*mate_)[v] = table_.graph()->incident_edge(v, i);
-      unpaired += !paired;
-      table_.start_search(v, paired ? i : -1);
-    }
-    return unpaired;
+    return table_.start_searches(
+        [&](NodeId v) { return state_[v] & kPaired ? state_[v] & kFreeMask : -1; }, mate_);
   }
 
  private:
   static int priority(std::uint8_t s) { return (s & kPriorityMask) >> 2; }
   std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
-
-  // The index, among u's three edges, of the edge that v's edge `at` names: the one place in
-  // u's row that holds v, except across parallel edges, where the edge ids decide. Over rows
-  // alone (no mate edges to write) any copy does: each leads to the same mate node.
-  int index_of(NodeId v, int at, NodeId u) const {
-    const std::span<const NodeId, 3> row = neighbours(u);
-    if ((row[0] == v) + (row[1] == v) + (row[2] == v) == 1 || mate_ == nullptr) {
-      return row[0] == v ? 0 : row[1] == v ? 1 : 2;
-    }
-    const CubicGraph& graph = *table_.graph();
-    return graph.edge_index(u, graph.incident_edge(v, at));
-  }
 
   void enter(NodeId v, std::uint8_t state, int p) {
     state_[v] = static_cast<std::uint8_t>((state & ~kPriorityMask) | p << 2);
