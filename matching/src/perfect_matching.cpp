@@ -32,27 +32,27 @@ void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) 
 
 // SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect. PS and
 // the augmentation share one NeighbourTable, built in PS's time; SG does not read neighbours,
-// so for SG it is built in the augmentation's time. For PS, Schrijver's algorithm is tried first
-// on the same table: it matches a bipartite graph perfectly in about 2.5 BFS passes, where PS
-// leaves patches of one colour that cost the augmentation 20 BFS passes (the regular plates),
-// and it stops at the first odd cycle, within a few hundred steps on every shared mesh. Then,
-// where the numbering is local, the ordered sweep pairs in PS's place at about half its cost.
+// so for SG it is built in the augmentation's time. In PS's place, pair_in_ps_place (greedy.hpp):
+// the ordered sweep, Schrijver's exact matching where the sweep leaves nodes (on a bipartite
+// graph PS leaves patches of one colour that cost the augmentation 20 BFS passes: the regular
+// plates), PS where neither stands.
 void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
   Stopwatch initial;
   std::optional<NeighbourTable> table;
   if (options.algorithm == Algorithm::sg) {
     simple_greedy(graph, result.matching, options.seed);
+    result.stats.initial_seconds = initial.seconds();
+    result.stats.unpaired_after_initial = result.matching.unmatched_count();
   } else {
-    NeighbourTable& rows = table.emplace(graph);
-    result.stats.schrijver = options.bipartite_exact && schrijver(rows, &result.matching.mate_edge);
-    if (!result.stats.schrijver) {
-      result.stats.ordered_sweep =
-          options.ordered_sweep && ordered_sweep(rows, &result.matching.mate_edge).has_value();
-      if (!result.stats.ordered_sweep) puli_segal(rows, result.matching, options.seed);
-    }
+    const PsPlace made = pair_in_ps_place(table.emplace(graph), &result.matching.mate_edge,
+                                          {.ordered_sweep = options.ordered_sweep,
+                                           .bipartite_exact = options.bipartite_exact,
+                                           .seed = options.seed});
+    result.stats.initial_seconds = initial.seconds();
+    result.stats.unpaired_after_initial = made.unpaired;
+    result.stats.schrijver = made.schrijver;
+    result.stats.ordered_sweep = made.ordered_sweep;
   }
-  result.stats.initial_seconds = initial.seconds();
-  result.stats.unpaired_after_initial = result.matching.unmatched_count();
   Stopwatch augment;
   if (!table) table.emplace(graph, &result.matching.mate_edge);
   const AugmentStats augmented = augment_matching(*table, result.matching, options.augment);

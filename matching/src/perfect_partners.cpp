@@ -1,6 +1,5 @@
 #include "petersen/matching/perfect_partners.hpp"
 
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -14,15 +13,14 @@ PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOption
   PartnerResult result;
   NeighbourTable table(rows);
   Stopwatch initial;
-  // A bipartite graph is matched exactly by Schrijver's algorithm (perfect_matching.cpp says why).
-  result.stats.schrijver = options.bipartite_exact && schrijver(table, nullptr);
-  if (!result.stats.schrijver) {
-    // Where the numbering is local, the ordered sweep pairs at about half PS's cost.
-    const std::optional<std::uint32_t> swept =
-        options.ordered_sweep ? ordered_sweep(table, nullptr) : std::nullopt;
-    result.stats.ordered_sweep = swept.has_value();
-    result.stats.unpaired_after_initial = swept ? *swept : puli_segal_on_rows(table, options.seed);
-  }
+  // In PS's place as in perfect_matching (pair_in_ps_place says what and why).
+  const PsPlace made = pair_in_ps_place(table, nullptr,
+                                        {.ordered_sweep = options.ordered_sweep,
+                                         .bipartite_exact = options.bipartite_exact,
+                                         .seed = options.seed});
+  result.stats.schrijver = made.schrijver;
+  result.stats.ordered_sweep = made.ordered_sweep;
+  result.stats.unpaired_after_initial = made.unpaired;
   result.stats.initial_seconds = initial.seconds();
   Stopwatch augment;
   const AugmentStats augmented = augment_on_rows(table, options.augment);

@@ -1,6 +1,6 @@
-// SG and PS (paper §3.1) alone: valid matchings, maximal, seeded; Schrijver's exact matching of
-// bipartite graphs, which PS hands bipartite graphs to; the ordered sweep, which PS hands graphs
-// with a local numbering to.
+// SG and PS (paper §3.1) alone: valid matchings, maximal, seeded; the ordered sweep, which takes
+// PS's place where the numbering is local; Schrijver's exact matching of bipartite graphs, which
+// takes it where the sweep leaves nodes or does not run.
 
 #include "greedy/greedy.hpp"
 
@@ -114,11 +114,38 @@ rc::Gen<CubicGraph> bipartite_cubic_graphs() {
                         rc::gen::arbitrary<std::uint64_t>());
 }
 
+// The graph with its node ids permuted at random, so that neighbours' ids lie far apart.
+CubicGraph shuffled(const CubicGraph& g, std::uint64_t seed) {
+  SeededRandom random(seed);
+  std::vector<NodeId> id(g.node_count());
+  std::iota(id.begin(), id.end(), 0);
+  for (std::uint32_t i = g.node_count() - 1; i > 0; --i) std::swap(id[i], id[random.below(i + 1)]);
+  std::vector<std::array<NodeId, 2>> edges;
+  for (EdgeId e = 0; e < g.edge_count(); ++e) {
+    auto [a, b] = g.endpoints(e);
+    edges.push_back({id[a], id[b]});
+  }
+  return CubicGraph::from_edges(g.node_count(), edges);
+}
+
+// Each slot's four fields, to compare a table's search state before and after.
+std::vector<std::array<std::uint32_t, 4>> slots_of(const NeighbourTable& table) {
+  std::vector<std::array<std::uint32_t, 4>> slots;
+  for (NodeId v = 0; v < table.node_count(); ++v) {
+    const augment_detail::Slot& s = table.slot(v);
+    slots.push_back({s.mate, s.tag, s.link, s.base});
+  }
+  return slots;
+}
+
 RC_GTEST_PROP(Schrijver, MatchesEveryBipartiteCubicGraphPerfectly, ()) {
   const CubicGraph g = *bipartite_cubic_graphs();
-  NeighbourTable table(g);
+  // Its search state written by the walk itself, or fresh already (a table built from the empty
+  // matching), as the ordered sweep leaves it.
+  const bool state_is_fresh = *rc::gen::arbitrary<bool>();
   Matching m(g.node_count());
-  RC_ASSERT(schrijver(table, &m.mate_edge));
+  NeighbourTable table(g, state_is_fresh ? &m.mate_edge : nullptr);
+  RC_ASSERT(schrijver(table, &m.mate_edge, state_is_fresh));
   RC_ASSERT(verify_perfect_matching(g, m).ok());
   // The search state is fresh for the matching, as PS leaves it for the augmentation.
   for (NodeId v = 0; v < g.node_count(); ++v) {
@@ -138,7 +165,7 @@ RC_GTEST_PROP(Schrijver, FailsOnlyOnOddCyclesAndThenWritesNothing, ()) {
   const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   NeighbourTable table(g);
   Matching m(g.node_count());
-  const bool matched = schrijver(table, &m.mate_edge);
+  const bool matched = schrijver(table, &m.mate_edge, false);
   if (is_bipartite(g)) RC_ASSERT(matched);
   if (matched) {
     RC_ASSERT(verify_perfect_matching(g, m).ok());
@@ -148,25 +175,79 @@ RC_GTEST_PROP(Schrijver, FailsOnlyOnOddCyclesAndThenWritesNothing, ()) {
   RC_TAG(is_bipartite(g) ? "bipartite" : matched ? "matched anyway" : "odd cycle met");
 }
 
-RC_GTEST_PROP(Schrijver, TakesPSsPlaceOnBipartiteGraphsAtBothFrontDoors, ()) {
+RC_GTEST_PROP(Schrijver, AfterTheSweepMatchesPerfectlyOrPutsTheSweepsStateBack, ()) {
+  // The order of pair_in_ps_place: the sweep's pairing, then Schrijver's walk from its fresh
+  // state. On an odd cycle the sweep's mates and search state must be exactly as it left them.
+  const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
+  NeighbourTable table(g);
+  Matching m(g.node_count());
+  const std::optional<std::uint32_t> swept = ordered_sweep(table, &m.mate_edge);
+  RC_PRE(swept.has_value());
+  const Matching swept_matching = m;
+  const auto swept_slots = slots_of(table);
+  const bool matched = schrijver(table, &m.mate_edge, true);
+  if (is_bipartite(g)) RC_ASSERT(matched);
+  if (matched) {
+    RC_ASSERT(verify_perfect_matching(g, m).ok());
+  } else {
+    RC_ASSERT(m.mate_edge == swept_matching.mate_edge);
+    RC_ASSERT(slots_of(table) == swept_slots);
+  }
+  RC_TAG(is_bipartite(g) ? "bipartite" : matched ? "matched anyway" : "sweep's state put back");
+}
+
+RC_GTEST_PROP(Schrijver, BipartiteGraphsArePairedPerfectlyBeforeAugmentingAtBothFrontDoors, ()) {
+  // By the sweep where the numbering is local and it pairs every node, else by Schrijver's walk:
+  // nothing is left to augment either way, and both doors choose alike.
   const CubicGraph g = *bipartite_cubic_graphs();
   const Result r = perfect_matching(g, {.algorithm = Algorithm::ps, .validate = false});
-  RC_ASSERT(r.stats.schrijver);
+  RC_ASSERT(r.stats.schrijver != r.stats.ordered_sweep);
   RC_ASSERT(r.stats.unpaired_after_initial == 0u);
+  RC_ASSERT(r.stats.augmenting_paths == 0u);
   RC_ASSERT(verify_perfect_matching(g, r.matching).ok());
   const HugeVector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
   const PartnerResult p = perfect_partners(rows);
-  RC_ASSERT(p.stats.schrijver);
+  RC_ASSERT(p.stats.schrijver == r.stats.schrijver);
+  RC_ASSERT(p.stats.ordered_sweep == r.stats.ordered_sweep);
   RC_ASSERT(verify_perfect_partners(rows, p.partner).ok());
+  RC_TAG(r.stats.schrijver ? "Schrijver" : "the sweep");
 }
 
-TEST(Schrijver, MatchesTheRegularPlatesAndLeavesThePetersenGraphToPS) {
+TEST(Schrijver, TakesOverWhereTheSweepLeavesNodesOfABipartiteGraph) {
+  // Small bipartite graphs (any numbering of up to 16 nodes is local) on which the sweep leaves
+  // nodes: Schrijver's matching replaces its pairing at both doors.
+  int found = 0;
+  for (std::uint64_t seed = 1; seed < 2000 && found < 5; ++seed) {
+    const CubicGraph g = random_bipartite_cubic(8, seed);
+    NeighbourTable table(g);
+    Matching swept(g.node_count());
+    if (ordered_sweep(table, &swept.mate_edge).value_or(0) == 0) continue;
+    ++found;
+    const Result r = perfect_matching(g, {.validate = false});
+    EXPECT_TRUE(r.stats.schrijver);
+    EXPECT_FALSE(r.stats.ordered_sweep);
+    EXPECT_EQ(r.stats.augmenting_paths, 0u);
+    EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok());
+    const HugeVector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
+    EXPECT_TRUE(perfect_partners(rows).stats.schrijver);
+  }
+  EXPECT_EQ(found, 5);
+}
+
+TEST(Schrijver, MatchesAShuffledPlateAndLeavesThePetersenGraphToTheSweep) {
   // A regular voxel plate's dual is bipartite (the plates where PS leaves one-colour patches).
+  // In the generator's order the sweep pairs it perfectly; shuffled, the sweep refuses the order
+  // and Schrijver's walk matches it.
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const Result r = perfect_matching(plate);
+  const Result in_order = perfect_matching(plate);
+  EXPECT_TRUE(in_order.stats.ordered_sweep);
+  EXPECT_EQ(in_order.stats.unpaired_after_initial, 0u);
+  EXPECT_TRUE(verify_perfect_matching(plate, in_order.matching).ok());
+  const CubicGraph mixed = shuffled(plate, 3);
+  const Result r = perfect_matching(mixed);
   EXPECT_TRUE(r.stats.schrijver);
   EXPECT_EQ(r.stats.augmenting_paths, 0u);
-  EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
+  EXPECT_TRUE(verify_perfect_matching(mixed, r.matching).ok());
   const Result p = perfect_matching(petersen_graph());
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), p.matching).ok());
@@ -185,20 +266,6 @@ TEST(Schrijver, IsSkippedWhenNotAsked) {
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_GT(p.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
-}
-
-// The graph with its node ids permuted at random, so that neighbours' ids lie far apart.
-CubicGraph shuffled(const CubicGraph& g, std::uint64_t seed) {
-  SeededRandom random(seed);
-  std::vector<NodeId> id(g.node_count());
-  std::iota(id.begin(), id.end(), 0);
-  for (std::uint32_t i = g.node_count() - 1; i > 0; --i) std::swap(id[i], id[random.below(i + 1)]);
-  std::vector<std::array<NodeId, 2>> edges;
-  for (EdgeId e = 0; e < g.edge_count(); ++e) {
-    auto [a, b] = g.endpoints(e);
-    edges.push_back({id[a], id[b]});
-  }
-  return CubicGraph::from_edges(g.node_count(), edges);
 }
 
 RC_GTEST_PROP(OrderedSweep, ReturnsAValidMaximalMatchingWithAFreshSearchStateOrNothing, ()) {

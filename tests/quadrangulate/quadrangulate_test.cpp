@@ -12,6 +12,7 @@
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/surface_generators.hpp"
+#include "petersen/graph/seeded_random.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
@@ -73,12 +74,21 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
 }
 
 // No triangle at all: every face kept as it is (the pairable graph has no node).
-// ps on a regular plate, whose dual is bipartite, is Schrijver's exact matching (nothing left to
-// augment); on the same plate made irregular (odd cycles in the dual) PS runs, and the summary
-// says which ran.
-TEST(Quadrangulate, ReportsSchrijversMatchingOnABipartiteDual) {
+// ps on a regular plate, whose dual is bipartite: in the generator's order the ordered sweep pairs
+// every triangle; with the triangles shuffled, Schrijver's exact matching does (nothing left to
+// augment either way); on the same plate made irregular (odd cycles in the dual) PS runs, and the
+// summary says which ran.
+TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
   const TriangleMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
-  const QuadResult regular = quadrangulate(to_polygon_mesh(plate));
+  const QuadResult in_order = quadrangulate(to_polygon_mesh(plate));
+  EXPECT_TRUE(in_order.stats.matching.ordered_sweep);
+  EXPECT_EQ(in_order.stats.matching.unpaired_after_initial, 0u);
+  TriangleMesh mixed = plate;
+  SeededRandom random(11);
+  for (std::size_t i = mixed.triangles.size() - 1; i > 0; --i) {
+    std::swap(mixed.triangles[i], mixed.triangles[random.below(static_cast<std::uint32_t>(i + 1))]);
+  }
+  const QuadResult regular = quadrangulate(to_polygon_mesh(mixed));
   EXPECT_TRUE(regular.stats.matching.schrijver);
   EXPECT_EQ(regular.stats.matching.unpaired_after_initial, 0u);
   EXPECT_EQ(regular.stats.triangles_left, 0u);

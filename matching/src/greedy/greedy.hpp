@@ -18,11 +18,11 @@ void simple_greedy(const CubicGraph& graph, Matching& matching, std::uint64_t se
 /// Θ(n), every set operation O(1).
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed);
 /// PS over a table the caller keeps, for the augmentation that follows: the table's search state
-/// ends up fresh for the matching PS returns (augment_cubic.hpp).
-void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed);
-/// PS over a table built on neighbour rows (no CubicGraph, so no mate edges): the matching is
-/// the table's search state, each slot's mate node. Returns the number of nodes left unpaired.
-std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed);
+/// ends up fresh for the matching PS makes (augment_cubic.hpp), and so do the mate edges, given
+/// `mate_edge` (all kNoEdge on entry; nullptr over a table on neighbour rows, which has no
+/// CubicGraph: the matching is then each slot's mate node). Returns the number of nodes left
+/// unpaired.
+std::uint32_t puli_segal(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, std::uint64_t seed);
 
 /// The ordered sweep (ordered_sweep.cpp): the nodes in id order, each free one paired with its
 /// free neighbour of fewest free neighbours (of smallest id on ties), a node left with one free
@@ -37,10 +37,36 @@ std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<Edg
 /// Schrijver's perfect matching of a 3-regular bipartite graph (schrijver.cpp), over a table
 /// whose search state it writes fresh for the matching (and, with `mate_edge`, the mate edges),
 /// like PS. Returns false when the walk meets an odd cycle or a loop, so never on a bipartite
-/// graph: then no mate edge is written and the search state is left for PS to write. (On a
-/// graph that is not bipartite the walk may still meet even cycles only; its matching is then
-/// perfect all the same: every node keeps weight 3 on exactly one edge.)
+/// graph: then no mate edge is written, and the search state is as it was when
+/// `state_is_fresh` (every slot fresh on entry, as a sweep or PS leaves them: the walk then
+/// starts from it), else left for PS to write. (On a graph that is not bipartite the walk may
+/// still meet even cycles only; its matching is then perfect all the same: every node keeps
+/// weight 3 on exactly one edge.)
 /// Θ(n) time; extra memory: the walk's path, 8 bytes per node on it (at most n).
-bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge);
+bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh);
+
+struct PsPlaceOptions {
+  bool ordered_sweep = true;    ///< as Options::ordered_sweep
+  bool bipartite_exact = true;  ///< as Options::bipartite_exact
+  std::uint64_t seed = 1;       ///< PS's
+};
+
+/// What made the initial pairing in PS's place, and what it left.
+struct PsPlace {
+  bool ordered_sweep = false;  ///< the sweep's pairing stands (Stats::ordered_sweep)
+  bool schrijver = false;      ///< Schrijver's perfect matching replaced it (Stats::schrijver)
+  std::uint32_t unpaired = 0;
+};
+
+/// The initial pairing of `ps` (paper §3.1, PS's place), as both front doors make it over a table
+/// whose search state it writes fresh (and, with `mate_edge`, all kNoEdge on entry, the mate
+/// edges): the ordered sweep where the numbering is local; where it leaves a node unpaired or does
+/// not run, Schrijver's exact matching, which pairs a bipartite graph perfectly; where neither
+/// stands, PS. The sweep goes first because it pairs every node of the bipartite plates (A1,
+/// D0-D6) at about a BFS's cost, where Schrijver's walk took 2.5-4.5 BFS (bench/RESULTS.md,
+/// "Stop 18"); where it leaves nodes on a graph that is not bipartite, Schrijver's walk starts
+/// from the sweep's fresh state and gives up at its first odd cycle.
+PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+                         const PsPlaceOptions& options);
 
 }  // namespace petersen

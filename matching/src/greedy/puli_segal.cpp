@@ -166,17 +166,13 @@ class PuliSegal {
 
 }  // namespace
 
-void puli_segal(NeighbourTable& table, Matching& matching, std::uint64_t seed) {
-  PuliSegal(table, &matching.mate_edge, seed).run();
-}
-
-std::uint32_t puli_segal_on_rows(NeighbourTable& table, std::uint64_t seed) {
-  return PuliSegal(table, nullptr, seed).run();
+std::uint32_t puli_segal(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, std::uint64_t seed) {
+  return PuliSegal(table, mate_edge, seed).run();
 }
 
 void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed) {
   NeighbourTable table(graph);
-  puli_segal(table, matching, seed);
+  puli_segal(table, &matching.mate_edge, seed);
 }
 
 }  // namespace petersen

@@ -20,8 +20,10 @@
 // but the splits); on every shared mesh the first odd cycle comes within a few hundred steps.
 //
 // State, in the table's search slots (one line per node, fresh again on return): `tag` holds the
-// weights of the node's three edges, two bits each, in the order of its row; `link` holds the
-// node's position on the walk's path (kNone when off it).
+// weights of the node's three edges, two bits each, in the order of its row, each XORed with 1 so
+// that a fresh slot's tag (0) means every edge weighs 1; `link` holds the node's position on the
+// walk's path (kNone when off it, as in a fresh slot). After the ordered sweep the state is fresh
+// already, so the walk starts at once, and on an odd cycle one pass puts the sweep's state back.
 
 #include <algorithm>
 #include <vector>
@@ -40,19 +42,20 @@ class Schrijver {
   Schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge)
       : table_(table), mate_edge_(mate_edge) {}
 
-  // False (slots' tag and link dirty, mates untouched) when an odd cycle or a loop turned up.
-  bool run() {
+  // False (mates untouched) when an odd cycle or a loop turned up; the slots' tag and link are
+  // then fresh again when they were fresh on entry, else left dirty.
+  bool run(bool state_is_fresh) {
     const NodeId n = table_.node_count();
-    for (NodeId v = 0; v < n; ++v) {
-      table_.slot(v).tag = kAllOnes;
-      table_.slot(v).link = kNone;
-    }
+    if (!state_is_fresh) clear_walk_state();
     for (NodeId s = 0; s < n; ++s) {
-      if (fractional_edges(s) != 0 && !walk_from(s)) return false;
+      if (fractional_edges(s) != 0 && !walk_from(s)) {
+        if (state_is_fresh) clear_walk_state();
+        return false;
+      }
     }
     // Every edge weighs 0 or 3 now: the node's weight-3 edge is its matching edge.
     for (NodeId v = 0; v < n; ++v) {
-      const std::uint32_t tag = table_.slot(v).tag;
+      const std::uint32_t tag = weights(v);
       const int i = (tag & 3) == 3 ? 0 : (tag >> 2 & 3) == 3 ? 1 : 2;
       table_.start_search(v, i);
       const NodeId u = table_.neighbours(v)[i];
@@ -73,15 +76,24 @@ class Schrijver {
     std::int8_t left;
   };
 
-  std::uint32_t weight(NodeId v, int i) const { return table_.slot(v).tag >> (2 * i) & 3; }
+  // Every node's tag and link as in a fresh slot: every edge weighs 1, no node on the path.
+  void clear_walk_state() const {
+    for (NodeId v = 0; v < table_.node_count(); ++v) {
+      table_.slot(v).tag = 0;
+      table_.slot(v).link = kNone;
+    }
+  }
+  // v's three weights, two bits each (the slot stores them XORed with kAllOnes).
+  std::uint32_t weights(NodeId v) const { return table_.slot(v).tag ^ kAllOnes; }
+  std::uint32_t weight(NodeId v, int i) const { return weights(v) >> (2 * i) & 3; }
   // Bit 2i set when v's i-th edge weighs 1 or 2 (its two bits differ).
   std::uint32_t fractional_edges(NodeId v) const {
-    const std::uint32_t tag = table_.slot(v).tag;
+    const std::uint32_t tag = weights(v);
     return (tag ^ tag >> 1) & kAllOnes;
   }
   void add(NodeId v, int i, int delta) const {
     table_.slot(v).tag =
-        static_cast<std::uint32_t>(static_cast<int>(table_.slot(v).tag) + (delta << (2 * i)));
+        static_cast<std::uint32_t>(static_cast<int>(weights(v)) + (delta << (2 * i))) ^ kAllOnes;
   }
 
   // The index, in u's row, of the edge that is v's i-th (u = v's i-th neighbour): across
@@ -164,8 +176,8 @@ class Schrijver {
 
 }  // namespace
 
-bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge) {
-  return Schrijver(table, mate_edge).run();
+bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh) {
+  return Schrijver(table, mate_edge).run(state_is_fresh);
 }
 
 }  // namespace petersen

@@ -11,8 +11,10 @@ namespace petersen {
 
 enum class Algorithm {
   sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
-  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths; on a bipartite
-          ///< graph Schrijver's exact matching instead (Stats::schrijver)
+  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths; the ordered
+          ///< sweep in its place where the numbering is local (Stats::ordered_sweep), and on a
+          ///< bipartite graph Schrijver's exact matching where that leaves nodes
+          ///< (Stats::schrijver)
   ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
   gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
   frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
@@ -43,14 +45,14 @@ struct Options {
   Algorithm algorithm = Algorithm::ps;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
-  /// ps: try Schrijver's exact matching first, which matches a bipartite graph perfectly where PS
-  /// leaves patches of one colour (Stats::schrijver). False runs the paper's PS alone, as the
-  /// bench's paper-faithful rows do.
+  /// ps, when the ordered sweep leaves nodes unpaired or does not run: try Schrijver's exact
+  /// matching, which matches a bipartite graph perfectly where PS leaves patches of one colour
+  /// (Stats::schrijver). False runs the paper's PS alone, as the bench's paper-faithful rows do.
   bool bipartite_exact = true;
-  /// ps, when Schrijver's matching does not apply: pair by the ordered sweep instead of PS where
-  /// the node numbering is local (Stats::ordered_sweep): each free node in id order with its free
-  /// neighbour of fewest free neighbours, a third to a half of PS's cost there. False runs PS
-  /// always, as the bench's paper-faithful rows do.
+  /// ps: pair by the ordered sweep instead of PS where the node numbering is local
+  /// (Stats::ordered_sweep): each free node in id order with its free neighbour of fewest free
+  /// neighbours, a third to a half of PS's cost there, and on the bipartite plates a perfect
+  /// matching at a BFS's cost. False runs PS always, as the bench's paper-faithful rows do.
   bool ordered_sweep = true;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
@@ -76,11 +78,12 @@ struct Stats {
   std::uint64_t replacement_searches = 0;   ///< ds: dynamic-connectivity replacement searches
   std::uint64_t cover_swaps = 0;            ///< gw: tree edges swapped for a covering non-tree edge
   /// ps: Schrijver's algorithm matched the graph perfectly in PS's place, nothing left to augment.
-  /// It does on every bipartite graph (where PS leaves patches of one colour, bench/RESULTS.md);
-  /// it gives up at the first odd cycle its walk meets, and PS runs as before.
+  /// It runs where the ordered sweep leaves nodes or does not run, and matches every bipartite
+  /// graph (where PS leaves patches of one colour, bench/RESULTS.md); it gives up at the first
+  /// odd cycle its walk meets, and the sweep's pairing or PS's stands.
   bool schrijver = false;
-  /// ps: the ordered sweep made the initial pairing in PS's place (Options::ordered_sweep): the
-  /// graph was not bipartite and its numbering was local.
+  /// ps: the ordered sweep's pairing is the initial one (Options::ordered_sweep): the numbering
+  /// was local, and the sweep paired every node or the graph was not bipartite.
   bool ordered_sweep = false;
 
   double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)

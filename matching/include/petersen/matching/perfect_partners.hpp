@@ -32,10 +32,10 @@ struct PartnerResult {
 /// bytes per triangle. The rows are trusted to be a loop-free cubic graph (each node in the row
 /// of each neighbour as often as that neighbour is in its own); no bridge test is made. Check the
 /// answer with verify_perfect_partners. Θ(n) for PS; the augmentation's cost follows the regions
-/// its searches explore. A bipartite graph is matched by Schrijver's algorithm instead (Θ(n),
-/// stats.schrijver; its walk's path takes 8 bytes per node on it, about 10^4 nodes on the 4M-node
-/// plates), as in perfect_matching; where the numbering is local, the ordered sweep pairs in PS's
-/// place (stats.ordered_sweep), as there.
+/// its searches explore. As in perfect_matching, the ordered sweep pairs in PS's place where the
+/// numbering is local (stats.ordered_sweep), and where it leaves nodes a bipartite graph is
+/// matched by Schrijver's algorithm instead (Θ(n), stats.schrijver; its walk's path takes 8 bytes
+/// per node on it, about 10^4 nodes on the 4M-node plates).
 PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options = {});
 
 /// Tarjan's augmenting paths (augment_matching's, the same searches) from a pairing the caller
