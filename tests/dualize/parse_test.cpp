@@ -343,7 +343,8 @@ TEST(ParsePly, RunsOfTrianglesReadAsTheAsciiFile) {
         for (std::int64_t corner : face) {
           const std::uint32_t raw = static_cast<std::uint32_t>(corner);
           binary.append(reinterpret_cast<const char*>(&raw), 4);
-          ascii += " " + std::to_string(type == "int" ? corner : std::int64_t{raw});
+          ascii += ' ';  // an append: " " + std::to_string gives GCC 12 a false -Wrestrict
+          ascii += std::to_string(type == "int" ? corner : std::int64_t{raw});
         }
         ascii += "\n";
       }

@@ -462,7 +462,10 @@ std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& re
       // quad's corners): empty when it has them, else what differs.
       auto mismatch = [&](const std::vector<VertexId>& parents) -> std::string {
         std::string of;
-        for (VertexId u : parents) of += " " + std::to_string(u);
+        for (VertexId u : parents) {
+          of += ' ';  // an append: " " + std::to_string gives GCC 12 a false -Wrestrict
+          of += std::to_string(u);
+        }
         const std::string where = " of vertex " + std::to_string(v) + " in output face " +
                                   std::to_string(o) + ", made from vertices" + of;
         if (v >= n) {
