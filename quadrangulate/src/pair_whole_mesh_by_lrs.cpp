@@ -105,8 +105,10 @@ void pair_whole_mesh_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
   stats.matching.unpaired_after_initial += k.unpaired;
   stats.matching.initial_seconds += clock.lap();
 
-  stats.matching.augmenting_paths +=
-      augment_partners(k.rows, k.partner, options.augment).augmenting_paths;
+  const AugmentStats augmented = augment_partners(k.rows, k.partner, options.augment);
+  stats.matching.augmenting_paths += augmented.augmenting_paths;
+  stats.matching.blossoms += augmented.blossoms;
+  stats.matching.nodes_labelled += augmented.nodes_labelled;
   stats.matching.augment_seconds += clock.lap();
   if (MatchingCheck check = verify_perfect_partners(k.rows, k.partner); !check.ok()) {
     throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +

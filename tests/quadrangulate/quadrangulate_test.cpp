@@ -100,6 +100,23 @@ TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
   EXPECT_TRUE(irregular.stats.maximum_certified);
 }
 
+// lrs's augmentation reports its searches like ps's: on irregular plates whose expansion leaves
+// triangles unpaired, the labels given are counted (at least one root per path), not only the
+// paths.
+TEST(Quadrangulate, LrsReportsItsAugmentationsLabels) {
+  int augmented = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const TriangleMesh plate = randomize_triangulation(
+        voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 4}), 300, 300, seed);
+    const QuadResult r = quadrangulate(to_polygon_mesh(plate), {.algorithm = Algorithm::lrs});
+    ASSERT_TRUE(r.stats.maximum_certified);
+    ASSERT_EQ(r.stats.triangles_left, 0u);
+    EXPECT_GE(r.stats.matching.nodes_labelled, r.stats.matching.augmenting_paths);
+    augmented += r.stats.matching.augmenting_paths > 0;
+  }
+  EXPECT_GT(augmented, 0);
+}
+
 TEST(Quadrangulate, KeepsAMeshOfQuadsAsItIs) {
   const PolygonMesh mesh =
       mesh_of({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}},
