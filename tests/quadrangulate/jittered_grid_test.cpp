@@ -6,13 +6,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <numeric>
-#include <random>
 #include <set>
 
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "result_check.hpp"
+#include "shuffled_faces.hpp"
 
 namespace petersen {
 namespace {
@@ -43,18 +42,6 @@ double recovered(const PolygonMesh& grid, const JitteredGrid& spec, const QuadRe
   return double(found) / (double(spec.nx) * spec.ny);
 }
 
-// The grid with its faces in a random order: the generator lists each square's two triangles
-// one after the other, which a greedy start in face order would pair back by position alone.
-PolygonMesh shuffled(const PolygonMesh& grid, std::uint64_t seed) {
-  std::vector<FaceId> order(grid.face_count());
-  std::iota(order.begin(), order.end(), 0);
-  std::shuffle(order.begin(), order.end(), std::mt19937_64(seed));
-  PolygonMesh mesh;
-  mesh.positions = grid.positions;
-  for (FaceId f : order) mesh.add_face(grid.face(f));
-  return mesh;
-}
-
 // The open grid (the test) turns out forced: from its corners in, a perfect pairing has no
 // choice, and ps gives back every quad too (measured: 100 % on these seeds). On the torus every
 // triangle has three partners and ps gives back 8-10 %, the minimum-cost pairing all of them.
@@ -64,7 +51,7 @@ TEST(JitteredGrid, QualityGivesBackAtLeast99PercentOfTheQuads) {
       const JitteredGrid spec{
           .nx = torus ? 180u : 60u, .ny = 60, .jitter = 0.1, .torus = torus, .seed = seed};
       SCOPED_TRACE(::testing::Message() << (torus ? "torus" : "open") << " seed " << seed);
-      const PolygonMesh grid = shuffled(jittered_grid(spec), seed);
+      const PolygonMesh grid = testing::shuffled_faces(jittered_grid(spec), seed);
       const QuadResult best = quadrangulate(grid, {.objective = Objective::quality});
       EXPECT_TRUE(best.stats.optimality_certified);
       EXPECT_EQ(petersen::testing::check_quad_result(grid, best, false, false), "");

@@ -12,12 +12,12 @@
 #include "petersen/dualize/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/surface_generators.hpp"
-#include "petersen/graph/seeded_random.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "petersen/testing/random_attributes.hpp"
 #include "result_check.hpp"
+#include "shuffled_faces.hpp"
 
 namespace petersen {
 namespace {
@@ -73,7 +73,6 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
   expect_correct(mesh);
 }
 
-// No triangle at all: every face kept as it is (the pairable graph has no node).
 // ps on a regular plate, whose dual is bipartite: in the generator's order the ordered sweep pairs
 // every triangle; with the triangles shuffled, Schrijver's exact matching does (nothing left to
 // augment either way); on the same plate made irregular (odd cycles in the dual) PS runs, and the
@@ -83,12 +82,7 @@ TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
   const QuadResult in_order = quadrangulate(to_polygon_mesh(plate));
   EXPECT_TRUE(in_order.stats.matching.ordered_sweep);
   EXPECT_EQ(in_order.stats.matching.unpaired_after_initial, 0u);
-  TriangleMesh mixed = plate;
-  SeededRandom random(11);
-  for (std::size_t i = mixed.triangles.size() - 1; i > 0; --i) {
-    std::swap(mixed.triangles[i], mixed.triangles[random.below(static_cast<std::uint32_t>(i + 1))]);
-  }
-  const QuadResult regular = quadrangulate(to_polygon_mesh(mixed));
+  const QuadResult regular = quadrangulate(testing::shuffled_faces(to_polygon_mesh(plate), 11));
   EXPECT_TRUE(regular.stats.matching.schrijver);
   EXPECT_EQ(regular.stats.matching.unpaired_after_initial, 0u);
   EXPECT_EQ(regular.stats.triangles_left, 0u);

@@ -63,9 +63,9 @@ struct PsPlace {
 /// edges): the ordered sweep where the numbering is local; where it leaves a node unpaired or does
 /// not run, Schrijver's exact matching, which pairs a bipartite graph perfectly; where neither
 /// stands, PS. The sweep goes first because it pairs every node of the bipartite plates (A1,
-/// D0-D6) at about a BFS's cost, where Schrijver's walk took 2.5-4.5 BFS (bench/RESULTS.md,
-/// "Stop 18"); where it leaves nodes on a graph that is not bipartite, Schrijver's walk starts
-/// from the sweep's fresh state and gives up at its first odd cycle.
+/// D0-D6) in 0.8-2.0 times a BFS's time, where Schrijver's walk took 2.3-3.2 (bench/RESULTS.md,
+/// "Stop 18", old and new alternated); where it leaves nodes on a graph that is not bipartite,
+/// Schrijver's walk starts from the sweep's fresh state and gives up at its first odd cycle.
 PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
                          const PsPlaceOptions& options);
 
