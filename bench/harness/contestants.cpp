@@ -54,6 +54,7 @@ Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augmen
   measures.unpaired = result.stats.unpaired_after_initial;
   measures.two_phase = algorithm == Algorithm::sg || algorithm == Algorithm::ps;
   measures.augmenting_paths = result.stats.augmenting_paths;
+  measures.labels = result.stats.nodes_labelled;
   measures.reductions = result.stats.reductions;
   return measures;
 }

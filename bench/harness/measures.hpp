@@ -14,6 +14,7 @@ struct Measures {
   std::uint64_t augmenting_paths = 0;
   std::uint64_t reductions = 0;  ///< Frink reductions (ds, gw, frink)
   std::uint64_t flips = 0;       ///< edges flipped (lrs)
+  std::uint64_t labels = 0;      ///< even/odd labels the augmentation gave (its work)
   std::uint32_t repeats = 1;     ///< calls in one process whose median this is (Runner says why)
   double total_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)
 };

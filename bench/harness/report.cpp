@@ -58,6 +58,7 @@ Columns columns(const Cell& cell) {
   if (m.reductions)
     c.counters += (c.counters.empty() ? "" : ", ") + ("reductions " + grouped(m.reductions));
   if (m.flips) c.counters += (c.counters.empty() ? "" : ", ") + ("flips " + grouped(m.flips));
+  if (m.labels) c.counters += (c.counters.empty() ? "" : ", ") + ("labels " + grouped(m.labels));
   return c;
 }
 
@@ -146,7 +147,7 @@ void write_csv(const std::string& path, const std::vector<InputResult>& results)
   std::ofstream out(path);
   out << "input,group,vertices,edges,triangles,genus,contestant,status,runs,repeats,initial_s,"
          "paired_percent,unpaired,augment_s,total_s,ratio_to_bfs,peak_mib,augmenting_paths,"
-         "reductions,flips,paper_initial_s,paper_paired_percent,paper_unpaired,paper_augment_s,"
+         "reductions,flips,labels,paper_initial_s,paper_paired_percent,paper_unpaired,paper_augment_s,"
          "paper_total_s\n";
   for (const InputResult& r : results) {
     for (const Cell& cell : r.cells) {
@@ -163,9 +164,9 @@ void write_csv(const std::string& path, const std::vector<InputResult>& results)
         else
           out << ",,";
         out << "," << m.total_seconds() << "," << cell.ratio_to_floor << "," << cell.peak_mib << ","
-            << m.augmenting_paths << "," << m.reductions << "," << m.flips;
+            << m.augmenting_paths << "," << m.reductions << "," << m.flips << "," << m.labels;
       } else {
-        out << ",,,,,,,,,";
+        out << ",,,,,,,,,,";
       }
       if (const auto paper = paper_beside(r, cell))
         out << "," << paper_columns(*paper, ",");

@@ -32,6 +32,7 @@ Measures median_measures(const std::vector<Measures>& runs) {
       static_cast<std::uint64_t>(column([](const Measures& r) { return r.augmenting_paths; }));
   m.reductions = static_cast<std::uint64_t>(column([](const Measures& r) { return r.reductions; }));
   m.flips = static_cast<std::uint64_t>(column([](const Measures& r) { return r.flips; }));
+  m.labels = static_cast<std::uint64_t>(column([](const Measures& r) { return r.labels; }));
   m.repeats = static_cast<std::uint32_t>(column([](const Measures& r) { return r.repeats; }));
   return m;
 }
