@@ -24,15 +24,20 @@ void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
 /// unpaired.
 std::uint32_t puli_segal(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, std::uint64_t seed);
 
+/// Even nodes a repair of the ordered sweep searches at most (ordered_sweep.cpp says why 64).
+inline constexpr std::uint32_t kSweepRepairBudget = 64;
+
 /// The ordered sweep (ordered_sweep.cpp): the nodes in id order, each free one paired with its
 /// free neighbour of fewest free neighbours (of smallest id on ties), a node left with one free
-/// neighbour paired at once.
+/// neighbour paired at once, a node left with none (stranded) repaired by a short augmenting path
+/// when a search over at most `repair_budget` even nodes finds one (0: no repair).
 /// Over a table whose search state (and, with `mate_edge`, the mate edges) it writes fresh for its
 /// matching, like PS; returns the number of nodes left unpaired. Returns std::nullopt, touching
 /// nothing, when the numbering is not local (the median largest id gap between sampled nodes and
 /// their neighbours above a few √n), where its pairing front would break up. Θ(n); n bytes of
 /// state.
-std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge);
+std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+                                           std::uint32_t repair_budget = kSweepRepairBudget);
 
 /// Schrijver's perfect matching of a 3-regular bipartite graph (schrijver.cpp), over a table
 /// whose search state it writes fresh for the matching (and, with `mate_edge`, the mate edges),
@@ -46,9 +51,10 @@ std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<Edg
 bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh);
 
 struct PsPlaceOptions {
-  bool ordered_sweep = true;    ///< as Options::ordered_sweep
-  bool bipartite_exact = true;  ///< as Options::bipartite_exact
-  std::uint64_t seed = 1;       ///< PS's
+  bool ordered_sweep = true;                               ///< as Options::ordered_sweep
+  bool bipartite_exact = true;                             ///< as Options::bipartite_exact
+  std::uint64_t seed = 1;                                  ///< PS's
+  std::uint32_t sweep_repair_budget = kSweepRepairBudget;  ///< the sweep's (tests turn it off)
 };
 
 /// What made the initial pairing in PS's place, and what it left.

@@ -4,7 +4,17 @@
 //   Nodes are taken in id order; a node still free is paired with the free neighbour that has
 //   the fewest free neighbours left (the min-degree rule), and a node left with one free
 //   neighbour is paired at once (Karp and Sipser's forced move; last in, first out). A node with
-//   no free neighbour left stays unpaired.
+//   no free neighbour left is stranded; once the forced moves are done, it looks for an augmenting
+//   path over at most kSweepRepairBudget (64) even nodes, and stays unpaired if none is found.
+// Why the repair: a node is stranded just behind the front, where a free node a few steps ahead
+// is usually at the end of a short alternating path, which costs a few dozen reads there and a
+// tree growing through the graph in the augmentation. Measured (petersen_bench, labels of the
+// augmentation; bench/RESULTS.md, "Stop 19"): nodes left on A2 230 -> 136, A5 88 -> 12, B5
+// 92 -> 2, B3 422 -> 216, a 16M-triangle irregular plate 62,396 -> 3,534; the augmentation's
+// labels summed over A2-A5 and B2-B5 7.0M -> 4.0M (budgets 48, 96 and 128: 6.0M, 5.1M, 6.7M;
+// the few nodes left are far apart, and how far decides the labels, so more budget is not
+// better). B2 alone is no better (514 -> 284 nodes, 2.3M -> 2.8M labels): the nodes its sweep
+// strands need paths no local search finds.
 // Why: PS's pass costs about two BFS passes (its priority sets, random draws and a rescan of each
 // node leaving priority 0; a flat profile, no one hot spot), while the sweep reads each node's
 // row and its neighbours' state bytes once, in the order of the rows. Where that order is local
@@ -37,6 +47,8 @@ constexpr std::uint8_t kFreeMask = 3;
 constexpr std::uint8_t kOut = 1 << 4;
 constexpr std::uint8_t kPaired = 1 << 5;
 constexpr std::uint8_t kStart = 3;
+constexpr std::uint8_t kSeen = 1 << 6;  // reached by the current repair's search
+constexpr std::uint32_t kNoParent = ~0u;
 
 // The order counts as local up to this many √n of median largest gap. Measured (bench/RESULTS.md,
 // "Stop 17"): the plates 0.01-1.9, where the sweep beat PS by 1.3-3.7x; homer 3.65, rocker-arm 1.2,
@@ -63,18 +75,27 @@ bool order_is_local(const NeighbourTable& table) {
 
 class OrderedSweep {
  public:
-  OrderedSweep(NeighbourTable& table, HugeVector<EdgeId>* mate)
-      : table_(table), mate_(mate), state_(table.node_count(), kStart) {}
+  OrderedSweep(NeighbourTable& table, HugeVector<EdgeId>* mate, std::uint32_t repair_budget)
+      : table_(table),
+        mate_(mate),
+        repair_budget_(repair_budget),
+        state_(table.node_count(), kStart) {}
 
   std::uint32_t run() {
     const std::uint32_t n = table_.node_count();
     for (NodeId s = 0; s < n; ++s) {
       if (state_[s] & kOut) continue;
       pair_from(s);
-      while (!forced_.empty()) {
-        const NodeId v = forced_.back();
-        forced_.pop_back();
-        if (!(state_[v] & kOut)) pair_from(v);
+      while (!forced_.empty() || !stranded_.empty()) {
+        if (!forced_.empty()) {
+          const NodeId v = forced_.back();
+          forced_.pop_back();
+          if (!(state_[v] & kOut)) pair_from(v);
+        } else {
+          const NodeId v = stranded_.back();
+          stranded_.pop_back();
+          if (!(state_[v] & kPaired)) repair(v);
+        }
       }
     }
     return table_.start_searches(
@@ -83,6 +104,8 @@ class OrderedSweep {
 
  private:
   std::span<const NodeId, 3> neighbours(NodeId v) const { return table_.neighbours(v); }
+  bool paired(NodeId v) const { return state_[v] & kPaired; }
+  NodeId mate(NodeId v) const { return neighbours(v)[state_[v] & kFreeMask]; }
 
   // Pairs v, in play, with its free neighbour of fewest free neighbours; on ties, the one of
   // smallest id: the nearest to the front (every node before the sweep's position is out), so the
@@ -102,38 +125,110 @@ class OrderedSweep {
         best_free = free;
       }
     }
-    if (best < 0) {  // every neighbour is out: v stays unpaired
-      state_[v] |= kOut;
+    if (best < 0) {  // every neighbour is out: v is stranded
+      strand(v);
       return;
     }
     const NodeId u = neighbours(v)[best];
-    state_[v] = static_cast<std::uint8_t>(kOut | kPaired | best);
-    state_[u] = static_cast<std::uint8_t>(kOut | kPaired |
-                                          table_.index_across(v, best, u, mate_ != nullptr));
-    for (NodeId w : {v, u}) {
-      for (NodeId z : neighbours(w)) {
-        if (state_[z] & kOut) continue;
-        const int free = --state_[z] & kFreeMask;
-        if (free == 0) {
-          state_[z] |= kOut;  // its last free neighbour was just taken
-        } else if (free == 1) {
-          forced_.push_back(z);
-        }
+    pair(v, best, u);
+    take(v);
+    take(u);
+  }
+
+  void pair(NodeId v, int i, NodeId u) {
+    state_[v] = static_cast<std::uint8_t>(kOut | kPaired | i);
+    state_[u] =
+        static_cast<std::uint8_t>(kOut | kPaired | table_.index_across(v, i, u, mate_ != nullptr));
+  }
+
+  // w just went out of play: its neighbours in play lose a free neighbour.
+  void take(NodeId w) {
+    for (NodeId z : neighbours(w)) {
+      if (state_[z] & kOut) continue;
+      const int free = --state_[z] & kFreeMask;
+      if (free == 0) {
+        strand(z);  // its last free neighbour was just taken
+      } else if (free == 1) {
+        forced_.push_back(z);
       }
     }
   }
 
+  void strand(NodeId v) {
+    state_[v] |= kOut;
+    stranded_.push_back(v);
+  }
+
+  // Stranded v looks for a short augmenting path to the nearest node not paired (a free node ahead
+  // of the front, or another stranded node): an alternating breadth-first search from v over at
+  // most repair_budget_ even nodes, without blossoms (a path it finds is a path all the same; the
+  // augmentation finds those it misses). Right behind the front such paths are short.
+  void repair(NodeId v) {
+    found_.assign(1, {v, kNoParent, 0});
+    mark(v);
+    for (std::uint32_t r = 0; r < found_.size() && found_.size() < repair_budget_; ++r) {
+      const NodeId x = found_[r].node;
+      for (int i = 0; i < 3; ++i) {
+        const NodeId o = neighbours(x)[i];
+        if (state_[o] & kSeen) continue;
+        if (!paired(o)) {
+          augment(r, i, o);
+          break;
+        }
+        const NodeId m = mate(o);
+        mark(o);
+        mark(m);
+        found_.push_back({m, r, static_cast<std::uint8_t>(i)});
+      }
+      if (paired(v)) break;
+    }
+    for (NodeId u : seen_) state_[u] &= ~kSeen;
+    seen_.clear();
+  }
+
+  void mark(NodeId v) {
+    state_[v] |= kSeen;
+    seen_.push_back(v);
+  }
+
+  // Pairs found_[r]'s node with f across its i-th edge, and each even node above it with the odd
+  // node below it, up to the stranded root.
+  void augment(std::uint32_t r, int i, NodeId f) {
+    const bool f_in_play = !(state_[f] & kOut);
+    NodeId below = f;
+    for (;;) {
+      const Found here = found_[r];
+      const NodeId odd = here.parent == kNoParent ? kNoNode : mate(here.node);
+      pair(here.node, i, below);
+      if (here.parent == kNoParent) break;
+      below = odd;
+      i = here.via;
+      r = here.parent;
+    }
+    if (f_in_play) take(f);
+  }
+
   NeighbourTable& table_;
   HugeVector<EdgeId>* mate_;  // nullptr: the matching is the table's state only
+  std::uint32_t repair_budget_;
   std::vector<std::uint8_t> state_;
-  std::vector<NodeId> forced_;  // nodes left with one free neighbour, to pair next
+  std::vector<NodeId> forced_;    // nodes left with one free neighbour, to pair next
+  std::vector<NodeId> stranded_;  // nodes left with no free neighbour, to repair
+  struct Found {
+    NodeId node;           // an even node of the repair's search
+    std::uint32_t parent;  // the record of the even node above it (kNoParent: the root)
+    std::uint8_t via;      // the index in the parent's row of the odd node between them
+  };
+  std::vector<Found> found_;  // the repair's even nodes in the order reached
+  std::vector<NodeId> seen_;  // every node marked kSeen
 };
 
 }  // namespace
 
-std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge) {
+std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+                                           std::uint32_t repair_budget) {
   if (!order_is_local(table)) return std::nullopt;
-  return OrderedSweep(table, mate_edge).run();
+  return OrderedSweep(table, mate_edge, repair_budget).run();
 }
 
 }  // namespace petersen

@@ -5,7 +5,8 @@ namespace petersen {
 PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
                          const PsPlaceOptions& options) {
   const std::optional<std::uint32_t> swept =
-      options.ordered_sweep ? ordered_sweep(table, mate_edge) : std::nullopt;
+      options.ordered_sweep ? ordered_sweep(table, mate_edge, options.sweep_repair_budget)
+                            : std::nullopt;
   if (swept == 0u) return {.ordered_sweep = true};
   if (options.bipartite_exact && schrijver(table, mate_edge, swept.has_value())) {
     return {.schrijver = true};
