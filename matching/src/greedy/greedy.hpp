@@ -30,12 +30,12 @@ inline constexpr std::uint32_t kSweepRepairBudget = 64;
 /// The ordered sweep (ordered_sweep.cpp): the nodes in id order, each free one paired with its
 /// free neighbour of fewest free neighbours (of smallest id on ties), a node left with one free
 /// neighbour paired at once, a node left with none (stranded) repaired by a short augmenting path
-/// when a search over at most `repair_budget` even nodes finds one (0: no repair).
-/// Over a table whose search state (and, with `mate_edge`, the mate edges) it writes fresh for its
-/// matching, like PS; returns the number of nodes left unpaired. Returns std::nullopt, touching
-/// nothing, when the numbering is not local (the median largest id gap between sampled nodes and
-/// their neighbours above a few √n), where its pairing front would break up. Θ(n); n bytes of
-/// state.
+/// when a search that scans no further once it has reached `repair_budget` even nodes (the stranded
+/// one included, so 0 and 1 turn the repairs off) finds one. Over a table whose search state (and,
+/// with `mate_edge`, the mate edges) it writes fresh for its matching, like PS; returns the number
+/// of nodes left unpaired. Returns std::nullopt, touching nothing, when the numbering is not local
+/// (the median largest id gap between sampled nodes and their neighbours above a few √n), where its
+/// pairing front would break up. Θ(n); n bytes of state.
 std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
                                            std::uint32_t repair_budget = kSweepRepairBudget);
 

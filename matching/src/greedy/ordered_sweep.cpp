@@ -160,9 +160,10 @@ class OrderedSweep {
   }
 
   // Stranded v looks for a short augmenting path to the nearest node not paired (a free node ahead
-  // of the front, or another stranded node): an alternating breadth-first search from v over at
-  // most repair_budget_ even nodes, without blossoms (a path it finds is a path all the same; the
-  // augmentation finds those it misses). Right behind the front such paths are short.
+  // of the front, or another stranded node): an alternating breadth-first search from v, without
+  // blossoms (a path it finds is a path all the same; the augmentation finds those it misses),
+  // that scans no further once it has reached repair_budget_ even nodes. Right behind the front
+  // such paths are short.
   void repair(NodeId v) {
     found_.assign(1, {v, kNoParent, 0});
     mark(v);
