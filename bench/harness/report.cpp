@@ -147,8 +147,8 @@ void write_csv(const std::string& path, const std::vector<InputResult>& results)
   std::ofstream out(path);
   out << "input,group,vertices,edges,triangles,genus,contestant,status,runs,repeats,initial_s,"
          "paired_percent,unpaired,augment_s,total_s,ratio_to_bfs,peak_mib,augmenting_paths,"
-         "reductions,flips,labels,paper_initial_s,paper_paired_percent,paper_unpaired,paper_augment_s,"
-         "paper_total_s\n";
+         "reductions,flips,labels,paper_initial_s,paper_paired_percent,paper_unpaired,"
+         "paper_augment_s,paper_total_s\n";
   for (const InputResult& r : results) {
     for (const Cell& cell : r.cells) {
       const Measures& m = cell.median;
