@@ -25,6 +25,7 @@
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/dualize/read_mesh.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -123,6 +124,8 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon,
 }  // namespace
 
 int main(int argc, char** argv) {
+  // As the CLI does: the rounds after the first reuse the memory the first one released.
+  petersen::huge_pages::enable_pool_unless_switched_off();
   std::vector<std::string> files;
   bool with_lemon = true;
   int rounds = 3;
