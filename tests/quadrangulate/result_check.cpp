@@ -257,24 +257,22 @@ double pair_cost(const PolygonMesh& mesh, FaceId f, FaceId g) {
 
 namespace {
 
-constexpr std::uint32_t kPeersDisagree = ~0u;
-
 // The size of a maximum matching of the graph, by LEMON and, on graphs of at most 20,000 nodes, by
-// Boost too (its Edmonds is far slower than LEMON's: over 300 s at 1.4M nodes), or
-// kPeersDisagree. The tests check one mesh once per algorithm, so the last graph's answer is kept
-// and given again when the same graph (compared edge by edge) comes next: Boost on homer's graph
-// was 76 % of its shared-mesh test under ASan, computed eight times.
-std::uint32_t maximum_matching_size(std::uint32_t nodes,
-                                    std::span<const std::array<NodeId, 2>> edges) {
+// Boost too (its Edmonds is far slower than LEMON's: over 300 s at 1.4M nodes); none when they
+// disagree. The tests check one mesh once per algorithm, so the last graph's answer is kept and
+// given again when the same graph (compared edge by edge) comes next: Boost on homer's graph was
+// 76 % of its shared-mesh test under ASan, computed eight times.
+std::optional<std::uint32_t> maximum_matching_size(std::uint32_t nodes,
+                                                   std::span<const std::array<NodeId, 2>> edges) {
   struct Answered {
     std::uint32_t nodes = 0;
     std::vector<std::array<NodeId, 2>> edges;
-    std::uint32_t maximum = 0;
+    std::optional<std::uint32_t> maximum;
   };
   static std::optional<Answered> last;
   if (last && last->nodes == nodes && std::ranges::equal(last->edges, edges)) return last->maximum;
-  std::uint32_t maximum = lemon_matching_size(nodes, edges);
-  if (nodes <= 20000 && maximum != boost_matching_size(nodes, edges)) maximum = kPeersDisagree;
+  std::optional<std::uint32_t> maximum = lemon_matching_size(nodes, edges);
+  if (nodes <= 20000 && *maximum != boost_matching_size(nodes, edges)) maximum.reset();
   last = Answered{nodes, {edges.begin(), edges.end()}, maximum};
   return maximum;
 }
@@ -310,8 +308,9 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
     pairable.insert(pair_key(fs[0], fs[1]));
     edges.push_back({node_of[fs[0]], node_of[fs[1]]});
   }
-  const std::uint32_t maximum = maximum_matching_size(nodes, edges);
-  if (maximum == kPeersDisagree) return "LEMON and Boost disagree";
+  const std::optional<std::uint32_t> peers_maximum = maximum_matching_size(nodes, edges);
+  if (!peers_maximum) return "LEMON and Boost disagree";
+  const std::uint32_t maximum = *peers_maximum;
 
   // Every input face used exactly once; the matching the quads make, on the test's own graph.
   std::vector<int> uses(faces, 0);
