@@ -308,6 +308,20 @@ TEST(MinCostPerfect, NoPerfectMatchingThrows) {
   EXPECT_THROW(min_cost_perfect_matching(g, costs), GraphError);
 }
 
+// The solver renumbers the nodes; the error names the node as the caller numbered it.
+TEST(MinCostPerfect, NodeWithoutEdgeIsNamedByTheCallersId) {
+  const Edges edges = {{0, 2}, {2, 3}, {3, 4}, {4, 0}};  // node 1 has no edge
+  const CsrGraph g = CsrGraph::from_edges(5, edges);
+  const std::vector<Cost> costs(edges.size(), 1);
+  try {
+    min_cost_perfect_matching(g, costs);
+    ADD_FAILURE() << "no error";
+  } catch (const GraphError& error) {
+    EXPECT_NE(std::string(error.what()).find("node 1 has no edge"), std::string::npos)
+        << error.what();
+  }
+}
+
 TEST(MinCostPerfect, RejectsBadCosts) {
   const CubicGraph g = theta_graph();
   EXPECT_THROW(min_cost_perfect_matching(g, std::vector<Cost>{1, 2}), std::invalid_argument);

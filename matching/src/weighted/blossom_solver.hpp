@@ -1,7 +1,7 @@
 #pragma once
 // Edmonds' primal-dual algorithm for minimum-cost perfect matching, growing the alternating
-// trees of all free nodes at once, on any Graph with incident_edges(v), other_end(e, v) and
-// endpoints(e).
+// trees of all free nodes at once, on the graph renumbered in breadth-first order
+// (breadth_first_order.hpp).
 //
 // Duals are in the odd-cut form (see min_cost_matching.hpp) on doubled costs C(e) = 2·cost(e),
 // so every dual stays an integer: every root's dual is made even, tree edges are tight, and all
@@ -44,6 +44,7 @@
 #include <utility>
 #include <vector>
 
+#include "breadth_first_order.hpp"
 #include "chain_pool.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
@@ -53,13 +54,10 @@ namespace petersen::weighted_detail {
 
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
 
-template <class Graph>
 class BlossomSolver {
  public:
-  BlossomSolver(const Graph& graph, std::span<const Cost> costs, HugeVector<EdgeId>& mate,
-                MinCostStats& stats)
+  BlossomSolver(const BreadthFirstAdjacency& graph, HugeVector<EdgeId>& mate, MinCostStats& stats)
       : graph_(graph),
-        cost_(costs),
         mate_(mate),
         stats_(stats),
         n_(graph.node_count()),
@@ -80,42 +78,13 @@ class BlossomSolver {
     children_.reserve(ids_ - n_);
     conn_.reserve(ids_ - n_);
     mate_.assign(n_, kNoEdge);
-    for (NodeId v = 0; v < n_; ++v) base_[v] = v;
-    // The solver's own adjacency, each node's slots in a row with the far end and the doubled
-    // cost: a scan reads one run of memory per node instead of an edge id, then the edge's ends,
-    // then its cost, at three random places. Built straight from the graph (a renumbered view,
-    // see breadth_first_order.hpp); each node's slots are sorted by edge id, so the order scans
-    // meet ties in does not depend on the order the input lists a node's edges in.
-    first_slot_.resize(std::size_t{n_} + 1);
-    std::size_t slots = 0;
     for (NodeId v = 0; v < n_; ++v) {
-      first_slot_[v] = slots;
-      slots += graph_.incident_edges(v).size();
-    }
-    first_slot_[n_] = slots;
-    slots_.resize(slots);
-    uniform_degree_ = n_ > 0 && slots == std::size_t{n_} * (first_slot_[1] - first_slot_[0])
-                          ? static_cast<std::uint32_t>(first_slot_[1])
-                          : 0;
-    for (NodeId v = 0; v < n_ && uniform_degree_ != 0; ++v) {
-      if (first_slot_[v + 1] - first_slot_[v] != uniform_degree_) uniform_degree_ = 0;
-    }
-    for (NodeId v = 0; v < n_; ++v) {
-      Slot* const first = slots_.data() + first_slot_[v];
-      Slot* last = first;
-      for (EdgeId e : graph_.incident_edges(v)) {
-        *last++ = {2 * cost_[e], e, graph_.other_end(e, v)};
-        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
-          std::swap(at[-1], *at);
-      }
-      if (first == last)
-        throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
+      base_[v] = v;
       // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
       Cost cheapest = kNoCost;
-      for (const Slot* at = first; at != last; ++at) cheapest = std::min(cheapest, at->cost2 / 2);
+      for (const Slot& slot : slots_of(v)) cheapest = std::min(cheapest, slot.cost2 / 2);
       rec_[v].y = cheapest;
     }
-    if (uniform_degree_ != 0) HugeVector<std::size_t>().swap(first_slot_);
   }
 
   /// Blossom V's greedy start: each free node in id order raises y_v by its smallest slack and
@@ -144,11 +113,14 @@ class BlossomSolver {
   void augment_tight() {
     std::vector<std::array<NodeId, 2>> ends;
     std::vector<EdgeId> original;
-    for (EdgeId e = 0; e < graph_.edge_count(); ++e) {
-      const auto [a, b] = graph_.endpoints(e);
-      if (2 * cost_[e] - rec_[a].y - rec_[b].y != 0) continue;
-      ends.push_back({a, b});
-      original.push_back(e);
+    for (NodeId a = 0; a < n_; ++a) {
+      for (const Slot& slot : slots_of(a)) {
+        const NodeId b =
+            slot.other;  // each edge once, from its smaller end (a loop is never tight)
+        if (b <= a || slot.cost2 - rec_[a].y - rec_[b].y != 0) continue;
+        ends.push_back({a, b});
+        original.push_back(slot.edge);
+      }
     }
     const CsrGraph tight = CsrGraph::from_edges(n_, ends);
     Matching matching(n_);
@@ -281,11 +253,6 @@ class BlossomSolver {
     NodeId x, y;  // x in child i, y in child i + 1
     EdgeId e;
   };
-  struct Slot {
-    Cost cost2;  // 2·cost(edge)
-    EdgeId edge;
-    NodeId other;
-  };
   // An edge event carries the edge's ends and doubled cost (checking it then reads no edge
   // array); an expand event names its blossom in `id`.
   struct Event {
@@ -372,11 +339,7 @@ class BlossomSolver {
     queue_.push(static_cast<std::uint64_t>(key), {0, b, kNone, kNone, kExpandEvent});
     ++stats_.queue_pushes;
   }
-  std::span<const Slot> slots_of(NodeId v) const {
-    if (uniform_degree_ != 0) [[likely]]
-      return {slots_.data() + std::size_t{v} * uniform_degree_, uniform_degree_};
-    return {slots_.data() + first_slot_[v], slots_.data() + first_slot_[v + 1]};
-  }
+  std::span<const Slot> slots_of(NodeId v) const { return graph_.slots_of(v); }
 
   // ---- blossom structure
 
@@ -896,8 +859,7 @@ class BlossomSolver {
     }
   }
 
-  const Graph& graph_;
-  std::span<const Cost> cost_;
+  const BreadthFirstAdjacency& graph_;
   HugeVector<EdgeId>& mate_;
   // During run(): a node's matched edge and the node across it (the grow step reads both at
   // once); mate_ is filled from them when run() returns.
@@ -945,13 +907,6 @@ class BlossomSolver {
   std::vector<std::vector<std::uint32_t>> children_;
   std::vector<std::vector<Conn>> conn_;
   std::vector<std::uint32_t> free_ids_;
-  // Node v's slots: [first_slot_[v], first_slot_[v + 1]), or [d·v, d·v + d) when every node has
-  // degree d (uniform_degree_, the dual of a closed mesh): then first_slot_ is freed and a scan
-  // reads no offset first. The offset was a cache miss before every scan's slots, a third of
-  // scan_even's samples on armadillo-sub2's dual (perf).
-  HugeVector<std::size_t> first_slot_;
-  std::uint32_t uniform_degree_ = 0;
-  HugeVector<Slot> slots_;
   std::int64_t delta_ = 0;
   RadixQueue<Event> queue_;
   // Per tree: the blossoms labelled in it, and the edges from other trees' even blossoms into its

@@ -1,76 +1,106 @@
 #pragma once
-// The graph renumbered in breadth-first order, for the weighted solver. Meshes bring no locality
-// of their own: in fertility-sub3's dual the median gap between the ids of two adjacent nodes is
-// 144,000 (a quarter of the faces: subdivision writes each child of every face in a block), so
-// every neighbour the solver scans is a cache and TLB miss. In breadth-first order two adjacent
-// nodes are at most two layers apart, and the region an alternating tree covers is a few runs
-// of ids. Edge ids are kept (costs stay indexed by them); only node ids change.
+// The graph renumbered in breadth-first order, as the weighted solver's own adjacency. Meshes
+// bring no locality of their own: in fertility-sub3's dual the median gap between the ids of two
+// adjacent nodes is 144,000 (a quarter of the faces: subdivision writes each child of every face
+// in a block), so every neighbour the solver scans is a cache and TLB miss. In breadth-first
+// order two adjacent nodes are at most two layers apart, and the region an alternating tree
+// covers is a few runs of ids. Edge ids are kept (costs stay indexed by them); only node ids
+// change.
 //
-// The renumbered graph is a view, not a copy: the solver builds its own adjacency from it once
-// and reads it elsewhere only at set-up, so a copy would be ~200 MB of fresh memory on
-// armadillo-sub2's dual (the copy's arrays and the edge list it was built from) for nothing.
+// The rows are written as the search visits each node: it has just read the node's edges and
+// their far ends (at random places of the input, whatever the order), so the rows cost only the
+// edges' costs more. Built after the search instead, in the new order, they read all of it again
+// at random. Set-up to the first greedy step (petersen_weighted_speed, old and new binaries
+// alternated three times, nine solves each), median: armadillo-sub2's dual 0.41 -> 0.30 s,
+// rocker-arm-sub3's 0.34 -> 0.23 s.
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
+#include <span>
+#include <string>
 
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen::weighted_detail {
 
-struct BreadthFirstOrder {
-  HugeVector<NodeId> new_node;  // by old id
-  HugeVector<NodeId> old_node;  // by new id: the visiting order
+/// An edge as its end scans it: the doubled cost (the solver's duals are on 2·cost, see
+/// blossom_solver.hpp), the edge's id and the far end, in one record, so that a scan reads one
+/// run of memory per node instead of an edge id, then the edge's ends, then its cost, at three
+/// random places.
+struct Slot {
+  Cost cost2;
+  EdgeId edge;
+  NodeId other;
+};
+
+struct BreadthFirstAdjacency {
+  HugeVector<NodeId> new_node;  // by the input's id
+  /// New node v's slots, sorted by edge id (the order scans meet ties in then does not depend on
+  /// the order the input lists a node's edges in): [first_slot[v], first_slot[v + 1]), or
+  /// [d·v, d·v + d) when every node has degree d = uniform_degree (the dual of a closed mesh), and
+  /// then first_slot is empty: the offset was a cache miss before every scan's slots, a third of
+  /// the even scans' samples on armadillo-sub2's dual (perf).
+  HugeVector<Slot> slots;
+  HugeVector<std::size_t> first_slot;
+  std::uint32_t uniform_degree = 0;
+
+  std::uint32_t node_count() const { return static_cast<std::uint32_t>(new_node.size()); }
+  std::span<const Slot> slots_of(NodeId v) const {
+    if (uniform_degree != 0) [[likely]]
+      return {slots.data() + std::size_t{v} * uniform_degree, uniform_degree};
+    return {slots.data() + first_slot[v], slots.data() + first_slot[v + 1]};
+  }
 };
 
 /// Renumbers the nodes of `graph` in breadth-first order, component by component from the
-/// smallest unvisited id. O(n + m), iterative.
+/// smallest unvisited id, and builds the rows with `costs` (by edge id). O(n + m), iterative.
+/// Throws GraphError, naming the input's node, when a node has no edge: no perfect matching.
 template <class Graph>
-BreadthFirstOrder breadth_first_order(const Graph& graph) {
+BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<const Cost> costs) {
   const std::uint32_t n = graph.node_count();
-  BreadthFirstOrder order;
+  BreadthFirstAdjacency order;
+  std::size_t slot_count = 0;
+  bool uniform = true;
+  for (NodeId v = 0; v < n; ++v) {
+    const std::size_t degree = graph.incident_edges(v).size();
+    if (degree == 0) {
+      throw GraphError("node " + std::to_string(v) + " has no edge: no perfect matching");
+    }
+    uniform = uniform && (v == 0 || degree == slot_count / v);
+    slot_count += degree;
+  }
+  order.uniform_degree = uniform && n > 0 ? static_cast<std::uint32_t>(slot_count / n) : 0;
+  if (order.uniform_degree == 0) order.first_slot.resize(std::size_t{n} + 1);
+  order.slots.resize(slot_count);
   order.new_node.assign(n, kNoNode);
-  order.old_node.resize(n);
+  HugeVector<NodeId> old_node(n);  // by new id: the visiting order, the search's queue
   std::uint32_t visited = 0;
+  Slot* last = order.slots.data();
   for (NodeId root = 0; root < n; ++root) {
     if (order.new_node[root] != kNoNode) continue;
     order.new_node[root] = visited;
-    order.old_node[visited++] = root;
-    for (std::uint32_t head = order.new_node[root]; head < visited; ++head) {
-      const NodeId v = order.old_node[head];
+    old_node[visited++] = root;
+    for (NodeId head = order.new_node[root]; head < visited; ++head) {
+      const NodeId v = old_node[head];
+      if (order.uniform_degree == 0) order.first_slot[head] = last - order.slots.data();
+      Slot* const first = last;
       for (EdgeId e : graph.incident_edges(v)) {
         const NodeId w = graph.other_end(e, v);
-        if (order.new_node[w] != kNoNode) continue;
-        order.new_node[w] = visited;
-        order.old_node[visited++] = w;
+        if (order.new_node[w] == kNoNode) {
+          order.new_node[w] = visited;
+          old_node[visited++] = w;
+        }
+        *last++ = {2 * costs[e], e, order.new_node[w]};
+        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
+          std::swap(at[-1], *at);
       }
     }
   }
+  if (order.uniform_degree == 0) order.first_slot[n] = slot_count;
   return order;
 }
-
-/// `graph` with node v standing for order.old_node[v]; edge e keeps its id. Both must outlive it.
-template <class Graph>
-class RenumberedGraph {
- public:
-  RenumberedGraph(const Graph& graph, const BreadthFirstOrder& order)
-      : graph_(graph), order_(order) {}
-
-  std::uint32_t node_count() const { return graph_.node_count(); }
-  std::uint32_t edge_count() const { return graph_.edge_count(); }
-  std::array<NodeId, 2> endpoints(EdgeId e) const {
-    const auto [a, b] = graph_.endpoints(e);
-    return {order_.new_node[a], order_.new_node[b]};
-  }
-  NodeId other_end(EdgeId e, NodeId v) const {
-    return order_.new_node[graph_.other_end(e, order_.old_node[v])];
-  }
-  /// In the input's order at that node, which need not be by edge id.
-  auto incident_edges(NodeId v) const { return graph_.incident_edges(order_.old_node[v]); }
-
- private:
-  const Graph& graph_;
-  const BreadthFirstOrder& order_;
-};
 
 }  // namespace petersen::weighted_detail

@@ -34,11 +34,10 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
                     const MinCostOptions& options) {
   MinCostResult result;
   Stopwatch init;
-  const weighted_detail::BreadthFirstOrder order = weighted_detail::breadth_first_order(graph);
-  const weighted_detail::RenumberedGraph<Graph> renumbered(graph, order);
+  const weighted_detail::BreadthFirstAdjacency order =
+      weighted_detail::breadth_first_adjacency(graph, costs);
   HugeVector<EdgeId> mate;
-  weighted_detail::BlossomSolver<weighted_detail::RenumberedGraph<Graph>> solver(
-      renumbered, costs, mate, result.stats);
+  weighted_detail::BlossomSolver solver(order, mate, result.stats);
   if (options.greedy_start) solver.greedy_start();
   if (options.short_searches) {
     solver.short_searches();
