@@ -1,13 +1,15 @@
 // Exact minimum-cost perfect matching under issue 14's quad measure: petersen's certified solver
 // against LEMON's MaxWeightedPerfectMatching on the same integer costs, beside PS with local
 // augmentation (shape-blind, the cardinality floor), on the dual of each mesh.
-// Usage: petersen_weighted_speed [--no-lemon] [--rounds N] [mesh files...]; without files it
-// measures every shared mesh of at least 80k triangles from ../shared/meshes (when present).
-// --rounds 1 runs the solver once per mesh (for callgrind; the default is 3).
-// Columns: ours_s and ps_s are wall-time medians of the rounds, cpu_s that of the thread's CPU time
-// (cpu_min the least); xfaster = LEMON's wall time / ours, xcpu = LEMON's CPU time / ours, x_ps
-// and xcpu_ps = ours / PS in wall and CPU time. On a loaded machine the CPU ratios are the
-// steadier ones: both programs are single-threaded, and wall time adds whatever else ran.
+// Usage: petersen_weighted_speed [--no-lemon] [--rounds N] [--threads N] [mesh files...]; without
+// files it measures every shared mesh of at least 80k triangles from ../shared/meshes (when
+// present). --rounds 1 runs the solver once per mesh (for callgrind; the default is 3);
+// --threads is MinCostOptions::threads (default 0: every core, as the CLI).
+// Columns: ours_s and ps_s are wall-time medians of the rounds, cpu_s that of the process's CPU
+// time (cpu_min the least; every thread's, the short searches' helper included); xfaster =
+// LEMON's wall time / ours, xcpu = LEMON's CPU time / ours, x_ps and xcpu_ps = ours / PS in wall
+// and CPU time. LEMON and PS run on one thread. On a loaded machine the CPU ratios are the
+// steadier ones: wall time adds whatever else ran.
 // free0 is the share of nodes left free for the forest (after the greedy start and the short
 // searches), labels the forest's labels, short_lab and short_aug the short searches' labels and
 // augmentations.
@@ -41,13 +43,14 @@ double seconds_of(const std::function<void()>& run) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// This thread's CPU time: on the loaded machine, wall times of one program swing 2x between
-// runs; CPU times swing less, so A/B comparisons of the solver read this column.
+// The process's CPU time (nothing else runs in it meanwhile): on the loaded machine, wall times
+// of one program swing 2x between runs; CPU times swing less, so A/B comparisons of the solver
+// read this column.
 double cpu_seconds_of(const std::function<void()>& run) {
   timespec start, end;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &start);
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &start);
   run();
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &end);
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &end);
   return double(end.tv_sec - start.tv_sec) + 1e-9 * double(end.tv_nsec - start.tv_nsec);
 }
 
@@ -58,7 +61,8 @@ double median(std::vector<double> values) {
 
 // The machine is shared: ours and PS run `rounds` times alternately and report medians; LEMON,
 // far slower, runs once.
-void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon, int rounds) {
+void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon, int rounds,
+             std::uint32_t threads) {
   const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
   const HugeVector<double> degrees = dual_edge_quality(mesh, dual);
@@ -67,7 +71,8 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon,
   MinCostResult result;
   for (int round = 0; round < rounds; ++round) {
     ours.push_back(seconds_of([&] {
-      ours_cpu.push_back(cpu_seconds_of([&] { result = min_cost_perfect_matching(g, costs); }));
+      ours_cpu.push_back(cpu_seconds_of(
+          [&] { result = min_cost_perfect_matching(g, costs, {.threads = threads}); }));
     }));
     ps.push_back(seconds_of([&] {
       ps_cpu.push_back(cpu_seconds_of([&] {
@@ -129,6 +134,7 @@ int main(int argc, char** argv) {
   std::vector<std::string> files;
   bool with_lemon = true;
   int rounds = 3;
+  std::uint32_t threads = 0;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--no-lemon") {
@@ -139,6 +145,13 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "--rounds needs a positive count\n");
         return 2;
       }
+    } else if (arg == "--threads" && i + 1 < argc) {
+      threads = static_cast<std::uint32_t>(std::atoi(argv[++i]));
+    } else if (arg.starts_with("--")) {
+      std::fprintf(stderr,
+                   "usage: petersen_weighted_speed [--no-lemon] [--rounds N] [--threads N] "
+                   "[mesh files...]\n");
+      return 2;
     } else {
       files.push_back(arg);
     }
@@ -158,6 +171,6 @@ int main(int argc, char** argv) {
       "labels", "even_scan", "rel_scan", "short_lab", "short_aug");
   for (const std::string& file : files) {
     measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon,
-            rounds);
+            rounds, threads);
   }
 }

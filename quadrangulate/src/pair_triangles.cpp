@@ -245,7 +245,7 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
     clock.lap();
   } else {
     name = "the minimum-cost matching";
-    MinCostResult result = min_cost_perfect_matching(cubic, costs);
+    MinCostResult result = min_cost_perfect_matching(cubic, costs, {.threads = options.threads});
     stats.matching.initial_seconds += result.stats.init_seconds;
     stats.matching.unpaired_after_initial += result.stats.free_after_init;
     stats.matching.augment_seconds +=
@@ -473,7 +473,8 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
     if (quality) {
       HugeVector<Cost> local_costs;
       for (EdgeId e : sub.edge_of) local_costs.push_back(costs[e]);
-      MinCostMaximumResult cheapest = min_cost_maximum_matching(open, local_costs);
+      MinCostMaximumResult cheapest =
+          min_cost_maximum_matching(open, local_costs, {.threads = options.threads});
       stats.matching.augment_seconds += clock.lap();
       if (CertificateCheck check = verify_min_cost_maximum_matching(
               open.node_count(), open.edge_ends(), local_costs, cheapest.matching,

@@ -132,7 +132,8 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   const std::vector<Cost> costs = random_costs(edges.size(), -100, 100);
   const CsrGraph g = CsrGraph::from_edges(n, edges);
   const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>(),
-                               .short_searches = *rc::gen::arbitrary<bool>()};
+                               .short_searches = *rc::gen::arbitrary<bool>(),
+                               .threads = *rc::gen::inRange<std::uint32_t>(1, 3)};
   const auto lemon = testing::lemon_min_cost_perfect(n, edges, costs);
   if (!lemon) {
     RC_ASSERT_THROWS_AS(min_cost_perfect_matching(g, costs, options), GraphError);
@@ -143,9 +144,25 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   const CertificateCheck check = verify_min_cost_perfect_matching(n, ends_of(g), costs, r.matching,
                                                                   r.total_cost, r.certificate);
   RC_ASSERT(check.ok());
-  // The short searches' work is capped: 16 labels a node, and one search's budget beyond.
-  RC_ASSERT(r.stats.short_labels <= std::uint64_t{16} * n + 1024);
+  // The short searches' work is capped: 16 labels a node, and one search's budget beyond in
+  // each of their three rounds (the graph's two halves, then the whole).
+  RC_ASSERT(r.stats.short_labels <= std::uint64_t{16} * n + 3 * 1024);
   RC_TAG(r.certificate.set_count() > 0 ? "with odd sets" : "no odd sets");
+}
+
+// The short searches run in two halves of the graph on separate threads; the halves share no
+// node, so the threads change nothing: the same matching, duals and counters.
+RC_GTEST_PROP(MinCostPerfect, ThreadsChangeNothing, ()) {
+  const CubicGraph g = any_cubic_bridgeless();
+  const std::vector<Cost> costs = random_costs(g.edge_count(), 0, 1000);
+  const MinCostResult one = min_cost_perfect_matching(g, costs, {.threads = 1});
+  const MinCostResult two = min_cost_perfect_matching(g, costs, {.threads = 2});
+  RC_ASSERT(one.matching.mate_edge == two.matching.mate_edge);
+  RC_ASSERT(one.certificate.node_dual == two.certificate.node_dual);
+  RC_ASSERT(one.certificate.set_dual == two.certificate.set_dual);
+  RC_ASSERT(one.stats.short_labels == two.stats.short_labels);
+  RC_ASSERT(one.stats.nodes_labelled == two.stats.nodes_labelled);
+  RC_TAG(one.stats.short_augmentations > 0 ? "short searches augmented" : "none augmented");
 }
 
 RC_GTEST_PROP(MinCostMaximum, TinyGraphsMatchBruteForce, ()) {
@@ -258,11 +275,15 @@ TEST(MinCostPerfect, SharedMeshesUnderTheQuadMeasureEqualLemonAndAreCertified) {
     const TriangleMesh triangles = read_triangle_mesh(*dir + "/" + mesh.file);
     const Dual dual = build_dual(triangles);
     const HugeVector<Cost> costs = scale_costs(dual_edge_quality(triangles, dual));
-    const MinCostResult r = min_cost_perfect_matching(dual.graph, costs);
+    // Two threads (the short searches' halves run at once on graphs of this size), and the same
+    // matching on one.
+    const MinCostResult r = min_cost_perfect_matching(dual.graph, costs, {.threads = 2});
     const CertificateCheck check =
         verify_min_cost_perfect_matching(dual.graph.node_count(), dual.graph.edge_ends(), costs,
                                          r.matching, r.total_cost, r.certificate);
     EXPECT_TRUE(check.ok()) << check.problem;
+    EXPECT_EQ(min_cost_perfect_matching(dual.graph, costs, {.threads = 1}).matching.mate_edge,
+              r.matching.mate_edge);
     const std::vector<Cost> lemon_costs(costs.begin(), costs.end());
     EXPECT_EQ(testing::lemon_min_cost_perfect(dual.graph.node_count(), edge_list(dual.graph),
                                               lemon_costs),

@@ -37,8 +37,10 @@
 // instead, until the tree is released.
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
+#include <iterator>
 #include <span>
 #include <string>
 #include <utility>
@@ -46,6 +48,7 @@
 
 #include "breadth_first_order.hpp"
 #include "chain_pool.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "radix_queue.hpp"
@@ -147,30 +150,41 @@ class BlossomSolver {
   /// succeeds on a later pass, once the searches around have moved the duals. Budgets growing
   /// 4x per pass left the forest nests of blossoms it peeled slowly (rocker-arm-sub3: 1.7x the
   /// CPU time; see find_nested).
-  void short_searches() {
+  ///
+  /// The searches run in two parts of the breadth-first numbering, [0, n/2) and [n/2, n), on
+  /// `threads` threads (0: every core): a search stops, as at its budget, when it would read a
+  /// node of the other part, and hands its root to a last round over the whole graph, after
+  /// both parts. The parts share no node, so the result does not depend on the threads.
+  void short_searches(std::uint32_t threads) {
     for (NodeId v = 0; v < n_; ++v) {
       rec_[v].mate = {mate_[v], kNone};
       for (const Slot& slot : slots_of(v)) {
         if (slot.edge == mate_[v]) rec_[v].mate.node = slot.other;
       }
     }
-    std::vector<NodeId> free_nodes;
+    const NodeId half = n_ / 2;
+    std::array<ShortPart, 2> parts = {ShortPart{.lo = 0, .hi = half, .stamp = stamp_},
+                                      ShortPart{.lo = half, .hi = n_, .stamp = stamp_}};
     for (NodeId v = 0; v < n_; ++v) {
-      if (rec_[v].mate.edge == kNoEdge) free_nodes.push_back(v);
+      if (rec_[v].mate.edge == kNoEdge) parts[v < half ? 0 : 1].roots.push_back(v);
     }
-    // At most 16 labels a node in all (and one search's budget beyond): where searches keep
-    // running out of budget (free nodes far from any partner, which the shared meshes' duals do
-    // not have: 4.1-7.4 labels a node there), a free node could cost up to 2,047 labels before
-    // the forest takes over.
-    const std::uint64_t most = stats_.short_labels + std::uint64_t{16} * n_;
-    for (std::uint32_t budget = 16; budget <= 1024 && !free_nodes.empty(); budget *= 2) {
-      std::size_t left = 0;
-      for (NodeId r : free_nodes) {
-        if (stats_.short_labels >= most) break;      // the forest takes the rest
-        if (rec_[r].mate.edge != kNoEdge) continue;  // matched by an earlier search
-        if (short_search(r, budget)) free_nodes[left++] = r;
-      }
-      free_nodes.resize(left);
+    // At most 16 labels a node in all (and one search's budget beyond, in each round): where
+    // searches keep running out of budget (free nodes far from any partner, which the shared
+    // meshes' duals do not have: 4.1-7.4 labels a node there), a free node could cost up to
+    // 2,047 labels before the forest takes over.
+    run_parallel(threads, 2, [&](std::uint32_t i) {
+      short_passes(parts[i], std::uint64_t{16} * (parts[i].hi - parts[i].lo));
+    });
+    ShortPart whole{.lo = 0, .hi = n_, .stamp = std::max(parts[0].stamp, parts[1].stamp)};
+    std::merge(parts[0].handed_over.begin(), parts[0].handed_over.end(),
+               parts[1].handed_over.begin(), parts[1].handed_over.end(),
+               std::back_inserter(whole.roots));
+    const std::uint64_t used = parts[0].labels + parts[1].labels;
+    short_passes(whole, std::uint64_t{16} * n_ - std::min(used, std::uint64_t{16} * n_));
+    stamp_ = whole.stamp;
+    for (const ShortPart* part : {&parts[0], &parts[1], &whole}) {
+      stats_.short_labels += part->labels;
+      stats_.short_augmentations += part->augmentations;
     }
     for (NodeId v = 0; v < n_; ++v) mate_[v] = rec_[v].mate.edge;
   }
@@ -181,7 +195,7 @@ class BlossomSolver {
   [[gnu::noinline]] void run() {
     // Every root's dual is made even (lowering a free node's dual keeps every constraint), so
     // all labelled nodes share one parity and even-even slacks stay even (see the top).
-    std::vector<NodeId> roots;
+    std::vector<NodeId> roots{};
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
       roots.push_back(v);
@@ -483,51 +497,95 @@ class BlossomSolver {
     NodeId u, w;  // u even
     bool operator>(const ShortEvent& other) const { return key > other.key; }
   };
+  // The short searches of one part of the nodes, [lo, hi): its roots (free nodes, in id order),
+  // its own search stamp, heap and labels. Only its searches read or write its nodes' records,
+  // marks and links.
+  struct ShortPart {
+    NodeId lo = 0, hi = 0;
+    std::uint32_t stamp = 0;            // mark_[v] == stamp: v is labelled in the current search
+    std::vector<NodeId> roots{};        // free nodes, in id order
+    std::vector<NodeId> handed_over{};  // roots whose search met a node of another part
+    std::vector<ShortEvent> heap{};
+    std::vector<NodeId> labelled{};
+    std::uint64_t labels = 0, augmentations = 0;
+  };
+  enum class ShortEnd : std::uint8_t { done, budget, other_part };
+
+  // Passes over part.roots with budgets 16, 32, .., 1024 (see short_searches), until the part's
+  // searches have given `most` labels.
+  void short_passes(ShortPart& part, std::uint64_t most) {
+    for (std::uint32_t budget = 16; budget <= 1024 && !part.roots.empty(); budget *= 2) {
+      std::size_t left = 0;
+      for (NodeId r : part.roots) {
+        if (part.labels >= most) break;              // the forest takes the rest
+        if (rec_[r].mate.edge != kNoEdge) continue;  // matched by an earlier search
+        switch (short_search(part, r, budget)) {
+          case ShortEnd::done:
+            break;
+          case ShortEnd::budget:
+            part.roots[left++] = r;
+            break;
+          case ShortEnd::other_part:
+            part.handed_over.push_back(r);
+            break;
+        }
+      }
+      part.roots.resize(left);
+    }
+  }
 
   // One primal-dual search from free node `root` alone, on trivial blossoms only (it runs
   // before the forest, when there are no others): even nodes gain and odd nodes lose the
   // search's clock eps, the next event from a small binary heap. It augments at the first tight
-  // edge to another free node; it stops without augmenting at a tight edge between two even
-  // nodes (a blossom) or once `budget` nodes are labelled; true if it stopped at the budget.
-  // Stopping anywhere leaves the duals feasible and every matched and tree edge tight (every
-  // constraint that eps tightens has its entry in the heap, and eps never passes the least), so the
-  // forest starts from wherever the searches stopped.
-  bool short_search(NodeId root, std::uint32_t budget) {
-    ++stamp_;  // mark_[v] == stamp_: v is labelled in this search
-    short_heap_.clear();
-    short_labelled_.clear();
+  // edge to another free node (done); it stops without augmenting at a tight edge between two
+  // even nodes (a blossom: done), once `budget` nodes are labelled (budget), or when it would
+  // read a node outside the part (other_part). Stopping anywhere leaves the duals feasible and
+  // every matched and tree edge tight (every constraint that eps tightens has its entry in the
+  // heap, and eps never passes the least; a node just labelled even stops the search before
+  // eps moves if one of its edges leaves the part), so the forest starts from wherever the
+  // searches stopped.
+  ShortEnd short_search(ShortPart& part, NodeId root, std::uint32_t budget) {
+    const std::uint32_t stamp = ++part.stamp;
+    part.heap.clear();
+    part.labelled.clear();
     std::int64_t eps = 0;
-    bool stopped_at_budget = false;
-    auto in_tree = [&](NodeId v) { return mark_[v] == stamp_; };
+    ShortEnd end = ShortEnd::done;
+    auto in_tree = [&](NodeId v) { return mark_[v] == stamp; };
     // As in the forest, a labelled node stores y - eps (even) or y + eps (odd) from its label on.
     auto dual = [&](NodeId v) {
       if (!in_tree(v)) return rec_[v].y;
       return rec_[v].label == kEven ? rec_[v].y + eps : rec_[v].y - eps;
     };
     auto label = [&](NodeId v, std::uint8_t l) {
-      mark_[v] = stamp_;
+      mark_[v] = stamp;
       rec_[v].label = l;
       rec_[v].y += l == kEven ? -eps : eps;
-      short_labelled_.push_back(v);
-      ++stats_.short_labels;
+      part.labelled.push_back(v);
+      ++part.labels;
     };
+    // False, pushing nothing, when one of u's edges leaves the part.
     auto scan = [&](NodeId u) {
+      const std::span<const Slot> slots = slots_of(u);
+      for (const Slot& slot : slots) {
+        if (slot.other < part.lo || slot.other >= part.hi) return false;
+      }
       const std::int64_t yu = dual(u);
-      for (const Slot& slot : slots_of(u)) {
+      for (const Slot& slot : slots) {
         const NodeId w = slot.other;
         const bool labelled = in_tree(w);
         if (w == u || (labelled && rec_[w].label == kOdd)) continue;
         const std::int64_t s = slot.cost2 - yu - dual(w);
-        short_heap_.push_back({eps + (labelled ? s / 2 : s), slot.cost2, slot.edge, u, w});
-        std::push_heap(short_heap_.begin(), short_heap_.end(), std::greater<>());
+        part.heap.push_back({eps + (labelled ? s / 2 : s), slot.cost2, slot.edge, u, w});
+        std::push_heap(part.heap.begin(), part.heap.end(), std::greater<>());
       }
+      return true;
     };
     label(root, kEven);
-    scan(root);
-    while (!short_heap_.empty()) {
-      std::pop_heap(short_heap_.begin(), short_heap_.end(), std::greater<>());
-      const ShortEvent event = short_heap_.back();
-      short_heap_.pop_back();
+    if (!scan(root)) end = ShortEnd::other_part;
+    while (end == ShortEnd::done && !part.heap.empty()) {
+      std::pop_heap(part.heap.begin(), part.heap.end(), std::greater<>());
+      const ShortEvent event = part.heap.back();
+      part.heap.pop_back();
       eps = event.key;
       const NodeId u = event.u, w = event.w;
       if (in_tree(w)) {
@@ -548,25 +606,30 @@ class BlossomSolver {
           across = old.node;
           at = link_[old.node].from;
         }
-        ++stats_.short_augmentations;
+        ++part.augmentations;
         break;
       }
-      if (short_labelled_.size() >= budget) {
-        stopped_at_budget = true;
+      if (part.labelled.size() >= budget) {
+        end = ShortEnd::budget;
         break;
       }
-      // w is matched, and so is its mate z, unlabelled (labels come in matched pairs).
+      // w is matched, and so is its mate z, unlabelled (labels come in matched pairs). w is in
+      // the part (u's scan found every end of u's edges inside), z need not be.
       const NodeId z = rec_[w].mate.node;
+      if (z < part.lo || z >= part.hi) {
+        end = ShortEnd::other_part;
+        break;
+      }
       link_[w] = {u, w, event.edge};
       label(w, kOdd);
       label(z, kEven);
-      scan(z);
+      if (!scan(z)) end = ShortEnd::other_part;
     }
-    for (NodeId v : short_labelled_) {
+    for (NodeId v : part.labelled) {
       rec_[v].y = dual(v);
       rec_[v].label = kUnlabelled;
     }
-    return stopped_at_budget;
+    return end;
   }
 
   // ---- the forest
@@ -926,8 +989,6 @@ class BlossomSolver {
   mutable std::vector<std::uint32_t> leaf_stack_;
   std::vector<std::pair<std::uint32_t, NodeId>> rebase_stack_;
   std::vector<std::uint32_t> rebase_chain_;
-  std::vector<ShortEvent> short_heap_;
-  std::vector<NodeId> short_labelled_;
 };
 
 }  // namespace petersen::weighted_detail

@@ -40,7 +40,7 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
   weighted_detail::BlossomSolver solver(order, mate, result.stats);
   if (options.greedy_start) solver.greedy_start();
   if (options.short_searches) {
-    solver.short_searches();
+    solver.short_searches(options.threads);
   } else if (options.greedy_start) {
     solver.augment_tight();
   }

@@ -62,6 +62,10 @@ struct MinCostOptions {
   /// cost) and stopping at a blossom or the budget. Fewer trees for the forest, whose labels
   /// cost several times more each.
   bool short_searches = true;
+  /// Threads for the short searches, which run in two parts of the graph at once; 0: every
+  /// core. Threads are started for the call and joined before it returns. The result does not
+  /// depend on it.
+  std::uint32_t threads = 1;
 };
 
 struct MinCostStats {

@@ -79,8 +79,9 @@ struct QuadOptions {
   /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
   PeerMatcher peer = nullptr;
   /// Threads for the phases that split into independent parts (grouping the halfedges and
-  /// classifying the edges, the quads' measure); 0: every core. Threads are started for the call
-  /// and joined before it returns. The result does not depend on it.
+  /// classifying the edges, the quads' measure, the minimum-cost matching's short searches); 0:
+  /// every core. Threads are started for the call and joined before it returns. The result does
+  /// not depend on it.
   std::uint32_t threads = 1;
   /// Whether QuadResult::sources is filled. A caller that does not read them (the command-line
   /// tool) turns this off: lrs then need not find each quad's triangles among the input's, and the
