@@ -12,6 +12,7 @@ the face, edge or node) raised as ``ValueError``.
 
 from __future__ import annotations
 
+import numbers
 import warnings
 from dataclasses import dataclass, field
 from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
@@ -144,6 +145,7 @@ def quadrangulate(
     max_corner_deviation: Optional[float] = None,
     attributes: Optional[Attributes] = None,
     cross: Sequence[str] = (),
+    threads: int = 0,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -160,8 +162,11 @@ def quadrangulate(
     (e, 2) array of vertex pairs, names edges no quad may remove. ``max_corner_deviation``
     (degrees) allows only pairs whose quad costs at most that (``quad_quality``); the others are
     cuts of cause "shape" and their triangles may stay (the maximum pairing of what is allowed,
-    the cheapest with ``objective="quality"``). Same options, same seed: same
-    answer as ``petersen quad``. The GIL is released while the library works.
+    the cheapest with ``objective="quality"``). ``threads`` runs the phases that split into
+    independent parts (grouping the edges, measuring the quads, the quality objective's short
+    searches) on that many threads, 0 (the default, as ``petersen quad``) on every core; the
+    answer does not depend on it. Same options, same seed: same answer as ``petersen quad``. The
+    GIL is released while the library works.
 
     ``V`` may be a ``Mesh`` (``F`` then omitted): its faces and attributes are used. With
     ``attributes`` (``Attributes``, as ``read_mesh`` gives them) no quad crosses a texture or
@@ -176,11 +181,15 @@ def quadrangulate(
     V, F, attributes = _mesh_parts(V, F, attributes, "quadrangulate")
     if isinstance(cross, str):
         raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an integer, not {threads!r}")
+    if not 0 <= threads < 2**32:
+        raise ValueError(f"threads must be 0 (every core) or a count of threads, not {threads}")
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         None if sharp_angle is None else float(sharp_angle), keep_edges,
         None if max_corner_deviation is None else float(max_corner_deviation), attributes,
-        [str(c) for c in cross])
+        [str(c) for c in cross], int(threads))
     return QuadResult(**r)
 
 

@@ -19,6 +19,7 @@ def quadrangulate(
     max_corner_deviation: Optional[float],
     attributes: Optional[Dict[str, Any]],
     cross: List[str],
+    threads: int,
 ) -> Dict[str, Any]: ...
 def read_mesh(path: str) -> Tuple[np.ndarray, Any, Dict[str, Any], List[str]]: ...
 def write_mesh(

@@ -98,7 +98,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
                           const std::string& augment, std::uint64_t seed, bool all_quad,
                           const std::string& objective, std::optional<double> sharp_angle,
                           const py::handle& keep_edges, std::optional<double> max_corner_deviation,
-                          const py::handle& attributes, const py::handle& cross) {
+                          const py::handle& attributes, const py::handle& cross,
+                          std::uint32_t threads) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -122,6 +123,7 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.max_corner_deviation = max_corner_deviation;
   options.cuts.user_edges = kept_edges;
   options.cross = causes_from(cross);
+  options.threads = threads;
   const PolygonMesh mesh = mesh_from(V, F, attributes);
   QuadResult result;
   {
@@ -262,7 +264,7 @@ PYBIND11_MODULE(_petersen, m) {
   m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
         py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"),
-        py::arg("attributes"), py::arg("cross"));
+        py::arg("attributes"), py::arg("cross"), py::arg("threads"));
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
         py::arg("attributes"));

@@ -105,6 +105,24 @@ def test_outputs_are_owned_arrays():
         assert isinstance(a, np.ndarray) and a.flags.owndata and a.flags.writeable
 
 
+def test_threads_change_nothing():
+    V, F = torus(40, 30)
+    V = V + np.random.default_rng(3).normal(scale=0.05, size=V.shape)
+    for objective in ("pairs", "quality"):
+        one = petersen.quadrangulate(V, F, objective=objective, threads=1)
+        two = petersen.quadrangulate(V, F, objective=objective, threads=2)
+        every = petersen.quadrangulate(V, F, objective=objective)  # threads=0: every core
+        for r in (two, every):
+            assert np.array_equal(one.quads, r.quads) and np.array_equal(one.sources, r.sources)
+            assert one.stats["pairs"] == r.stats["pairs"]
+    numpy_count = petersen.quadrangulate(V, F, objective="quality", threads=np.int64(2))
+    assert np.array_equal(numpy_count.quads, one.quads)
+    with pytest.raises(ValueError, match="threads"):
+        petersen.quadrangulate(V, F, threads=-1)
+    with pytest.raises(TypeError, match="threads"):
+        petersen.quadrangulate(V, F, threads=1.5)
+
+
 def test_same_seed_same_answer_and_seeds_matter():
     V, F = torus(30, 20)
     a = petersen.quadrangulate(V, F, algorithm="sg", seed=5)
