@@ -1,6 +1,8 @@
 #include "petersen/graph_io/read_graph.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 #include <utility>
 
 #include "file_bytes.hpp"
@@ -36,6 +38,39 @@ NodeId parse_id(std::string_view token, const At& at, std::string_view what) {
   return static_cast<NodeId>(value);
 }
 
+// An edge's cost: a whole integer within kMaxFileCost.
+std::int64_t parse_cost(std::string_view token, const At& at) {
+  std::int64_t value = 0;
+  if (!text::parse_integer(token, value)) {
+    at.fail("bad cost " + text::Located::quote(token) + " (an integer)");
+  }
+  if (value > kMaxFileCost || value < -kMaxFileCost) {
+    at.fail("cost " + std::to_string(value) + " out of range (at most 2^40 in absolute value)");
+  }
+  return value;
+}
+
+// Whether every edge line gives a cost or none does: the first edge line decides (on line
+// `first_line`), a later one that differs is named.
+struct CostPresence {
+  std::optional<bool> with_cost;
+  std::size_t first_line = 0;
+
+  void check(bool has_cost, const At& at) {
+    if (!with_cost) {
+      with_cost = has_cost;
+      first_line = at.line;
+    } else if (*with_cost != has_cost) {
+      differs(has_cost, first_line, at);
+    }
+  }
+  [[noreturn]] static void differs(bool has_cost, std::size_t other_line, const At& at) {
+    at.fail(std::string(has_cost ? "a cost on this edge line, none"
+                                 : "no cost on this edge line, one") +
+            " on line " + std::to_string(other_line) + " (a cost on every edge line or on none)");
+  }
+};
+
 void check_node_count(std::uint64_t nodes, std::uint64_t edges, const At& at) {
   if (nodes > 2 * edges + kMostIsolatedNodes) {
     at.fail(std::to_string(nodes) + " nodes for " + std::to_string(edges) +
@@ -51,6 +86,7 @@ GraphFile parse_dimacs(std::string_view bytes, const std::string& source) {
   At header_at{source};
   bool have_header = false;
   std::uint64_t declared_edges = 0;
+  CostPresence presence;
   std::string_view line, token;
   while (lines.next(line)) {
     at.line = lines.line;
@@ -90,6 +126,9 @@ GraphFile parse_dimacs(std::string_view bytes, const std::string& source) {
         ends[k] = id - 1;
       }
       graph.edges.push_back(ends);
+      const bool has_cost = tokens.next(token);
+      presence.check(has_cost, at);
+      if (has_cost) graph.costs.push_back(parse_cost(token, at));
     } else {
       at.fail("unknown line type " + text::Located::quote(token) + " (expected c, p or e)");
     }
@@ -112,7 +151,10 @@ GraphFile parse_edge_list(std::string_view bytes, const std::string& source) {
   At at{source};
   std::vector<std::size_t> line_of;  // of each pair, for the errors found after the first pass
   std::string_view line, token;
-  // Every data line is a pair; whether the first is a header is known once all are counted.
+  // Every data line is a pair, with or without a cost; whether the first is a header is known
+  // once all are counted. A header has no cost; with costs, every other line has one.
+  CostPresence presence;
+  bool first_has_cost = false;
   while (lines.next(line)) {
     at.line = lines.line;
     text::Tokens tokens{text::strip_comment(line)};
@@ -121,9 +163,22 @@ GraphFile parse_edge_list(std::string_view bytes, const std::string& source) {
     if (!tokens.next(second)) at.fail("expected two node ids 'U V'");
     graph.edges.push_back({parse_id(token, at, "node id"), parse_id(second, at, "node id")});
     line_of.push_back(lines.line);
+    const bool has_cost = tokens.next(token);
+    if (graph.edges.size() == 1) {
+      first_has_cost = has_cost;
+    } else {
+      presence.check(has_cost, at);
+    }
+    if (has_cost) graph.costs.push_back(parse_cost(token, at));
     if (tokens.next(token)) at.fail("unexpected " + text::Located::quote(token));
   }
-  const bool header = !graph.edges.empty() && graph.edges[0][1] == graph.edges.size() - 1;
+  const bool header =
+      !graph.edges.empty() && !first_has_cost && graph.edges[0][1] == graph.edges.size() - 1;
+  // Without a header, the first line is an edge like the others.
+  if (!header && presence.with_cost && first_has_cost != *presence.with_cost) {
+    at.line = line_of[0];
+    CostPresence::differs(first_has_cost, line_of[1], at);
+  }
   if (header) {
     at.line = line_of[0];
     graph.node_count = graph.edges[0][0];
