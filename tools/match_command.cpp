@@ -1,16 +1,22 @@
 #include "match_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <span>
 #include <stdexcept>
+#include <string>
 
 #include "file_bytes.hpp"
 #include "json_text.hpp"
 #include "petersen/graph_io/read_graph.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
 
 namespace petersen::cli {
 
@@ -20,13 +26,13 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// The matched edges as "u v" lines in the input's ids, in the order of the input's edges.
-std::string matched_edge_lines(const GraphFile& graph, const AnyGraphMatching& matched) {
+// The matched edges as "u v" lines in the input's ids, at their first ends in node order.
+std::string matched_edge_lines(const GraphFile& graph, std::span<const EdgeId> mate_edge) {
   std::string text;
-  text.reserve(std::size_t{matched.size} * 16);
+  text.reserve(std::size_t{graph.node_count} * 8);
   char line[32];
   for (NodeId v = 0; v < graph.node_count; ++v) {
-    const EdgeId e = matched.mate_edge[v];
+    const EdgeId e = mate_edge[v];
     if (e == kNoEdge || graph.edges[e][0] != v) continue;  // once per edge, at its first end
     const int n = std::snprintf(line, sizeof line, "%" PRIu64 " %" PRIu64 "\n",
                                 std::uint64_t{graph.edges[e][0]} + graph.first_id,
@@ -36,14 +42,53 @@ std::string matched_edge_lines(const GraphFile& graph, const AnyGraphMatching& m
   return text;
 }
 
+// The minimum-cost matching among the maximum ones (--objective cost), its certificate checked.
+struct CheapestMatching {
+  HugeVector<EdgeId> mate_edge;
+  Cost total_cost = 0;
+  double seconds = 0;
+};
+
 struct MatchReport {
   const MatchArgs& args;
   GraphFormat format;
   const GraphFile& graph;
   const AnyGraphMatching& matched;
+  const std::optional<CheapestMatching>& cheapest;
   double read_seconds, match_seconds, write_seconds, total_seconds;
   bool written;
 };
+
+// `perfect`: whether the graph has a perfect matching (the cardinality matching found one).
+// The perfect solver when there is one; otherwise the maximum one, on a graph twice the size.
+// Either answer's certificate is checked by the verifier before it is used.
+CheapestMatching cheapest_matching(const GraphFile& file, bool perfect) {
+  const auto start = std::chrono::steady_clock::now();
+  const CsrGraph graph = CsrGraph::from_edges(file.node_count, file.edges);
+  CheapestMatching cheapest;
+  CertificateCheck check;
+  if (perfect) {
+    MinCostResult result = min_cost_perfect_matching(graph, file.costs, {.threads = 0});
+    check =
+        verify_min_cost_perfect_matching(graph.node_count(), graph.edge_ends(), file.costs,
+                                         result.matching, result.total_cost, result.certificate);
+    cheapest.mate_edge = std::move(result.matching.mate_edge);
+    cheapest.total_cost = result.total_cost;
+  } else {
+    MinCostMaximumResult result = min_cost_maximum_matching(graph, file.costs, {.threads = 0});
+    check = verify_min_cost_maximum_matching(graph.node_count(), graph.edge_ends(), file.costs,
+                                             result.matching, result.total_cost,
+                                             result.unmatched_cost, result.certificate);
+    cheapest.mate_edge = std::move(result.matching.mate_edge);
+    cheapest.total_cost = result.total_cost;
+  }
+  if (!check.ok()) {
+    throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
+                           check.problem);
+  }
+  cheapest.seconds = seconds_since(start);
+  return cheapest;
+}
 
 void write_stats_json(const MatchReport& r) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(r.args.stats_json.c_str(), "w"),
@@ -54,9 +99,15 @@ void write_stats_json(const MatchReport& r) {
   std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"format\": %s,\n",
                json_string(r.args.input).c_str(), json_string(r.args.output).c_str(),
                json_string(std::string(to_string(r.format))).c_str());
-  std::fprintf(out, "  \"algorithm\": %s,\n  \"augment\": %s,\n",
+  std::fprintf(out, "  \"algorithm\": %s,\n  \"augment\": %s,\n  \"objective\": %s,\n",
                json_string(r.matched.cubic_bridgeless ? r.args.algorithm : "augment").c_str(),
-               json_string(r.args.augment).c_str());
+               json_string(r.args.augment).c_str(), json_string(r.args.objective).c_str());
+  if (r.cheapest) {
+    std::fprintf(out,
+                 "  \"total_cost\": %" PRId64
+                 ",\n  \"optimality_certified\": true,\n  \"min_cost_seconds\": %.6f,\n",
+                 r.cheapest->total_cost, r.cheapest->seconds);
+  }
   std::fprintf(out,
                "  \"nodes\": %" PRIu32
                ",\n  \"edges\": %zu,\n  \"cubic_bridgeless\": %s,\n"
@@ -90,7 +141,7 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
   cmd->add_option("IN", args.input,
                   "graph: DIMACS (.dimacs, .col: 'p edge N M', 'e U V', 1-based) or an edge "
                   "list (.txt, .edges: 'U V' per line, 0-based, optional 'N M' first line), "
-                  "optionally .gz")
+                  "optionally .gz; a third number C on every edge line is its cost")
       ->required();
   cmd->add_option("OUT", args.output,
                   "matched edges to write, one 'U V' line each, in the input's ids")
@@ -98,6 +149,11 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
   cmd->add_option("--format", args.format, "dimacs or edges (default: from IN's extension)");
   cmd->add_option("--algorithm", args.algorithm,
                   "for a cubic bridgeless graph: sg, ps, ds, gw, frink or lemon")
+      ->capture_default_str();
+  cmd->add_option("--objective", args.objective,
+                  "size: a maximum matching (perfect when there is one); cost: the one of least "
+                  "total cost among those, certified optimal, from the costs the file gives "
+                  "('e U V C', 'U V C')")
       ->capture_default_str();
   cmd->add_option("--augment", args.augment, "augmenting-path variant: local or faithful")
       ->capture_default_str();
@@ -124,8 +180,17 @@ int run_match(const MatchArgs& args) {
   }
   const std::optional<Augment> augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
+  if (args.objective != "size" && args.objective != "cost") {
+    throw CLI::ValidationError("--objective",
+                               "unknown objective " + args.objective + " (size or cost)");
+  }
+  const bool by_cost = args.objective == "cost";
 
   const GraphFile graph = read_graph(args.input, format);
+  if (by_cost && graph.costs.size() != graph.edges.size()) {
+    throw GraphError(args.input +
+                     ": --objective cost needs a cost on every edge line ('e U V C' or 'U V C')");
+  }
   const double read_seconds = seconds_since(start);
   auto clock = std::chrono::steady_clock::now();
   // match_any_graph verifies every answer (the perfect one, or the maximum one by its
@@ -135,10 +200,24 @@ int run_match(const MatchArgs& args) {
                                                     .augment = *augment,
                                                     .seed = args.seed,
                                                     .peer = &lemon_peer::maximum_matching});
+  // The size's answer tells the cost's which solver to run; the cost's must then be as large.
+  std::optional<CheapestMatching> cheapest;
+  if (by_cost && (matched.perfect || !args.require_perfect)) {
+    cheapest = cheapest_matching(graph, matched.perfect);
+    const auto size = static_cast<std::uint32_t>(
+        std::count_if(cheapest->mate_edge.begin(), cheapest->mate_edge.end(),
+                      [](EdgeId e) { return e != kNoEdge; }) /
+        2);
+    if (size != matched.size) {
+      throw std::logic_error("internal error: the minimum-cost matching has " +
+                             std::to_string(size) + " edges, the maximum " +
+                             std::to_string(matched.size));
+    }
+  }
   const double match_seconds = seconds_since(clock);
   const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{matched.size};
 
-  if (!matched.cubic_bridgeless) {
+  if (!matched.cubic_bridgeless && !by_cost) {
     std::fprintf(stderr,
                  "petersen: note: %s is not cubic and bridgeless (%s): a maximum matching "
                  "instead, %" PRIu32 " edges, %" PRIu64 " nodes unmatched\n",
@@ -146,7 +225,10 @@ int run_match(const MatchArgs& args) {
   }
   const bool write = matched.perfect || !args.require_perfect;
   clock = std::chrono::steady_clock::now();
-  if (write) write_file_bytes(args.output, matched_edge_lines(graph, matched));
+  if (write) {
+    write_file_bytes(args.output, cheapest ? matched_edge_lines(graph, cheapest->mate_edge)
+                                           : matched_edge_lines(graph, matched.mate_edge));
+  }
   const double write_seconds = seconds_since(clock);
   const double total_seconds = seconds_since(start);
 
@@ -154,15 +236,21 @@ int run_match(const MatchArgs& args) {
               std::string(to_string(format ? *format : graph_format_of(args.input))).c_str(),
               graph.node_count, graph.edges.size());
   std::printf("matching    %s: %s, %" PRIu32 " edges, %" PRIu64 " nodes unmatched (%.4f s)\n",
-              matched.cubic_bridgeless ? args.algorithm.c_str() : "augmenting paths",
+              cheapest                   ? "min-cost"
+              : matched.cubic_bridgeless ? args.algorithm.c_str()
+                                         : "augmenting paths",
               matched.perfect ? "perfect" : "maximum", matched.size, unmatched, match_seconds);
+  if (cheapest) {
+    std::printf("cost        %" PRId64 " (minimum certified, %.4f s)\n", cheapest->total_cost,
+                cheapest->seconds);
+  }
   if (write) {
     std::printf("written     %s (%.4f s)\n", args.output.c_str(), write_seconds);
   }
   std::printf("total       %.4f s\n", total_seconds);
   if (!args.stats_json.empty()) {
     write_stats_json({args, format ? *format : graph_format_of(args.input), graph, matched,
-                      read_seconds, match_seconds, write_seconds, total_seconds, write});
+                      cheapest, read_seconds, match_seconds, write_seconds, total_seconds, write});
   }
   if (!write) {
     std::fprintf(stderr, "petersen: %s has no perfect matching; nothing written to %s\n",

@@ -8,7 +8,8 @@
 namespace petersen::cli {
 
 struct MatchArgs {
-  std::string input, output, format, algorithm = "ps", augment = "local", stats_json;
+  std::string input, output, format, algorithm = "ps", augment = "local", objective = "size",
+                                     stats_json;
   std::uint64_t seed = 1;
   bool require_perfect = false;
 };

@@ -5,10 +5,14 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <optional>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -141,6 +145,83 @@ TEST_F(MatchCommand, ANonCubicGraphGetsAMaximumMatchingAndANote) {
   write(path("path.txt"), "0 1\n1 2\n2 3\n");
   ASSERT_EQ(run(path("path.txt") + " " + path("p.txt") + " --require-perfect"), 0) << err_;
   EXPECT_EQ(read_back(read(path("p.txt")), 4, {{0, 1}, {1, 2}, {2, 3}}, 0), 2);
+}
+
+// The cost of the matching in `output` ("u v" lines, 0-based): each pair at its cheapest edge
+// between them (a cheapest matching takes that one of parallel edges).
+long long cost_of(const std::string& output, const testing::EdgeList& edges,
+                  const std::vector<std::int64_t>& costs) {
+  std::map<std::pair<long long, long long>, std::int64_t> cheapest;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const std::pair<long long, long long> key{std::min(edges[e][0], edges[e][1]),
+                                              std::max(edges[e][0], edges[e][1])};
+    const auto [at, inserted] = cheapest.emplace(key, costs[e]);
+    if (!inserted) at->second = std::min(at->second, costs[e]);
+  }
+  std::istringstream in(output);
+  long long u = 0, v = 0, total = 0;
+  while (in >> u >> v) total += cheapest.at({std::min(u, v), std::max(u, v)});
+  return total;
+}
+
+TEST_F(MatchCommand, CostsGiveTheCheapestPerfectMatchingAsLemonFindsIt) {
+  const std::uint32_t n = 2000;
+  const testing::EdgeList edges = testing::edge_list(random_cubic_bridgeless(n, 5));
+  std::mt19937_64 random(7);
+  std::vector<std::int64_t> costs;
+  std::string text = "p edge " + std::to_string(n) + " " + std::to_string(edges.size()) + "\n";
+  for (auto [a, b] : edges) {
+    costs.push_back(static_cast<std::int64_t>(random() % 1000) - 100);
+    text += "e " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " +
+            std::to_string(costs.back()) + "\n";
+  }
+  write(path("w.dimacs"), text);
+  ASSERT_EQ(run(path("w.dimacs") + " " + path("m.txt") + " --objective cost --require-perfect" +
+                " --stats-json " + path("stats.json")),
+            0)
+      << err_;
+  const std::optional<std::int64_t> lemon = testing::lemon_min_cost_perfect(n, edges, costs);
+  ASSERT_TRUE(lemon.has_value());
+  const std::string matching = read(path("m.txt"));
+  EXPECT_EQ(read_back(matching, n, edges, 1), n / 2);
+  std::string zero_based;
+  {
+    std::istringstream in(matching);
+    long long u = 0, v = 0;
+    while (in >> u >> v) zero_based += std::to_string(u - 1) + " " + std::to_string(v - 1) + "\n";
+  }
+  EXPECT_EQ(cost_of(zero_based, edges, costs), *lemon);
+  const std::string stats = read(path("stats.json"));
+  EXPECT_NE(stats.find("\"total_cost\": " + std::to_string(*lemon) + ","), std::string::npos)
+      << stats;
+  EXPECT_NE(stats.find("\"optimality_certified\": true"), std::string::npos) << stats;
+  EXPECT_NE(read(path("stdout")).find("minimum certified"), std::string::npos);
+}
+
+TEST_F(MatchCommand, CostsWithoutAPerfectMatchingGiveTheCheapestMaximumOne) {
+  // A path of five nodes and a triangle: two path edges and one triangle edge at most; the
+  // cheapest such: 0-1 2-3 or 1-2 3-4 (6), and 5-6 (2).
+  const testing::EdgeList edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 5}};
+  const std::vector<std::int64_t> costs = {5, 1, 1, 5, 2, 3, 4};
+  std::string text;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    text += std::to_string(edges[e][0]) + " " + std::to_string(edges[e][1]) + " " +
+            std::to_string(costs[e]) + "\n";
+  }
+  write(path("w.txt"), text);
+  ASSERT_EQ(run(path("w.txt") + " " + path("m.txt") + " --objective cost"), 0) << err_;
+  EXPECT_EQ(err_, "");  // no note on cubic graphs: the objective is the cost
+  const std::string matching = read(path("m.txt"));
+  EXPECT_EQ(read_back(matching, 8, edges, 0), 3);
+  EXPECT_EQ(cost_of(matching, edges, costs), 8);
+  // Without costs the objective cannot be met: refused, naming the file.
+  write(path("plain.txt"), "0 1\n1 2\n2 3\n");
+  EXPECT_EQ(run(path("plain.txt") + " " + path("p.txt") + " --objective cost"), 1);
+  EXPECT_NE(err_.find("plain.txt: --objective cost needs a cost on every edge line"),
+            std::string::npos)
+      << err_;
+  EXPECT_FALSE(fs::exists(path("p.txt")));
+  EXPECT_EQ(run(path("plain.txt") + " " + path("p.txt") + " --objective beauty"), 105);
 }
 
 TEST_F(MatchCommand, BadFilesAreRefusedWithTheirLine) {

@@ -116,10 +116,10 @@ class BlossomSolver {
   void augment_tight() {
     std::vector<std::array<NodeId, 2>> ends;
     std::vector<EdgeId> original;
+    // Each edge once, from its smaller end (a loop is never matched).
     for (NodeId a = 0; a < n_; ++a) {
       for (const Slot& slot : slots_of(a)) {
-        const NodeId b =
-            slot.other;  // each edge once, from its smaller end (a loop is never tight)
+        const NodeId b = slot.other;
         if (b <= a || slot.cost2 - rec_[a].y - rec_[b].y != 0) continue;
         ends.push_back({a, b});
         original.push_back(slot.edge);
@@ -195,7 +195,7 @@ class BlossomSolver {
   [[gnu::noinline]] void run() {
     // Every root's dual is made even (lowering a free node's dual keeps every constraint), so
     // all labelled nodes share one parity and even-even slacks stay even (see the top).
-    std::vector<NodeId> roots{};
+    std::vector<NodeId> roots;
     for (NodeId v = 0; v < n_; ++v) {
       if (mate_[v] != kNoEdge) continue;
       roots.push_back(v);
