@@ -1,7 +1,8 @@
 // Writes the fuzzers' seed corpora: small meshes made by the project's own generators and
 // writers, in every format the readers take (OFF, OBJ in several corner spellings, PLY ascii,
-// binary little and big endian), triangles and polygons. Usage: petersen_fuzz_seeds DIR; writes
-// DIR/off, DIR/obj and DIR/ply.
+// binary little and big endian), triangles and polygons; and small graphs from the graph
+// generators as DIMACS and edge lists, with and without costs. Usage: petersen_fuzz_seeds DIR;
+// writes DIR/off, DIR/obj, DIR/ply, DIR/dimacs and DIR/edges.
 
 #include <bit>
 #include <cmath>
@@ -14,6 +15,7 @@
 
 #include "petersen/dualize/surface_generators.hpp"
 #include "petersen/dualize/write_mesh.hpp"
+#include "petersen/graph/generators.hpp"
 
 namespace {
 
@@ -168,6 +170,23 @@ std::string ply_other(const PolygonMesh& mesh, bool ascii) {
   return out;
 }
 
+// A graph as DIMACS (1-based, a comment, costs on every edge line when `costs`) and as an edge
+// list (0-based, a header and a comment, the same costs).
+void save_graph(const fs::path& dir, const std::string& name, const CubicGraph& graph, bool costs) {
+  std::string dimacs = "c seed\np edge " + std::to_string(graph.node_count()) + " " +
+                       std::to_string(graph.edge_count()) + "\n";
+  std::string edges =
+      std::to_string(graph.node_count()) + " " + std::to_string(graph.edge_count()) + "  # seed\n";
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const auto [a, b] = graph.endpoints(e);
+    const std::string cost = costs ? " " + std::to_string(long(e % 7) * 13 - 20) : "";
+    dimacs += "e " + std::to_string(a + 1) + " " + std::to_string(b + 1) + cost + "\n";
+    edges += std::to_string(a) + " " + std::to_string(b) + cost + "\n";
+  }
+  save(dir / "dimacs" / (name + ".dimacs"), dimacs);
+  save(dir / "edges" / (name + ".edges"), edges);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -176,7 +195,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path dir = argv[1];
-  for (const char* format : {"off", "obj", "ply"}) fs::create_directories(dir / format);
+  for (const char* format : {"off", "obj", "ply", "dimacs", "edges"}) {
+    fs::create_directories(dir / format);
+  }
   const std::vector<std::pair<std::string, PolygonMesh>> meshes = {
       {"cube", to_polygon_mesh(random_closed_surface(0, 0, 0, 1))},
       {"irregular", to_polygon_mesh(random_closed_surface(0, 6, 12, 2))},
@@ -194,6 +215,9 @@ int main(int argc, char** argv) {
     save(dir / "ply" / (name + "-ascii.ply"), ply_other(mesh, true));
     save(dir / "ply" / (name + "-big-endian.ply"), ply_other(mesh, false));
   }
+  save_graph(dir, "petersen", petersen_graph(), false);
+  save_graph(dir, "petersen-costs", petersen_graph(), true);
+  save_graph(dir, "random-costs", random_cubic_bridgeless(24, 3), true);
   std::size_t files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(dir)) files += entry.is_regular_file();
   std::printf("%zu seed files in %s\n", files, dir.c_str());
