@@ -1,6 +1,6 @@
 #include "match_command.hpp"
 
-#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
@@ -9,6 +9,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "file_bytes.hpp"
 #include "json_text.hpp"
@@ -16,7 +17,6 @@
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
-#include "petersen/matching/verify_min_cost.hpp"
 
 namespace petersen::cli {
 
@@ -42,7 +42,7 @@ std::string matched_edge_lines(const GraphFile& graph, std::span<const EdgeId> m
   return text;
 }
 
-// The minimum-cost matching among the maximum ones (--objective cost), its certificate checked.
+// The minimum-cost matching among the maximum ones (--objective cost).
 struct CheapestMatching {
   HugeVector<EdgeId> mate_edge;
   Cost total_cost = 0;
@@ -59,35 +59,25 @@ struct MatchReport {
   bool written;
 };
 
-// `perfect`: whether the graph has a perfect matching (the cardinality matching found one).
-// The perfect solver when there is one; otherwise the maximum one, on a graph twice the size.
-// Either answer's certificate is checked by the verifier before it is used.
-CheapestMatching cheapest_matching(const GraphFile& file, bool perfect) {
+// The cheapest maximum matching, certified (cheapest_maximum_matching checks it), with the
+// file's edge ids. Loops, which no matching has, are left out of the solver's graph.
+CheapestMatching cheapest_matching(const GraphFile& file) {
   const auto start = std::chrono::steady_clock::now();
-  const CsrGraph graph = CsrGraph::from_edges(file.node_count, file.edges);
-  CheapestMatching cheapest;
-  CertificateCheck check;
-  if (perfect) {
-    MinCostResult result = min_cost_perfect_matching(graph, file.costs, {.threads = 0});
-    check =
-        verify_min_cost_perfect_matching(graph.node_count(), graph.edge_ends(), file.costs,
-                                         result.matching, result.total_cost, result.certificate);
-    cheapest.mate_edge = std::move(result.matching.mate_edge);
-    cheapest.total_cost = result.total_cost;
-  } else {
-    MinCostMaximumResult result = min_cost_maximum_matching(graph, file.costs, {.threads = 0});
-    check = verify_min_cost_maximum_matching(graph.node_count(), graph.edge_ends(), file.costs,
-                                             result.matching, result.total_cost,
-                                             result.unmatched_cost, result.certificate);
-    cheapest.mate_edge = std::move(result.matching.mate_edge);
-    cheapest.total_cost = result.total_cost;
+  std::vector<std::array<NodeId, 2>> edges;
+  std::vector<Cost> costs;
+  std::vector<EdgeId> file_edge;
+  for (EdgeId e = 0; e < file.edges.size(); ++e) {
+    if (file.edges[e][0] == file.edges[e][1]) continue;
+    edges.push_back(file.edges[e]);
+    costs.push_back(file.costs[e]);
+    file_edge.push_back(e);
   }
-  if (!check.ok()) {
-    throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
-                           check.problem);
+  CheapestMaximumResult result = cheapest_maximum_matching(
+      CsrGraph::from_edges(file.node_count, edges), costs, {.threads = 0});
+  for (EdgeId& e : result.matching.mate_edge) {
+    if (e != kNoEdge) e = file_edge[e];
   }
-  cheapest.seconds = seconds_since(start);
-  return cheapest;
+  return {std::move(result.matching.mate_edge), result.total_cost, seconds_since(start)};
 }
 
 void write_stats_json(const MatchReport& r) {
@@ -200,20 +190,8 @@ int run_match(const MatchArgs& args) {
                                                     .augment = *augment,
                                                     .seed = args.seed,
                                                     .peer = &lemon_peer::maximum_matching});
-  // The size's answer tells the cost's which solver to run; the cost's must then be as large.
   std::optional<CheapestMatching> cheapest;
-  if (by_cost && (matched.perfect || !args.require_perfect)) {
-    cheapest = cheapest_matching(graph, matched.perfect);
-    const auto size = static_cast<std::uint32_t>(
-        std::count_if(cheapest->mate_edge.begin(), cheapest->mate_edge.end(),
-                      [](EdgeId e) { return e != kNoEdge; }) /
-        2);
-    if (size != matched.size) {
-      throw std::logic_error("internal error: the minimum-cost matching has " +
-                             std::to_string(size) + " edges, the maximum " +
-                             std::to_string(matched.size));
-    }
-  }
+  if (by_cost && (matched.perfect || !args.require_perfect)) cheapest = cheapest_matching(graph);
   const double match_seconds = seconds_since(clock);
   const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{matched.size};
 

@@ -26,9 +26,11 @@ __all__ = [
     "ALGORITHMS",
     "Attributes",
     "CROSSABLE",
+    "CheapestMatching",
     "DroppedWarning",
     "Mesh",
     "QuadResult",
+    "min_cost_matching",
     "perfect_matching",
     "quad_quality",
     "quadrangulate",
@@ -258,6 +260,48 @@ def perfect_matching(
     ``lrs`` needs a mesh and raises ``ValueError``. The GIL is released while the library works.
     """
     return _petersen.perfect_matching(int(n), edges, algorithm, augment, int(seed))
+
+
+@dataclass
+class CheapestMatching:
+    """What ``min_cost_matching`` returns."""
+
+    #: The sorted indices of the matched edges.
+    edges: np.ndarray
+    #: Their total cost: the least among the maximum matchings.
+    total_cost: int
+    #: Whether every node is matched.
+    perfect: bool
+
+
+def min_cost_matching(
+    n: int, edges: npt.ArrayLike, costs: npt.ArrayLike, threads: int = 0
+) -> CheapestMatching:
+    """The matching of least total cost among the maximum matchings of any (multi)graph.
+
+    ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges allowed, no loops),
+    ``costs`` one integer per edge (at most 2^40 in absolute value; scale and round real costs
+    first). A perfect matching when the
+    graph has one. Exact: Edmonds' primal-dual blossom algorithm, as ``petersen match --objective
+    cost`` and ``quadrangulate(objective="quality")``; its dual solution is checked by an
+    independent verifier before the answer is returned. ``threads`` as in ``quadrangulate``
+    (0: every core; the answer does not depend on it). Raises ``ValueError`` for a node out of
+    range, a loop, or a cost out of range or of the wrong count, ``TypeError`` for costs that
+    are not integers. The GIL is released while the library works.
+    """
+    costs = np.asarray(costs)
+    if costs.size and not np.issubdtype(costs.dtype, np.integer):
+        raise TypeError(
+            f"costs must be integers, not {costs.dtype} (scale and round real costs first)")
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an integer, not {threads!r}")
+    if not 0 <= threads < 2**32:
+        raise ValueError(f"threads must be 0 (every core) or a count of threads, not {threads}")
+    if costs.size and (costs.max() > 2**40 or costs.min() < -(2**40)):
+        raise ValueError("costs: a cost out of range (at most 2^40 in absolute value)")
+    matched, total, perfect = _petersen.min_cost_matching(
+        int(n), edges, costs.astype(np.int64, copy=False), int(threads))
+    return CheapestMatching(matched, int(total), bool(perfect))
 
 
 def quad_quality(V: npt.ArrayLike, quads: npt.ArrayLike) -> np.ndarray:

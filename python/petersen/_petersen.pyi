@@ -21,6 +21,9 @@ def quadrangulate(
     cross: List[str],
     threads: int,
 ) -> Dict[str, Any]: ...
+def min_cost_matching(
+    n: int, edges: npt.ArrayLike, costs: np.ndarray, threads: int
+) -> Tuple[np.ndarray, int, bool]: ...
 def read_mesh(path: str) -> Tuple[np.ndarray, Any, Dict[str, Any], List[str]]: ...
 def write_mesh(
     path: str, V: npt.ArrayLike, F: Any, attributes: Optional[Dict[str, Any]]

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -19,6 +20,7 @@
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
@@ -206,14 +208,8 @@ std::vector<std::string> write_mesh_py(const std::string& path, const py::handle
   return write_mesh(path, mesh);
 }
 
-py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
-                                              const std::string& algorithm,
-                                              const std::string& augment, std::uint64_t seed) {
-  Options options;
-  options.algorithm = algorithm_of(algorithm);
-  options.augment = augment_of(augment);
-  options.seed = seed;
-  options.peer = &lemon_peer::maximum_matching;
+// The (e, 2) array of node pairs `edges` over nodes 0..n-1; ValueError naming the edge otherwise.
+std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle& edges) {
   const std::vector<std::array<std::int64_t, 2>> pairs = pairs_from(edges, "edges");
   std::vector<std::array<NodeId, 2>> list(pairs.size());
   for (std::size_t e = 0; e < list.size(); ++e) {
@@ -226,6 +222,18 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
       list[e][k] = static_cast<NodeId>(v);
     }
   }
+  return list;
+}
+
+py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
+                                              const std::string& algorithm,
+                                              const std::string& augment, std::uint64_t seed) {
+  Options options;
+  options.algorithm = algorithm_of(algorithm);
+  options.augment = augment_of(augment);
+  options.seed = seed;
+  options.peer = &lemon_peer::maximum_matching;
+  const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
   std::vector<std::int64_t> matched;
   {
     py::gil_scoped_release release;
@@ -242,6 +250,35 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
   py::array_t<std::int64_t> out(matched.size());
   std::copy(matched.begin(), matched.end(), out.mutable_data());
   return out;
+}
+
+// The cheapest maximum matching (cheapest_maximum_matching, certified): the sorted indices of
+// its edges, its total cost and whether it is perfect.
+py::tuple min_cost_matching_py(
+    std::uint32_t n, const py::handle& edges,
+    const py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>& costs,
+    std::uint32_t threads) {
+  const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
+  if (costs.ndim() != 1 || static_cast<std::size_t>(costs.shape(0)) != list.size()) {
+    throw py::value_error("costs: one per edge, " + std::to_string(list.size()) +
+                          ", in a flat array");
+  }
+  const std::span<const Cost> cost_span(costs.data(), list.size());
+  std::vector<std::int64_t> matched;
+  CheapestMaximumResult result;
+  {
+    py::gil_scoped_release release;
+    const CsrGraph graph = CsrGraph::from_edges(n, list);
+    result = cheapest_maximum_matching(graph, cost_span, {.threads = threads});
+    for (NodeId v = 0; v < n; ++v) {
+      const EdgeId e = result.matching.mate_edge[v];
+      if (e != kNoEdge && graph.endpoints(e)[0] == v) matched.push_back(e);
+    }
+    std::sort(matched.begin(), matched.end());
+  }
+  py::array_t<std::int64_t> out(matched.size());
+  std::copy(matched.begin(), matched.end(), out.mutable_data());
+  return py::make_tuple(out, result.total_cost, result.perfect);
 }
 
 }  // namespace
@@ -270,6 +307,8 @@ PYBIND11_MODULE(_petersen, m) {
         py::arg("attributes"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
+  m.def("min_cost_matching", &min_cost_matching_py, py::arg("n"), py::arg("edges"),
+        py::arg("costs"), py::arg("threads"));
   m.attr("CROSSABLE") = crossable_names();
   add_render(m);
 }

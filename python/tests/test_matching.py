@@ -1,4 +1,5 @@
-"""petersen.perfect_matching on graphs, checked here (every node covered exactly once)."""
+"""petersen.perfect_matching and min_cost_matching on graphs, checked here (every node covered
+exactly once; the cheapest maximum matching against brute force)."""
 
 import numpy as np
 import pytest
@@ -60,3 +61,58 @@ def test_graphs_that_are_not_cubic_bridgeless_raise_value_error():
         petersen.perfect_matching(10, petersen_graph()[1], algorithm="lrs")
     with pytest.raises(ValueError, match=r"\(e, 2\)"):
         petersen.perfect_matching(10, [1, 2, 3])
+
+
+def brute_force_cheapest(n, edges, costs):
+    """(size, cost) of the cheapest maximum matching, by trying every subset of edges."""
+    best = (0, 0)
+    for mask in range(1 << len(edges)):
+        used, size, cost, ok = set(), 0, 0, True
+        for e in range(len(edges)):
+            if mask >> e & 1:
+                a, b = edges[e]
+                if a == b or a in used or b in used:
+                    ok = False
+                    break
+                used |= {a, b}
+                size += 1
+                cost += costs[e]
+        if ok and (size > best[0] or (size == best[0] and cost < best[1])):
+            best = (size, cost)
+    return best
+
+
+def test_min_cost_matching_equals_brute_force():
+    rng = np.random.default_rng(11)
+    for trial in range(60):
+        n = int(rng.integers(1, 9))
+        m = int(rng.integers(0, 11))
+        edges = rng.integers(0, n, size=(m, 2))
+        edges = edges[edges[:, 0] != edges[:, 1]]  # no loops
+        m = len(edges)
+        costs = rng.integers(-20, 50, size=m)
+        r = petersen.min_cost_matching(n, edges, costs)
+        size, cost = brute_force_cheapest(n, edges.tolist(), costs.tolist())
+        assert len(r.edges) == size and r.total_cost == cost, (trial, edges, costs)
+        assert int(costs[r.edges].sum()) == r.total_cost
+        ends = edges[r.edges].ravel()
+        assert len(set(ends.tolist())) == len(ends)  # no node twice
+        assert r.perfect == (2 * size == n)
+        again = petersen.min_cost_matching(n, edges, costs, threads=1)
+        assert np.array_equal(again.edges, r.edges)
+
+
+def test_min_cost_matching_refuses_bad_costs():
+    edges = np.array([[0, 1], [1, 2], [2, 3]])
+    with pytest.raises(TypeError, match="integers"):
+        petersen.min_cost_matching(4, edges, [1.5, 2.0, 3.0])
+    with pytest.raises(ValueError, match="one per edge"):
+        petersen.min_cost_matching(4, edges, [1, 2])
+    with pytest.raises(ValueError, match="out of range"):
+        petersen.min_cost_matching(4, edges, [1, 2, 2**41])
+    with pytest.raises(ValueError, match="out of range"):
+        petersen.min_cost_matching(4, edges, np.array([1, 2, 2**64 - 1], dtype=np.uint64))
+    with pytest.raises(ValueError, match="node 7 is out of range"):
+        petersen.min_cost_matching(4, [[0, 7]], [1])
+    with pytest.raises(ValueError, match="loop"):
+        petersen.min_cost_matching(4, [[0, 1], [2, 2]], [1, 1])

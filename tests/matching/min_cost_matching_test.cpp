@@ -194,6 +194,29 @@ RC_GTEST_PROP(MinCostMaximum, SizeEqualsLemonMaximumAndIsCertified, ()) {
   if (2 * r.size == n) RC_ASSERT(testing::lemon_min_cost_perfect(n, edges, costs) == r.total_cost);
 }
 
+// cheapest_maximum_matching picks the perfect solver or the maximum one; either way the answer
+// is as large as LEMON's maximum and as cheap as the maximum solver's.
+RC_GTEST_PROP(CheapestMaximum, EqualsTheMaximumSolversOptimum, ()) {
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 80);
+  Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
+  if (*rc::gen::arbitrary<bool>()) {
+    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
+  }
+  const std::vector<Cost> costs = random_costs(edges.size(), -50, 1000);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  const CheapestMaximumResult r = cheapest_maximum_matching(g, costs);
+  RC_ASSERT(r.size == testing::lemon_matching_size(n, edges));
+  RC_ASSERT(r.perfect == (2 * r.size == n));
+  RC_ASSERT(r.total_cost == min_cost_maximum_matching(g, costs).total_cost);
+  Cost written = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = r.matching.mate_edge[v];
+    if (e != kNoEdge && g.endpoints(e)[0] == v) written += costs[e];
+  }
+  RC_ASSERT(written == r.total_cost);
+  RC_TAG(r.perfect ? "perfect" : "not perfect");
+}
+
 // ---- the verifier rejects perturbed answers
 
 RC_GTEST_PROP(MinCostVerifier, RejectsACostlierPerfectMatching, ()) {

@@ -201,8 +201,9 @@ TEST_F(MatchCommand, CostsGiveTheCheapestPerfectMatchingAsLemonFindsIt) {
 TEST_F(MatchCommand, CostsWithoutAPerfectMatchingGiveTheCheapestMaximumOne) {
   // A path of five nodes and a triangle: two path edges and one triangle edge at most; the
   // cheapest such: 0-1 2-3 or 1-2 3-4 (6), and 5-6 (2).
-  const testing::EdgeList edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 5}};
-  const std::vector<std::int64_t> costs = {5, 1, 1, 5, 2, 3, 4};
+  // A loop (no matching has one) changes nothing.
+  const testing::EdgeList edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}, {5, 6}, {6, 7}, {7, 5}, {4, 4}};
+  const std::vector<std::int64_t> costs = {5, 1, 1, 5, 2, 3, 4, -50};
   std::string text;
   for (std::size_t e = 0; e < edges.size(); ++e) {
     text += std::to_string(edges[e][0]) + " " + std::to_string(edges[e][1]) + " " +

@@ -6,6 +6,9 @@
 #include <string>
 
 #include "../stopwatch.hpp"
+#include "petersen/matching/augment.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
 #include "blossom_solver.hpp"
 #include "breadth_first_order.hpp"
 
@@ -150,6 +153,52 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
   }
   result.certificate = std::move(inner.certificate);
   result.stats = inner.stats;
+  return result;
+}
+
+CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                                const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  const MaximumMatchingResult maximum = maximum_matching(graph);
+  if (const MatchingCheck check =
+          verify_maximum_matching(graph, maximum.matching, maximum.tutte_set);
+      !check.ok()) {
+    throw std::logic_error("internal error: the maximum matching fails its witness: " +
+                           check.message);
+  }
+  const std::uint32_t n = graph.node_count();
+  CheapestMaximumResult result;
+  result.perfect = 2 * std::uint64_t{maximum.size} == n;
+  CertificateCheck check;
+  if (result.perfect) {
+    MinCostResult cheapest = min_cost_perfect_matching(graph, costs, options);
+    check = verify_min_cost_perfect_matching(n, graph.edge_ends(), costs, cheapest.matching,
+                                             cheapest.total_cost, cheapest.certificate);
+    result.matching = std::move(cheapest.matching);
+    result.total_cost = cheapest.total_cost;
+    result.stats = cheapest.stats;
+  } else {
+    MinCostMaximumResult cheapest = min_cost_maximum_matching(graph, costs, options);
+    check = verify_min_cost_maximum_matching(n, graph.edge_ends(), costs, cheapest.matching,
+                                             cheapest.total_cost, cheapest.unmatched_cost,
+                                             cheapest.certificate);
+    result.matching = std::move(cheapest.matching);
+    result.total_cost = cheapest.total_cost;
+    result.stats = cheapest.stats;
+  }
+  if (!check.ok()) {
+    throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
+                           check.problem);
+  }
+  result.size = static_cast<std::uint32_t>(
+      std::count_if(result.matching.mate_edge.begin(), result.matching.mate_edge.end(),
+                    [](EdgeId e) { return e != kNoEdge; }) /
+      2);
+  if (result.size != maximum.size) {
+    throw std::logic_error("internal error: the minimum-cost matching has " +
+                           std::to_string(result.size) + " edges, the maximum " +
+                           std::to_string(maximum.size));
+  }
   return result;
 }
 
