@@ -28,8 +28,10 @@ __all__ = [
     "CROSSABLE",
     "CheapestMatching",
     "DroppedWarning",
+    "MaximumMatching",
     "Mesh",
     "QuadResult",
+    "maximum_matching",
     "min_cost_matching",
     "perfect_matching",
     "quad_quality",
@@ -260,6 +262,40 @@ def perfect_matching(
     ``lrs`` needs a mesh and raises ``ValueError``. The GIL is released while the library works.
     """
     return _petersen.perfect_matching(int(n), edges, algorithm, augment, int(seed))
+
+
+@dataclass
+class MaximumMatching:
+    """What ``maximum_matching`` returns."""
+
+    #: The sorted indices of the matched edges.
+    edges: np.ndarray
+    #: Whether every node is matched.
+    perfect: bool
+    #: A Tutte-Berge set A proving the matching maximum (it leaves exactly odd(G - A) - |A|
+    #: nodes free); empty when the graph is cubic and bridgeless (the matching is perfect).
+    tutte_set: np.ndarray
+
+
+def maximum_matching(
+    n: int,
+    edges: npt.ArrayLike,
+    algorithm: str = "ps",
+    seed: int = 1,
+    augment: str = "local",
+) -> MaximumMatching:
+    """A maximum matching of any (multi)graph, as ``petersen match`` finds it.
+
+    ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges and loops allowed; a
+    loop is never matched). A cubic bridgeless graph gets a perfect matching by ``algorithm``
+    (as ``perfect_matching``); any other graph a maximum matching by augmenting paths with its
+    Tutte-Berge set. Every answer is checked by the library's verifier (the perfect matching, or
+    the maximum one against its set) before it is returned. The GIL is released while the
+    library works.
+    """
+    matched, perfect, tutte = _petersen.maximum_matching(
+        int(n), edges, algorithm, augment, int(seed))
+    return MaximumMatching(matched, bool(perfect), tutte)
 
 
 @dataclass

@@ -21,6 +21,9 @@ def quadrangulate(
     cross: List[str],
     threads: int,
 ) -> Dict[str, Any]: ...
+def maximum_matching(
+    n: int, edges: npt.ArrayLike, algorithm: str, augment: str, seed: int
+) -> Tuple[np.ndarray, bool, np.ndarray]: ...
 def min_cost_matching(
     n: int, edges: npt.ArrayLike, costs: np.ndarray, threads: int
 ) -> Tuple[np.ndarray, int, bool]: ...

@@ -20,6 +20,7 @@
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/matching/any_graph.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
@@ -252,6 +253,36 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
   return out;
 }
 
+// A maximum matching of any graph (match_any_graph, verified): the sorted indices of its edges,
+// whether it is perfect, and the Tutte–Berge set proving it maximum (empty on a cubic bridgeless
+// graph, whose matching is perfect).
+py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
+                              const std::string& algorithm, const std::string& augment,
+                              std::uint64_t seed) {
+  Options options;
+  options.algorithm = algorithm_of(algorithm);
+  options.augment = augment_of(augment);
+  options.seed = seed;
+  options.peer = &lemon_peer::maximum_matching;
+  const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
+  std::vector<std::int64_t> matched;
+  AnyGraphMatching result;
+  {
+    py::gil_scoped_release release;
+    result = match_any_graph(n, list, options);
+    for (NodeId v = 0; v < n; ++v) {
+      const EdgeId e = result.mate_edge[v];
+      if (e != kNoEdge && list[e][0] == v) matched.push_back(e);  // once, at its first end
+    }
+    std::sort(matched.begin(), matched.end());
+  }
+  py::array_t<std::int64_t> out(matched.size());
+  std::copy(matched.begin(), matched.end(), out.mutable_data());
+  py::array_t<std::int64_t> tutte(result.tutte_set.size());
+  std::copy(result.tutte_set.begin(), result.tutte_set.end(), tutte.mutable_data());
+  return py::make_tuple(out, result.perfect, tutte);
+}
+
 // The cheapest maximum matching (cheapest_maximum_matching, certified): the sorted indices of
 // its edges, its total cost and whether it is perfect.
 py::tuple min_cost_matching_py(
@@ -306,6 +337,8 @@ PYBIND11_MODULE(_petersen, m) {
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
         py::arg("attributes"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),
+        py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
+  m.def("maximum_matching", &maximum_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("algorithm"), py::arg("augment"), py::arg("seed"));
   m.def("min_cost_matching", &min_cost_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("costs"), py::arg("threads"));

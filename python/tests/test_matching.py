@@ -116,3 +116,35 @@ def test_min_cost_matching_refuses_bad_costs():
         petersen.min_cost_matching(4, [[0, 7]], [1])
     with pytest.raises(ValueError, match="loop"):
         petersen.min_cost_matching(4, [[0, 1], [2, 2]], [1, 1])
+
+
+def test_maximum_matching_of_any_graph_with_its_witness():
+    # A path of five nodes and a triangle: three edges at most; the witness proves it.
+    edges = np.array([[0, 1], [1, 2], [2, 3], [3, 4], [5, 6], [6, 7], [7, 5], [4, 4]])
+    r = petersen.maximum_matching(8, edges)
+    assert len(r.edges) == brute_force_cheapest(8, edges.tolist(), [0] * len(edges))[0] == 3
+    ends = edges[r.edges].ravel()
+    assert len(set(ends.tolist())) == len(ends) and not r.perfect
+    # Tutte-Berge: with A removed, the odd components leave odd(G - A) - |A| nodes unmatched.
+    a = set(r.tutte_set.tolist())
+    parent = list(range(8))
+
+    def find(x):
+        while parent[x] != x:
+            parent[x] = parent[parent[x]]
+            x = parent[x]
+        return x
+
+    for u, v in edges.tolist():
+        if u not in a and v not in a:
+            parent[find(u)] = find(v)
+    sizes = {}
+    for v in range(8):
+        if v not in a:
+            sizes[find(v)] = sizes.get(find(v), 0) + 1
+    odd = sum(1 for s in sizes.values() if s % 2)
+    assert 8 - 2 * len(r.edges) == odd - len(a)
+    # A cubic bridgeless graph: perfect, by the algorithm asked for, and no witness needed.
+    n, graph = petersen_graph()
+    p = petersen.maximum_matching(n, graph, algorithm="sg", seed=3)
+    assert p.perfect and len(p.edges) == 5 and len(p.tutte_set) == 0
