@@ -185,16 +185,21 @@ def quadrangulate(
     V, F, attributes = _mesh_parts(V, F, attributes, "quadrangulate")
     if isinstance(cross, str):
         raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
-    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
-        raise TypeError(f"threads must be an integer, not {threads!r}")
-    if not 0 <= threads < 2**32:
-        raise ValueError(f"threads must be 0 (every core) or a count of threads, not {threads}")
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         None if sharp_angle is None else float(sharp_angle), keep_edges,
         None if max_corner_deviation is None else float(max_corner_deviation), attributes,
-        [str(c) for c in cross], int(threads))
+        [str(c) for c in cross], _threads(threads))
     return QuadResult(**r)
+
+
+def _threads(threads: int) -> int:
+    """A ``threads`` option as the library takes it: 0 (every core) or a count."""
+    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
+        raise TypeError(f"threads must be an integer, not {threads!r}")
+    if not 0 <= threads < 2**32:
+        raise ValueError(f"threads must be 0 (every core) or a count of threads, not {threads}")
+    return int(threads)
 
 
 def _mesh_parts(
@@ -329,14 +334,10 @@ def min_cost_matching(
     if costs.size and not np.issubdtype(costs.dtype, np.integer):
         raise TypeError(
             f"costs must be integers, not {costs.dtype} (scale and round real costs first)")
-    if isinstance(threads, bool) or not isinstance(threads, numbers.Integral):
-        raise TypeError(f"threads must be an integer, not {threads!r}")
-    if not 0 <= threads < 2**32:
-        raise ValueError(f"threads must be 0 (every core) or a count of threads, not {threads}")
     if costs.size and (costs.max() > 2**40 or costs.min() < -(2**40)):
         raise ValueError("costs: a cost out of range (at most 2^40 in absolute value)")
     matched, total, perfect = _petersen.min_cost_matching(
-        int(n), edges, costs.astype(np.int64, copy=False), int(threads))
+        int(n), edges, costs.astype(np.int64, copy=False), _threads(threads))
     return CheapestMatching(matched, int(total), bool(perfect))
 
 

@@ -78,6 +78,14 @@ std::vector<CutCause> causes_from(const py::handle& cross) {
   return causes;
 }
 
+// A numpy copy of integers.
+template <class Values>
+py::array_t<std::int64_t> int64_array(const Values& values) {
+  py::array_t<std::int64_t> out(values.size());
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
 py::dict stats_dict(const QuadStats& stats, const QuadOptions& options) {
   py::dict out;
   for (const StatField& field : stats_fields(stats, options)) {
@@ -174,9 +182,7 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
     row[0] = source(result.sources[order[i]][0]);
     row[1] = source(result.sources[order[i]][1]);
   });
-  py::array_t<std::int64_t> tutte(result.tutte_set.size());
-  std::copy(result.tutte_set.begin(), result.tutte_set.end(), tutte.mutable_data());
-  d["tutte_set"] = tutte;
+  d["tutte_set"] = int64_array(result.tutte_set);
   d["stats"] = stats_dict(result.stats, options);
   d["attributes"] = attributes_dict(attributes_in_order(out, order));
   return d;
@@ -226,14 +232,21 @@ std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle&
   return list;
 }
 
-py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
-                                              const std::string& algorithm,
-                                              const std::string& augment, std::uint64_t seed) {
+// The options of perfect_matching and maximum_matching; lemon runs the peer.
+Options graph_options(const std::string& algorithm, const std::string& augment,
+                      std::uint64_t seed) {
   Options options;
   options.algorithm = algorithm_of(algorithm);
   options.augment = augment_of(augment);
   options.seed = seed;
   options.peer = &lemon_peer::maximum_matching;
+  return options;
+}
+
+py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
+                                              const std::string& algorithm,
+                                              const std::string& augment, std::uint64_t seed) {
+  const Options options = graph_options(algorithm, augment, seed);
   const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
   std::vector<std::int64_t> matched;
   {
@@ -248,8 +261,7 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
     }
     std::sort(matched.begin(), matched.end());
   }
-  py::array_t<std::int64_t> out(matched.size());
-  std::copy(matched.begin(), matched.end(), out.mutable_data());
+  const py::array_t<std::int64_t> out = int64_array(matched);
   return out;
 }
 
@@ -259,11 +271,7 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
 py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
                               const std::string& algorithm, const std::string& augment,
                               std::uint64_t seed) {
-  Options options;
-  options.algorithm = algorithm_of(algorithm);
-  options.augment = augment_of(augment);
-  options.seed = seed;
-  options.peer = &lemon_peer::maximum_matching;
+  const Options options = graph_options(algorithm, augment, seed);
   const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
   std::vector<std::int64_t> matched;
   AnyGraphMatching result;
@@ -276,11 +284,8 @@ py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
     }
     std::sort(matched.begin(), matched.end());
   }
-  py::array_t<std::int64_t> out(matched.size());
-  std::copy(matched.begin(), matched.end(), out.mutable_data());
-  py::array_t<std::int64_t> tutte(result.tutte_set.size());
-  std::copy(result.tutte_set.begin(), result.tutte_set.end(), tutte.mutable_data());
-  return py::make_tuple(out, result.perfect, tutte);
+  const py::array_t<std::int64_t> out = int64_array(matched);
+  return py::make_tuple(out, result.perfect, int64_array(result.tutte_set));
 }
 
 // The cheapest maximum matching (cheapest_maximum_matching, certified): the sorted indices of
@@ -307,8 +312,7 @@ py::tuple min_cost_matching_py(
     }
     std::sort(matched.begin(), matched.end());
   }
-  py::array_t<std::int64_t> out(matched.size());
-  std::copy(matched.begin(), matched.end(), out.mutable_data());
+  const py::array_t<std::int64_t> out = int64_array(matched);
   return py::make_tuple(out, result.total_cost, result.perfect);
 }
 
