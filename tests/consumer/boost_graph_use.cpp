@@ -55,6 +55,18 @@ int check_boost_graph() {
   boost::edmonds_maximum_cardinality_matching(star, &boost_mate[0]);
   failures += perfect || !boost::is_a_matching(star, &mate[0]) ||
               boost::matching_size(star, &mate[0]) != boost::matching_size(star, &boost_mate[0]);
+
+  // The cheapest maximum matching through an edge_weight property: on a 4-cycle with costs
+  // 1, 5, 1, 5 around it, the two edges of cost 1.
+  using Weighted =
+      boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property,
+                            boost::property<boost::edge_weight_t, long>>;
+  Weighted square(4);
+  for (int k = 0; k < 4; ++k) boost::add_edge(k, (k + 1) % 4, k % 2 == 0 ? 1L : 5L, square);
+  std::vector<Vertex> square_mate(4);
+  const petersen::Cost total =
+      petersen::min_cost_matching(square, get(boost::edge_weight, square), &square_mate[0]);
+  failures += total != 2 || square_mate[0] != 1 || square_mate[2] != 3;
   std::printf("BGL adaptor: %s\n", failures == 0 ? "ok" : "FAILED");
   return failures;
 }

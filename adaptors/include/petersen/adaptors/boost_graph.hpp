@@ -1,6 +1,7 @@
 #pragma once
 // petersen's matchings for a Boost Graph Library graph, with the interface of Boost's own
-// edmonds_maximum_cardinality_matching: the user's graph and the user's mate property map.
+// edmonds_maximum_cardinality_matching: the user's graph and the user's mate property map; and
+// its minimum-cost matching, with the user's cost property map.
 
 #include <array>
 #include <boost/graph/graph_traits.hpp>
@@ -11,8 +12,54 @@
 #include <vector>
 
 #include "petersen/matching/any_graph.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen {
+
+namespace adaptor_detail {
+
+/// g's vertices by index (vertex_index maps them onto 0..num_vertices(g)-1) and its edges as
+/// index pairs with their descriptors. An undirected graph lists each edge among the out-edges of
+/// both ends: it is kept at the end with the smaller index; parallel edges are distinct
+/// descriptors, so each copy is kept once; self-loops are skipped (no matching uses one).
+template <class Graph, class VertexIndexMap>
+struct IndexedEdges {
+  using Traits = boost::graph_traits<Graph>;
+  std::vector<typename Traits::vertex_descriptor> vertex_of;
+  std::vector<std::array<std::uint32_t, 2>> edges;
+  std::vector<typename Traits::edge_descriptor> descriptor;
+
+  IndexedEdges(const Graph& g, VertexIndexMap vertex_index)
+      : vertex_of(static_cast<std::uint32_t>(num_vertices(g))) {
+    typename Traits::vertex_iterator v, v_end;
+    for (boost::tie(v, v_end) = vertices(g); v != v_end; ++v)
+      vertex_of[static_cast<std::uint32_t>(get(vertex_index, *v))] = *v;
+    const auto n = static_cast<std::uint32_t>(vertex_of.size());
+    for (std::uint32_t a = 0; a < n; ++a) {
+      typename Traits::out_edge_iterator e, e_end;
+      for (boost::tie(e, e_end) = out_edges(vertex_of[a], g); e != e_end; ++e) {
+        const auto b = static_cast<std::uint32_t>(get(vertex_index, target(*e, g)));
+        if (a < b) {
+          edges.push_back({a, b});
+          descriptor.push_back(*e);
+        }
+      }
+    }
+  }
+
+  /// Writes each vertex's partner under `mate_edge` (an edge index per vertex, 0xFFFFFFFF when
+  /// free) to `mate`, null_vertex() for a free one.
+  template <class MateEdges, class MateMap>
+  void put_mates(const MateEdges& mate_edge, MateMap mate) const {
+    for (std::uint32_t a = 0; a < vertex_of.size(); ++a) {
+      const std::uint32_t e = mate_edge[a];
+      put(mate, vertex_of[a],
+          e == 0xFFFFFFFFu ? Traits::null_vertex() : vertex_of[edges[e][0] ^ edges[e][1] ^ a]);
+    }
+  }
+};
+
+}  // namespace adaptor_detail
 
 /// A matching of `g`, any undirected BGL graph modelling VertexListGraph and IncidenceGraph,
 /// written to `mate` (a read-write vertex -> vertex property map) exactly as
@@ -28,29 +75,10 @@ template <class Graph, class MateMap, class VertexIndexMap,
           std::enable_if_t<!std::is_convertible_v<VertexIndexMap, Options>, int> = 0>
 bool perfect_matching(const Graph& g, MateMap mate, VertexIndexMap vertex_index,
                       const Options& options = {}) {
-  using Traits = boost::graph_traits<Graph>;
-  using Vertex = typename Traits::vertex_descriptor;
-  const auto n = static_cast<std::uint32_t>(num_vertices(g));
-  std::vector<Vertex> vertex_of(n);
-  typename Traits::vertex_iterator v, v_end;
-  for (boost::tie(v, v_end) = vertices(g); v != v_end; ++v)
-    vertex_of[static_cast<std::uint32_t>(get(vertex_index, *v))] = *v;
-  // An undirected graph lists each edge among the out-edges of both ends: keep it at the end with
-  // the smaller index. Parallel edges are distinct descriptors, so each copy is kept once.
-  std::vector<std::array<std::uint32_t, 2>> edges;
-  for (std::uint32_t a = 0; a < n; ++a) {
-    typename Traits::out_edge_iterator e, e_end;
-    for (boost::tie(e, e_end) = out_edges(vertex_of[a], g); e != e_end; ++e) {
-      const auto b = static_cast<std::uint32_t>(get(vertex_index, target(*e, g)));
-      if (a < b) edges.push_back({a, b});
-    }
-  }
-  const AnyGraphMatching matched = match_any_graph(n, edges, options);
-  for (std::uint32_t a = 0; a < n; ++a) {
-    const std::uint32_t e = matched.mate_edge[a];
-    put(mate, vertex_of[a],
-        e == 0xFFFFFFFFu ? Traits::null_vertex() : vertex_of[edges[e][0] ^ edges[e][1] ^ a]);
-  }
+  const adaptor_detail::IndexedEdges<Graph, VertexIndexMap> indexed(g, vertex_index);
+  const AnyGraphMatching matched =
+      match_any_graph(static_cast<std::uint32_t>(indexed.vertex_of.size()), indexed.edges, options);
+  indexed.put_mates(matched.mate_edge, mate);
   return matched.perfect;
 }
 
@@ -58,6 +86,37 @@ bool perfect_matching(const Graph& g, MateMap mate, VertexIndexMap vertex_index,
 template <class Graph, class MateMap>
 bool perfect_matching(const Graph& g, MateMap mate, const Options& options = {}) {
   return perfect_matching(g, mate, get(boost::vertex_index, g), options);
+}
+
+/// The matching of least total cost among the maximum matchings of `g` (any undirected BGL
+/// graph, as above), under `cost`, a readable edge property map of integers (at most 2^40 in
+/// absolute value; real weights are the caller's to scale and round), written to `mate` as
+/// perfect_matching writes it; returns its total cost. A perfect matching when g has one.
+/// Exact: cheapest_maximum_matching (min_cost_matching.hpp), whose dual solution the
+/// independent verifier checks before it returns. Self-loops are skipped. Throws
+/// std::invalid_argument for a cost out of range.
+template <class Graph, class CostMap, class MateMap, class VertexIndexMap,
+          std::enable_if_t<!std::is_convertible_v<VertexIndexMap, MinCostOptions>, int> = 0>
+Cost min_cost_matching(const Graph& g, CostMap cost, MateMap mate, VertexIndexMap vertex_index,
+                       const MinCostOptions& options = {}) {
+  static_assert(std::is_integral_v<typename boost::property_traits<CostMap>::value_type>,
+                "min_cost_matching takes integer costs: scale and round real weights first");
+  const adaptor_detail::IndexedEdges<Graph, VertexIndexMap> indexed(g, vertex_index);
+  std::vector<Cost> costs;
+  costs.reserve(indexed.edges.size());
+  for (const auto& e : indexed.descriptor) costs.push_back(static_cast<Cost>(get(cost, e)));
+  const CheapestMaximumResult cheapest = cheapest_maximum_matching(
+      CsrGraph::from_edges(static_cast<std::uint32_t>(indexed.vertex_of.size()), indexed.edges),
+      costs, options);
+  indexed.put_mates(cheapest.matching.mate_edge, mate);
+  return cheapest.total_cost;
+}
+
+/// The same with the graph's own vertex_index property map.
+template <class Graph, class CostMap, class MateMap>
+Cost min_cost_matching(const Graph& g, CostMap cost, MateMap mate,
+                       const MinCostOptions& options = {}) {
+  return min_cost_matching(g, cost, mate, get(boost::vertex_index, g), options);
 }
 
 }  // namespace petersen
