@@ -1,6 +1,5 @@
 #include "match_command.hpp"
 
-#include <array>
 #include <chrono>
 #include <cinttypes>
 #include <cstdio>
@@ -16,7 +15,6 @@
 #include "petersen/graph_io/read_graph.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
-#include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen::cli {
 
@@ -44,8 +42,8 @@ std::string matched_edge_lines(const GraphFile& graph, std::span<const EdgeId> m
 
 // The minimum-cost matching among the maximum ones (--objective cost).
 struct CheapestMatching {
-  HugeVector<EdgeId> mate_edge;
-  Cost total_cost = 0;
+  std::vector<std::uint32_t> mate_edge;
+  std::int64_t total_cost = 0;
   double seconds = 0;
 };
 
@@ -59,25 +57,12 @@ struct MatchReport {
   bool written;
 };
 
-// The cheapest maximum matching, certified (cheapest_maximum_matching checks it), with the
-// file's edge ids. Loops, which no matching has, are left out of the solver's graph.
+// The cheapest maximum matching, certified (cheapest_matching_any_graph).
 CheapestMatching cheapest_matching(const GraphFile& file) {
   const auto start = std::chrono::steady_clock::now();
-  std::vector<std::array<NodeId, 2>> edges;
-  std::vector<Cost> costs;
-  std::vector<EdgeId> file_edge;
-  for (EdgeId e = 0; e < file.edges.size(); ++e) {
-    if (file.edges[e][0] == file.edges[e][1]) continue;
-    edges.push_back(file.edges[e]);
-    costs.push_back(file.costs[e]);
-    file_edge.push_back(e);
-  }
-  CheapestMaximumResult result = cheapest_maximum_matching(
-      CsrGraph::from_edges(file.node_count, edges), costs, {.threads = 0});
-  for (EdgeId& e : result.matching.mate_edge) {
-    if (e != kNoEdge) e = file_edge[e];
-  }
-  return {std::move(result.matching.mate_edge), result.total_cost, seconds_since(start)};
+  AnyGraphCheapestMatching result =
+      cheapest_matching_any_graph(file.node_count, file.edges, file.costs, 0);
+  return {std::move(result.mate_edge), result.total_cost, seconds_since(start)};
 }
 
 void write_stats_json(const MatchReport& r) {

@@ -6,6 +6,7 @@
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/augment.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
 #include "stopwatch.hpp"
@@ -112,6 +113,41 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
     return result;
   }
   match_general(node_count, edges, options, result);
+  return result;
+}
+
+AnyGraphCheapestMatching cheapest_matching_any_graph(
+    std::uint32_t node_count, const std::vector<std::array<std::uint32_t, 2>>& edges,
+    const std::vector<std::int64_t>& costs, std::uint32_t threads) {
+  if (edges.size() >= kNoEdge) throw GraphError("more than 2^32 - 1 edges");
+  if (costs.size() != edges.size()) {
+    throw std::invalid_argument("min-cost matching: " + std::to_string(costs.size()) +
+                                " costs for " + std::to_string(edges.size()) + " edges");
+  }
+  std::vector<std::array<NodeId, 2>> kept;
+  std::vector<Cost> kept_costs;
+  std::vector<EdgeId> input_edge;
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    if (edges[e][0] >= node_count || edges[e][1] >= node_count) {
+      throw GraphError(edge_name(e, edges[e]) + " has an endpoint out of range (" +
+                       std::to_string(node_count) + " nodes)");
+    }
+    if (edges[e][0] == edges[e][1]) continue;
+    kept.push_back(edges[e]);
+    kept_costs.push_back(costs[e]);
+    input_edge.push_back(e);
+  }
+  const CheapestMaximumResult cheapest = cheapest_maximum_matching(
+      CsrGraph::from_edges(node_count, kept), kept_costs, {.threads = threads});
+  AnyGraphCheapestMatching result;
+  result.mate_edge.resize(node_count, kNoEdge);
+  for (NodeId v = 0; v < node_count; ++v) {
+    const EdgeId e = cheapest.matching.mate_edge[v];
+    if (e != kNoEdge) result.mate_edge[v] = input_edge[e];
+  }
+  result.size = cheapest.size;
+  result.perfect = cheapest.perfect;
+  result.total_cost = cheapest.total_cost;
   return result;
 }
 

@@ -320,15 +320,15 @@ def min_cost_matching(
 ) -> CheapestMatching:
     """The matching of least total cost among the maximum matchings of any (multi)graph.
 
-    ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges allowed, no loops),
-    ``costs`` one integer per edge (at most 2^40 in absolute value; scale and round real costs
+    ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges and loops allowed; a
+    loop is never matched), ``costs`` one integer per edge (at most 2^40 in absolute value; scale and round real costs
     first). A perfect matching when the
     graph has one. Exact: Edmonds' primal-dual blossom algorithm, as ``petersen match --objective
     cost`` and ``quadrangulate(objective="quality")``; its dual solution is checked by an
     independent verifier before the answer is returned. ``threads`` as in ``quadrangulate``
     (0: every core; the answer does not depend on it). Raises ``ValueError`` for a node out of
-    range, a loop, or a cost out of range or of the wrong count, ``TypeError`` for costs that
-    are not integers. The GIL is released while the library works.
+    range, or a cost out of range or of the wrong count, ``TypeError`` for costs that are not
+    integers. The GIL is released while the library works.
     """
     costs = np.asarray(costs)
     if costs.size and not np.issubdtype(costs.dtype, np.integer):

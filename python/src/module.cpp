@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <optional>
-#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -21,7 +20,6 @@
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
-#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
@@ -288,7 +286,7 @@ py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
   return py::make_tuple(out, result.perfect, int64_array(result.tutte_set));
 }
 
-// The cheapest maximum matching (cheapest_maximum_matching, certified): the sorted indices of
+// The cheapest maximum matching (cheapest_matching_any_graph, certified): the sorted indices of
 // its edges, its total cost and whether it is perfect.
 py::tuple min_cost_matching_py(
     std::uint32_t n, const py::handle& edges,
@@ -299,21 +297,19 @@ py::tuple min_cost_matching_py(
     throw py::value_error("costs: one per edge, " + std::to_string(list.size()) +
                           ", in a flat array");
   }
-  const std::span<const Cost> cost_span(costs.data(), list.size());
+  const std::vector<std::int64_t> cost_list(costs.data(), costs.data() + list.size());
   std::vector<std::int64_t> matched;
-  CheapestMaximumResult result;
+  AnyGraphCheapestMatching result;
   {
     py::gil_scoped_release release;
-    const CsrGraph graph = CsrGraph::from_edges(n, list);
-    result = cheapest_maximum_matching(graph, cost_span, {.threads = threads});
+    result = cheapest_matching_any_graph(n, list, cost_list, threads);
     for (NodeId v = 0; v < n; ++v) {
-      const EdgeId e = result.matching.mate_edge[v];
-      if (e != kNoEdge && graph.endpoints(e)[0] == v) matched.push_back(e);
+      const EdgeId e = result.mate_edge[v];
+      if (e != kNoEdge && list[e][0] == v) matched.push_back(e);  // once, at its first end
     }
     std::sort(matched.begin(), matched.end());
   }
-  const py::array_t<std::int64_t> out = int64_array(matched);
-  return py::make_tuple(out, result.total_cost, result.perfect);
+  return py::make_tuple(int64_array(matched), result.total_cost, result.perfect);
 }
 
 }  // namespace

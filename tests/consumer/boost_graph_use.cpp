@@ -2,6 +2,7 @@
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/max_cardinality_matching.hpp>
+#include <cstdint>
 #include <cstdio>
 #include <petersen/adaptors/boost_graph.hpp>
 #include <petersen/testing/arbitrary.hpp>
@@ -64,7 +65,7 @@ int check_boost_graph() {
   Weighted square(4);
   for (int k = 0; k < 4; ++k) boost::add_edge(k, (k + 1) % 4, k % 2 == 0 ? 1L : 5L, square);
   std::vector<Vertex> square_mate(4);
-  const petersen::Cost total =
+  const std::int64_t total =
       petersen::min_cost_matching(square, get(boost::edge_weight, square), &square_mate[0]);
   failures += total != 2 || square_mate[0] != 1 || square_mate[2] != 3;
   std::printf("BGL adaptor: %s\n", failures == 0 ? "ok" : "FAILED");

@@ -1,9 +1,10 @@
 // The LEMON adaptor on lemon::ListGraph, in a C++17 translation unit, checked against LEMON's
-// own MaxMatching.
+// own MaxMatching and MaxWeightedPerfectMatching.
 
 #include <lemon/list_graph.h>
 #include <lemon/matching.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <petersen/adaptors/lemon_graph.hpp>
 #include <vector>
@@ -65,6 +66,29 @@ int check_lemon_graph() {
   ListGraph::NodeMap<ListGraph::Arc> path_mate(path);
   failures += petersen::perfect_matching(path, path_mate) ||
               matching_size(path, path_mate) != lemon_size(path);
+
+  // The cheapest perfect matching of the Petersen graph under costs 1..15, against LEMON's
+  // MaxWeightedPerfectMatching on the negated costs.
+  ListGraph::EdgeMap<int> cost(petersen_graph), negated(petersen_graph);
+  int k = 0;
+  for (ListGraph::EdgeIt e(petersen_graph); e != lemon::INVALID; ++e, ++k) {
+    cost[e] = 1 + (k * 7) % 15;
+    negated[e] = -cost[e];
+  }
+  ListGraph::NodeMap<ListGraph::Arc> cheapest_mate(petersen_graph);
+  const std::int64_t total = petersen::min_cost_matching(petersen_graph, cost, cheapest_mate);
+  lemon::MaxWeightedPerfectMatching<ListGraph, ListGraph::EdgeMap<int>> weighted(petersen_graph,
+                                                                                 negated);
+  weighted.run();
+  std::int64_t written = 0;
+  for (ListGraph::NodeIt v(petersen_graph); v != lemon::INVALID; ++v) {
+    if (cheapest_mate[v] != lemon::INVALID && petersen_graph.source(cheapest_mate[v]) == v &&
+        petersen_graph.id(v) < petersen_graph.id(petersen_graph.target(cheapest_mate[v]))) {
+      written += cost[cheapest_mate[v]];
+    }
+  }
+  failures += matching_size(petersen_graph, cheapest_mate) != 5 ||
+              total != -weighted.matchingWeight() || written != total;
   std::printf("LEMON adaptor: %s\n", failures == 0 ? "ok" : "FAILED");
   return failures;
 }

@@ -11,6 +11,7 @@
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <boost/property_map/property_map.hpp>
 #include <map>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -120,6 +121,19 @@ TEST(BoostAdaptor, TakesTheCallersVertexIndexMap) {
   const auto index = get(boost::vertex_index, g);
   EXPECT_TRUE(boost::is_a_matching(g, mate, index));
   EXPECT_EQ(boost::matching_size(g, mate, index), 5u);
+}
+
+TEST(AnyGraphCheapest, SkipsLoopsAndRefusesBadInput) {
+  // A loop, however cheap, is never matched; the path 0-1-2 then pairs at its cheaper edge.
+  const testing::EdgeList edges = {{0, 0}, {0, 1}, {1, 2}};
+  const AnyGraphCheapestMatching m = cheapest_matching_any_graph(3, edges, {-100, 7, 4});
+  EXPECT_EQ(m.size, 1u);
+  EXPECT_FALSE(m.perfect);
+  EXPECT_EQ(m.total_cost, 4);
+  EXPECT_EQ(m.mate_edge, (std::vector<std::uint32_t>{kNoEdge, 2, 2}));
+  EXPECT_THROW(cheapest_matching_any_graph(3, {{0, 3}}, {1}), GraphError);
+  EXPECT_THROW(cheapest_matching_any_graph(3, edges, {1, 2}), std::invalid_argument);
+  EXPECT_THROW(cheapest_matching_any_graph(3, edges, {1, 2, kMaxCost + 1}), std::invalid_argument);
 }
 
 // The BGL adaptor's minimum-cost matching on a graph with an edge_weight property of integers:

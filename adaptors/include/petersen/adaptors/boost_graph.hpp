@@ -12,7 +12,6 @@
 #include <vector>
 
 #include "petersen/matching/any_graph.hpp"
-#include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen {
 
@@ -92,31 +91,30 @@ bool perfect_matching(const Graph& g, MateMap mate, const Options& options = {})
 /// graph, as above), under `cost`, a readable edge property map of integers (at most 2^40 in
 /// absolute value; real weights are the caller's to scale and round), written to `mate` as
 /// perfect_matching writes it; returns its total cost. A perfect matching when g has one.
-/// Exact: cheapest_maximum_matching (min_cost_matching.hpp), whose dual solution the
-/// independent verifier checks before it returns. Self-loops are skipped. Throws
+/// Exact: cheapest_matching_any_graph (any_graph.hpp), whose dual solution the independent
+/// verifier checks before it returns; `threads` as there. Self-loops are skipped. Throws
 /// std::invalid_argument for a cost out of range.
 template <class Graph, class CostMap, class MateMap, class VertexIndexMap,
-          std::enable_if_t<!std::is_convertible_v<VertexIndexMap, MinCostOptions>, int> = 0>
-Cost min_cost_matching(const Graph& g, CostMap cost, MateMap mate, VertexIndexMap vertex_index,
-                       const MinCostOptions& options = {}) {
+          std::enable_if_t<!std::is_integral_v<VertexIndexMap>, int> = 0>
+std::int64_t min_cost_matching(const Graph& g, CostMap cost, MateMap mate,
+                               VertexIndexMap vertex_index, std::uint32_t threads = 1) {
   static_assert(std::is_integral_v<typename boost::property_traits<CostMap>::value_type>,
                 "min_cost_matching takes integer costs: scale and round real weights first");
   const adaptor_detail::IndexedEdges<Graph, VertexIndexMap> indexed(g, vertex_index);
-  std::vector<Cost> costs;
+  std::vector<std::int64_t> costs;
   costs.reserve(indexed.edges.size());
-  for (const auto& e : indexed.descriptor) costs.push_back(static_cast<Cost>(get(cost, e)));
-  const CheapestMaximumResult cheapest = cheapest_maximum_matching(
-      CsrGraph::from_edges(static_cast<std::uint32_t>(indexed.vertex_of.size()), indexed.edges),
-      costs, options);
-  indexed.put_mates(cheapest.matching.mate_edge, mate);
+  for (const auto& e : indexed.descriptor) costs.push_back(static_cast<std::int64_t>(get(cost, e)));
+  const AnyGraphCheapestMatching cheapest = cheapest_matching_any_graph(
+      static_cast<std::uint32_t>(indexed.vertex_of.size()), indexed.edges, costs, threads);
+  indexed.put_mates(cheapest.mate_edge, mate);
   return cheapest.total_cost;
 }
 
 /// The same with the graph's own vertex_index property map.
 template <class Graph, class CostMap, class MateMap>
-Cost min_cost_matching(const Graph& g, CostMap cost, MateMap mate,
-                       const MinCostOptions& options = {}) {
-  return min_cost_matching(g, cost, mate, get(boost::vertex_index, g), options);
+std::int64_t min_cost_matching(const Graph& g, CostMap cost, MateMap mate,
+                               std::uint32_t threads = 1) {
+  return min_cost_matching(g, cost, mate, get(boost::vertex_index, g), threads);
 }
 
 }  // namespace petersen

@@ -44,4 +44,25 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
                                  const std::vector<std::array<std::uint32_t, 2>>& edges,
                                  const Options& options = {});
 
+/// What cheapest_matching_any_graph found, in the edge list's own ids.
+struct AnyGraphCheapestMatching {
+  /// The index in the edge list of each node's matched edge, or 0xFFFFFFFF when it is free.
+  std::vector<std::uint32_t> mate_edge;
+  std::uint32_t size = 0;       ///< matched edges: the maximum
+  bool perfect = false;         ///< every node matched
+  std::int64_t total_cost = 0;  ///< the least among matchings of that size
+};
+
+/// The matching of least total cost among the maximum matchings of any graph given as an edge
+/// list, with one integer cost per edge (at most 2^40 in absolute value): the common core of
+/// `petersen match --objective cost`, Python's min_cost_matching and the adaptors. Loops, which
+/// no matching has, are left out; the rest goes to cheapest_maximum_matching
+/// (min_cost_matching.hpp), which checks the answer's dual solution by the independent verifier
+/// before it returns. `threads` as MinCostOptions::threads (0: every core; the answer does not
+/// depend on it). Throws GraphError naming the first edge with an endpoint out of range,
+/// std::invalid_argument for a cost out of range or a count of costs other than of edges.
+AnyGraphCheapestMatching cheapest_matching_any_graph(
+    std::uint32_t node_count, const std::vector<std::array<std::uint32_t, 2>>& edges,
+    const std::vector<std::int64_t>& costs, std::uint32_t threads = 1);
+
 }  // namespace petersen
