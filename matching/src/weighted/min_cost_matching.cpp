@@ -6,11 +6,11 @@
 #include <string>
 
 #include "../stopwatch.hpp"
+#include "blossom_solver.hpp"
+#include "breadth_first_order.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/tutte_berge.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
-#include "blossom_solver.hpp"
-#include "breadth_first_order.hpp"
 
 namespace petersen {
 
@@ -175,6 +175,7 @@ CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span
     check = verify_min_cost_perfect_matching(n, graph.edge_ends(), costs, cheapest.matching,
                                              cheapest.total_cost, cheapest.certificate);
     result.matching = std::move(cheapest.matching);
+    result.size = n / 2;  // the verifier has checked it perfect
     result.total_cost = cheapest.total_cost;
     result.stats = cheapest.stats;
   } else {
@@ -183,6 +184,7 @@ CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span
                                              cheapest.total_cost, cheapest.unmatched_cost,
                                              cheapest.certificate);
     result.matching = std::move(cheapest.matching);
+    result.size = cheapest.size;
     result.total_cost = cheapest.total_cost;
     result.stats = cheapest.stats;
   }
@@ -190,10 +192,6 @@ CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span
     throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
                            check.problem);
   }
-  result.size = static_cast<std::uint32_t>(
-      std::count_if(result.matching.mate_edge.begin(), result.matching.mate_edge.end(),
-                    [](EdgeId e) { return e != kNoEdge; }) /
-      2);
   if (result.size != maximum.size) {
     throw std::logic_error("internal error: the minimum-cost matching has " +
                            std::to_string(result.size) + " edges, the maximum " +
