@@ -42,6 +42,7 @@
 #include <functional>
 #include <iterator>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -203,7 +204,9 @@ class BlossomSolver {
     }
     member_heads_.assign(roots.size(), kEnd);
     parked_heads_.assign(roots.size(), kEnd);
+    if (roots.size() >= kBothEven) throw std::length_error("min-cost matching: 2^31 free nodes");
     alive_trees_ = roots.size();
+    tree_alive_.assign(roots.size(), 1);
     delta_ = 0;
     for (NodeId v = 0; v < n_; ++v) {
       rec_[v].mate = {mate_[v], kNone};
@@ -260,7 +263,6 @@ class BlossomSolver {
 
  private:
   enum : std::uint8_t { kUnlabelled = 0, kEven = 1, kOdd = 2 };
-  enum : std::uint8_t { kEdgeEvent = 0, kExpandEvent = 1 };
   static constexpr Cost kNoCost = INT64_MAX;
 
   struct Conn {
@@ -268,13 +270,16 @@ class BlossomSolver {
     EdgeId e;
   };
   // An edge event carries the edge's ends and doubled cost (checking it then reads no edge
-  // array); an expand event names its blossom in `id`.
+  // array), and its source: the tree of its even end when queued, with kBothEven when the other
+  // end was even too (see step). An expand event names its blossom in `id`, and no ends. 24
+  // bytes in all: the queue moves them.
   struct Event {
     Cost cost2;
     std::uint32_t id;  // an edge or a blossom
-    NodeId u, v;
-    std::uint8_t kind;  // 24 bytes in all: the queue moves them
+    NodeId u, v;       // kNone: an expand event
+    std::uint32_t source;
   };
+  static constexpr std::uint32_t kBothEven = 0x80000000u;
 
   // ---- duals
 
@@ -344,13 +349,12 @@ class BlossomSolver {
 
   // ---- the queue
 
-  void push_edge(std::int64_t key, const Slot& slot, NodeId from) {
-    queue_.push(static_cast<std::uint64_t>(key),
-                {slot.cost2, slot.edge, from, slot.other, kEdgeEvent});
+  void push_edge(std::int64_t key, const Slot& slot, NodeId from, std::uint32_t source) {
+    queue_.push(static_cast<std::uint64_t>(key), {slot.cost2, slot.edge, from, slot.other, source});
     ++stats_.queue_pushes;
   }
   void push_expand(std::int64_t key, std::uint32_t b) {
-    queue_.push(static_cast<std::uint64_t>(key), {0, b, kNone, kNone, kExpandEvent});
+    queue_.push(static_cast<std::uint64_t>(key), {0, b, kNone, kNone, kNone});
     ++stats_.queue_pushes;
   }
   std::span<const Slot> slots_of(NodeId v) const { return graph_.slots_of(v); }
@@ -463,11 +467,15 @@ class BlossomSolver {
       if (rec_[bw].label == kOdd) {
         if (rec_[bw].tree != rec_[bx].tree)
           parked_.push(parked_heads_[rec_[bw].tree],
-                       {slot.cost2, slot.edge, x, slot.other, kEdgeEvent});
+                       {slot.cost2, slot.edge, x, slot.other, rec_[bx].tree});
         continue;
       }
       const std::int64_t s = slot.cost2 + room - below_w - current_dual(bw);
-      push_edge(delta_ + (rec_[bw].label == kEven ? s / 2 : s), slot, x);
+      if (rec_[bw].label == kEven) {
+        push_edge(delta_ + s / 2, slot, x, rec_[bx].tree | kBothEven);
+      } else {
+        push_edge(delta_ + s, slot, x, rec_[bx].tree);
+      }
     }
   }
 
@@ -483,7 +491,7 @@ class BlossomSolver {
       for (const Slot& slot : slots_of(x)) {
         const std::uint32_t bw = find(slot.other, below_w);
         if (rec_[bw].label != kEven) continue;
-        push_edge(delta_ + slot.cost2 + room - below_w - current_dual(bw), slot, x);
+        push_edge(delta_ + slot.cost2 + room - below_w - current_dual(bw), slot, x, rec_[bw].tree);
       }
     }
   }
@@ -646,7 +654,7 @@ class BlossomSolver {
       delta_ = key;
       ++stats_.dual_updates;
     }
-    if (event.kind == kExpandEvent) {
+    if (event.u == kNone) {
       const std::uint32_t b = event.id;
       if (rec_[b].label != kOdd || rec_[b].parent != kNone) return;
       const std::int64_t d = current_dual(b);
@@ -657,6 +665,13 @@ class BlossomSolver {
       }
       return;
     }
+    // Queued from an even end to a node then not even, and that end's tree released since: the
+    // event is stale, dropped without reading either end's record (a likely cache miss each).
+    // Were the edge to matter again, another event covers it: an end labelled even again is
+    // scanned again, and the other end, if labelled even while the first one was, queued its
+    // own event (with kBothEven: such an event is kept, as its other end may still be even,
+    // its edge now losing slack at rate 1 instead of 2 and its key too late).
+    if ((event.source & kBothEven) == 0 && !tree_alive_[event.source]) return;
     const EdgeId e = event.id;
     NodeId u = event.u, v = event.v;
     std::int64_t below_u, below_v;
@@ -669,12 +684,16 @@ class BlossomSolver {
     }
     if (rec_[bu].label != kEven) return;
     if (rec_[bv].label == kOdd) {
-      if (rec_[bv].tree != rec_[bu].tree) parked_.push(parked_heads_[rec_[bv].tree], event);
+      if (rec_[bv].tree != rec_[bu].tree) {
+        event.source = rec_[bu].tree;
+        parked_.push(parked_heads_[rec_[bv].tree], event);
+      }
       return;
     }
     const std::int64_t s = event.cost2 - below_u - current_dual(bu) - below_v - current_dual(bv);
     if (rec_[bv].label == kEven) {
       if (s > 0) {
+        event.source = rec_[bu].tree | kBothEven;
         queue_.push(static_cast<std::uint64_t>(delta_ + s / 2), event);
         ++stats_.queue_pushes;
       } else if (rec_[bu].tree == rec_[bv].tree) {
@@ -688,6 +707,7 @@ class BlossomSolver {
         release(tv);
       }
     } else if (s > 0) {
+      event.source = rec_[bu].tree;
       queue_.push(static_cast<std::uint64_t>(delta_ + s), event);
       ++stats_.queue_pushes;
     } else {
@@ -711,6 +731,7 @@ class BlossomSolver {
   // whose dual is zero dissolve: they constrain nothing.
   void release(std::uint32_t t) {
     --alive_trees_;
+    tree_alive_[t] = 0;
     members_.drain(member_heads_[t], [&](std::uint32_t b) {
       if (rec_[b].label == kUnlabelled || rec_[b].parent != kNone || rec_[b].tree != t) return;
       settle(b);
@@ -980,6 +1001,7 @@ class BlossomSolver {
   ChainPool<Event> parked_;
   std::vector<std::uint32_t> parked_heads_;
   std::size_t alive_trees_ = 0;
+  std::vector<std::uint8_t> tree_alive_;    // by tree: 0 once released
   std::vector<std::uint32_t> dissolvable_;  // release: its blossoms of dual zero
   std::vector<NodeId> scratch_;
   std::vector<std::uint32_t> odd_children_;
