@@ -310,6 +310,19 @@ class BlossomSolver {
     return find_nested(v, below);
   }
   [[gnu::noinline]] std::uint32_t find_nested(NodeId v, std::int64_t& below) {
+    // Most walks take v's live shortcut to the top or to the blossom just below it: then no
+    // shortcut needs writing again.
+    if (const Shortcut& up = up_[v]; up.to != kNone && rec_[up.to].generation == up.generation) {
+      const std::uint32_t above = rec_[up.to].parent;
+      if (above == kNone) {
+        below = up.sum;
+        return up.to;
+      }
+      if (rec_[above].parent == kNone) {
+        below = up.sum + rec_[up.to].y;
+        return above;
+      }
+    }
     std::uint32_t x = v;
     std::int64_t sum = 0;
     walked_.clear();
