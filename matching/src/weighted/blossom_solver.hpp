@@ -81,7 +81,6 @@ class BlossomSolver {
     up_.reserve(ids_);
     children_.reserve(ids_ - n_);
     conn_.reserve(ids_ - n_);
-    mate_.assign(n_, kNoEdge);
     for (NodeId v = 0; v < n_; ++v) {
       base_[v] = v;
       // y_v = the cheapest cost at v (C/2): feasible whatever the signs of the costs.
@@ -95,7 +94,7 @@ class BlossomSolver {
   /// takes a tight edge to a free neighbour.
   void greedy_start() {
     for (NodeId v = 0; v < n_; ++v) {
-      if (mate_[v] != kNoEdge) continue;
+      if (rec_[v].mate.edge != kNoEdge) continue;
       Cost least = kNoCost;
       for (const Slot& slot : slots_of(v)) {
         least = std::min(least, slot.cost2 - rec_[v].y - rec_[slot.other].y);
@@ -103,8 +102,9 @@ class BlossomSolver {
       rec_[v].y += least;
       for (const Slot& slot : slots_of(v)) {
         const NodeId w = slot.other;
-        if (mate_[w] == kNoEdge && slot.cost2 - rec_[v].y - rec_[w].y == 0) {
-          mate_[v] = mate_[w] = slot.edge;
+        if (rec_[w].mate.edge == kNoEdge && slot.cost2 - rec_[v].y - rec_[w].y == 0) {
+          rec_[v].mate = {slot.edge, w};
+          rec_[w].mate = {slot.edge, v};
           break;
         }
       }
@@ -130,12 +130,12 @@ class BlossomSolver {
     Matching matching(n_);
     for (EdgeId i = 0; i < original.size(); ++i) {
       const auto [a, b] = ends[i];
-      if (mate_[a] == original[i]) matching.mate_edge[a] = matching.mate_edge[b] = i;
+      if (rec_[a].mate.edge == original[i]) matching.mate_edge[a] = matching.mate_edge[b] = i;
     }
     augment_matching(tight, matching, Augment::local);
     for (NodeId v = 0; v < n_; ++v) {
       const EdgeId i = matching.mate_edge[v];
-      mate_[v] = i == kNoEdge ? kNoEdge : original[i];
+      rec_[v].mate = i == kNoEdge ? Mate{} : Mate{original[i], tight.other_end(i, v)};
     }
   }
 
@@ -157,12 +157,6 @@ class BlossomSolver {
   /// node of the other part, and hands its root to a last round over the whole graph, after
   /// both parts. The parts share no node, so the result does not depend on the threads.
   void short_searches(std::uint32_t threads) {
-    for (NodeId v = 0; v < n_; ++v) {
-      rec_[v].mate = {mate_[v], kNone};
-      for (const Slot& slot : slots_of(v)) {
-        if (slot.edge == mate_[v]) rec_[v].mate.node = slot.other;
-      }
-    }
     const NodeId half = n_ / 2;
     std::array<ShortPart, 2> parts = {ShortPart{.lo = 0, .hi = half, .stamp = stamp_},
                                       ShortPart{.lo = half, .hi = n_, .stamp = stamp_}};
@@ -187,18 +181,25 @@ class BlossomSolver {
       stats_.short_labels += part->labels;
       stats_.short_augmentations += part->augmentations;
     }
-    for (NodeId v = 0; v < n_; ++v) mate_[v] = rec_[v].mate.edge;
   }
 
-  /// Grows the alternating trees of all free nodes at once until none is left. Throws
-  /// GraphError when no event is left while a tree is: then there is no perfect matching.
-  /// Out of line, so that a profile (callgrind --toggle-collect) can single out the search.
+  /// The nodes left free by the start (greedy_start, augment_tight, short_searches).
+  std::uint32_t free_nodes() const {
+    std::uint32_t free = 0;
+    for (NodeId v = 0; v < n_; ++v) free += rec_[v].mate.edge == kNoEdge;
+    return free;
+  }
+
+  /// Grows the alternating trees of all free nodes at once until none is left, then writes the
+  /// matching to `mate` (the constructor's). Throws GraphError when no event is left while a
+  /// tree is: then there is no perfect matching. Out of line, so that a profile (callgrind
+  /// --toggle-collect) can single out the search.
   [[gnu::noinline]] void run() {
     // Every root's dual is made even (lowering a free node's dual keeps every constraint), so
     // all labelled nodes share one parity and even-even slacks stay even (see the top).
     std::vector<NodeId> roots;
     for (NodeId v = 0; v < n_; ++v) {
-      if (mate_[v] != kNoEdge) continue;
+      if (rec_[v].mate.edge != kNoEdge) continue;
       roots.push_back(v);
       rec_[v].y -= rec_[v].y & 1;
     }
@@ -208,16 +209,11 @@ class BlossomSolver {
     alive_trees_ = roots.size();
     tree_alive_.assign(roots.size(), 1);
     delta_ = 0;
-    for (NodeId v = 0; v < n_; ++v) {
-      rec_[v].mate = {mate_[v], kNone};
-      for (const Slot& slot : slots_of(v)) {
-        if (slot.edge == mate_[v]) rec_[v].mate.node = slot.other;
-      }
-    }
     for (std::uint32_t t = 0; t < roots.size(); ++t) {
       label_even(top(roots[t]), kNone, roots[t], kNoEdge, t);
     }
     while (alive_trees_ > 0) step();
+    mate_.resize(n_);
     for (NodeId v = 0; v < n_; ++v) mate_[v] = rec_[v].mate.edge;
   }
 
@@ -958,8 +954,8 @@ class BlossomSolver {
 
   const BreadthFirstAdjacency& graph_;
   HugeVector<EdgeId>& mate_;
-  // During run(): a node's matched edge and the node across it (the grow step reads both at
-  // once); mate_ is filled from them when run() returns.
+  // A node's matched edge and the node across it (the grow step reads both at once), from the
+  // start on; mate_ is filled from them when run() returns.
   struct Mate {
     EdgeId edge = kNoEdge;
     NodeId node = kNone;

@@ -48,8 +48,7 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
     solver.augment_tight();
   }
   result.stats.init_seconds = init.seconds();
-  result.stats.free_after_init =
-      static_cast<std::uint32_t>(std::count(mate.begin(), mate.end(), kNoEdge));
+  result.stats.free_after_init = solver.free_nodes();
   Stopwatch searches;
   solver.run();
   result.stats.search_seconds = searches.seconds();
