@@ -205,7 +205,10 @@ class BlossomSolver {
     }
     member_heads_.assign(roots.size(), kEnd);
     parked_heads_.assign(roots.size(), kEnd);
-    if (roots.size() >= kBothEven) throw std::length_error("min-cost matching: 2^31 free nodes");
+    if (roots.size() >= kBothEven) {  // an event's source holds a tree id below 2^31
+      throw std::length_error("min-cost matching: " + std::to_string(roots.size()) +
+                              " free nodes after the start, at most 2^31 - 1 supported");
+    }
     alive_trees_ = roots.size();
     tree_alive_.assign(roots.size(), 1);
     delta_ = 0;
