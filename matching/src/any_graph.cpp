@@ -94,11 +94,9 @@ void match_general(std::uint32_t node_count, const std::vector<std::array<NodeId
   result.perfect = 2 * std::uint64_t{matched.size} == node_count;
 }
 
-}  // namespace
-
-AnyGraphMatching match_any_graph(std::uint32_t node_count,
-                                 const std::vector<std::array<std::uint32_t, 2>>& edges,
-                                 const Options& options) {
+// GraphError naming the first edge with an endpoint out of range, or too many edges.
+void check_edge_list(std::uint32_t node_count,
+                     const std::vector<std::array<std::uint32_t, 2>>& edges) {
   if (edges.size() >= kNoEdge) throw GraphError("more than 2^32 - 1 edges");
   for (EdgeId e = 0; e < edges.size(); ++e) {
     if (edges[e][0] >= node_count || edges[e][1] >= node_count) {
@@ -106,6 +104,14 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
                        std::to_string(node_count) + " nodes)");
     }
   }
+}
+
+}  // namespace
+
+AnyGraphMatching match_any_graph(std::uint32_t node_count,
+                                 const std::vector<std::array<std::uint32_t, 2>>& edges,
+                                 const Options& options) {
+  check_edge_list(node_count, edges);
   AnyGraphMatching result;
   if (std::optional<std::string> why = not_cubic(node_count, edges)) {
     result.note = std::move(*why);
@@ -119,7 +125,7 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
 AnyGraphCheapestMatching cheapest_matching_any_graph(
     std::uint32_t node_count, const std::vector<std::array<std::uint32_t, 2>>& edges,
     const std::vector<std::int64_t>& costs, std::uint32_t threads) {
-  if (edges.size() >= kNoEdge) throw GraphError("more than 2^32 - 1 edges");
+  check_edge_list(node_count, edges);
   if (costs.size() != edges.size()) {
     throw std::invalid_argument("min-cost matching: " + std::to_string(costs.size()) +
                                 " costs for " + std::to_string(edges.size()) + " edges");
@@ -128,10 +134,6 @@ AnyGraphCheapestMatching cheapest_matching_any_graph(
   std::vector<Cost> kept_costs;
   std::vector<EdgeId> input_edge;
   for (EdgeId e = 0; e < edges.size(); ++e) {
-    if (edges[e][0] >= node_count || edges[e][1] >= node_count) {
-      throw GraphError(edge_name(e, edges[e]) + " has an endpoint out of range (" +
-                       std::to_string(node_count) + " nodes)");
-    }
     if (edges[e][0] == edges[e][1]) continue;
     kept.push_back(edges[e]);
     kept_costs.push_back(costs[e]);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
@@ -230,6 +231,19 @@ std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle&
   return list;
 }
 
+// The indices of the edges matched in mate_edge (by node, kNoEdge when free), sorted: each edge
+// once, at its first end in `list`.
+std::vector<std::int64_t> matched_edges(const std::vector<std::array<NodeId, 2>>& list,
+                                        std::span<const EdgeId> mate_edge) {
+  std::vector<std::int64_t> matched;
+  for (NodeId v = 0; v < mate_edge.size(); ++v) {
+    const EdgeId e = mate_edge[v];
+    if (e != kNoEdge && list[e][0] == v) matched.push_back(e);
+  }
+  std::sort(matched.begin(), matched.end());
+  return matched;
+}
+
 // The options of perfect_matching and maximum_matching; lemon runs the peer.
 Options graph_options(const std::string& algorithm, const std::string& augment,
                       std::uint64_t seed) {
@@ -253,14 +267,9 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
     const Result result = perfect_matching(graph, options);
     const MatchingCheck check = verify_perfect_matching(graph, result.matching);
     if (!check.ok()) throw std::logic_error("the matching failed the verifier: " + check.message);
-    for (NodeId v = 0; v < n; ++v) {
-      const EdgeId e = result.matching.mate_edge[v];
-      if (graph.endpoints(e)[0] == v) matched.push_back(e);  // each edge once, from one end
-    }
-    std::sort(matched.begin(), matched.end());
+    matched = matched_edges(list, result.matching.mate_edge);
   }
-  const py::array_t<std::int64_t> out = int64_array(matched);
-  return out;
+  return int64_array(matched);
 }
 
 // A maximum matching of any graph (match_any_graph, verified): the sorted indices of its edges,
@@ -276,14 +285,9 @@ py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
   {
     py::gil_scoped_release release;
     result = match_any_graph(n, list, options);
-    for (NodeId v = 0; v < n; ++v) {
-      const EdgeId e = result.mate_edge[v];
-      if (e != kNoEdge && list[e][0] == v) matched.push_back(e);  // once, at its first end
-    }
-    std::sort(matched.begin(), matched.end());
+    matched = matched_edges(list, result.mate_edge);
   }
-  const py::array_t<std::int64_t> out = int64_array(matched);
-  return py::make_tuple(out, result.perfect, int64_array(result.tutte_set));
+  return py::make_tuple(int64_array(matched), result.perfect, int64_array(result.tutte_set));
 }
 
 // The cheapest maximum matching (cheapest_matching_any_graph, certified): the sorted indices of
@@ -303,11 +307,7 @@ py::tuple min_cost_matching_py(
   {
     py::gil_scoped_release release;
     result = cheapest_matching_any_graph(n, list, cost_list, threads);
-    for (NodeId v = 0; v < n; ++v) {
-      const EdgeId e = result.mate_edge[v];
-      if (e != kNoEdge && list[e][0] == v) matched.push_back(e);  // once, at its first end
-    }
-    std::sort(matched.begin(), matched.end());
+    matched = matched_edges(list, result.mate_edge);
   }
   return py::make_tuple(int64_array(matched), result.total_cost, result.perfect);
 }

@@ -80,6 +80,16 @@ Edges random_edges(std::uint32_t n, std::uint32_t m) {
   return edges;
 }
 
+// random_edges, and half the time a perfect matching besides (so that most graphs with an even
+// number of nodes have one).
+Edges random_edges_often_perfect(std::uint32_t n, std::uint32_t m) {
+  Edges edges = random_edges(n, m);
+  if (*rc::gen::arbitrary<bool>()) {
+    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
+  }
+  return edges;
+}
+
 std::span<const NodeId> ends_of(const CsrGraph& g) {
   return g.edge_ends();
 }
@@ -125,10 +135,7 @@ RC_GTEST_PROP(MinCostPerfect, GeneralGraphsEqualLemonAndAreCertified, ()) {
   // A random perfect matching plus random edges, so most graphs with an even number of nodes
   // have one; odd ones have none; negative costs too, with and without the greedy start.
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 120);
-  Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 4 * n));
-  if (*rc::gen::arbitrary<bool>()) {
-    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
-  }
+  const Edges edges = random_edges_often_perfect(n, *rc::gen::inRange<std::uint32_t>(0, 4 * n));
   const std::vector<Cost> costs = random_costs(edges.size(), -100, 100);
   const CsrGraph g = CsrGraph::from_edges(n, edges);
   const MinCostOptions options{.greedy_start = *rc::gen::arbitrary<bool>(),
@@ -198,10 +205,7 @@ RC_GTEST_PROP(MinCostMaximum, SizeEqualsLemonMaximumAndIsCertified, ()) {
 // is as large as LEMON's maximum and as cheap as the maximum solver's.
 RC_GTEST_PROP(CheapestMaximum, EqualsTheMaximumSolversOptimum, ()) {
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 80);
-  Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
-  if (*rc::gen::arbitrary<bool>()) {
-    for (NodeId v = 0; v + 1 < n; v += 2) edges.push_back({v, v + 1});
-  }
+  const Edges edges = random_edges_often_perfect(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
   const std::vector<Cost> costs = random_costs(edges.size(), -50, 1000);
   const CsrGraph g = CsrGraph::from_edges(n, edges);
   const CheapestMaximumResult r = cheapest_maximum_matching(g, costs);
