@@ -41,6 +41,7 @@
 #include <cstdint>
 #include <functional>
 #include <iterator>
+#include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -139,18 +140,21 @@ class BlossomSolver {
     }
   }
 
-  /// Short single-tree searches before the forest (see short_search): passes over the free
-  /// nodes with a label budget per search of 16, 32, .., 1024; a pass retries only the roots
-  /// whose search ran out of budget (one stopped by a blossom mostly stops there again:
-  /// retrying those too took 6.28M search labels instead of 5.65M on armadillo-sub2's dual, and
-  /// left the forest 2.2 % more labels). Measured (petersen_weighted_speed, armadillo-sub2's
-  /// dual): the free nodes 10.5 % -> 0.2 % and the forest's labels 5.66M -> 2.48M for 5.65M
-  /// labels of these searches, which cost about a third of the instructions each and fewer
-  /// misses (a search stays in a small neighbourhood, the forest's events come from everywhere).
-  /// A single pass at 64 left 0.9 % free and 3.9M forest labels: a search out of budget often
-  /// succeeds on a later pass, once the searches around have moved the duals. Budgets growing
-  /// 4x per pass left the forest nests of blossoms it peeled slowly (rocker-arm-sub3: 1.7x the
-  /// CPU time; see find_nested).
+  /// Short single-tree searches before the forest (see short_search), Blossom V's fractional
+  /// start (Kolmogorov 2009, section 5.1) with a label budget: a search ends at another free
+  /// node or at a node of a half cycle (augmenting), or where a tight edge closes an odd cycle
+  /// in its own tree (a half cycle, close_half_cycle), or at its budget. Passes over the free
+  /// nodes with a budget per search of 16, 32, .., 65,536; a pass retries only the roots whose
+  /// search ran out of budget (one that does often succeeds on a later pass, once the searches
+  /// around have moved the duals). The half cycles left at the end each give one free node, with
+  /// duals optimal for the matching polytope less its odd-set constraints and no blossom.
+  /// Measured (petersen_weighted_speed, stop 24): where stop 23's searches stopped at a blossom,
+  /// the forest's roots on the dual of rocker-arm-sub3 1,460 -> 300 (Blossom V's own count after
+  /// its start; 676, 780, 98 and 1,524 on the other large meshes, the same as Blossom V's), its
+  /// labels 3.60M -> 1.37M, for 10.8M labels of these searches instead of 9.3M; the solver
+  /// 1.82 -> 1.00 s. Budgets up to 1,024 left 886 roots there, 807 of them out of budget; a
+  /// single pass at 65,536 took 15.5M labels and 1.15 s; a first budget of 64 or 256 instead of
+  /// 16 changed nothing measurable.
   ///
   /// The searches run in two parts of the breadth-first numbering, [0, n/2) and [n/2, n), on
   /// `threads` threads (0: every core): a search stops, as at its budget, when it would read a
@@ -164,9 +168,9 @@ class BlossomSolver {
       if (rec_[v].mate.edge == kNoEdge) parts[v < half ? 0 : 1].roots.push_back(v);
     }
     // At most 16 labels a node in all (and one search's budget beyond, in each round): where
-    // searches keep running out of budget (free nodes far from any partner, which the shared
-    // meshes' duals do not have: 4.1-7.4 labels a node there), a free node could cost up to
-    // 2,047 labels before the forest takes over.
+    // searches keep running out of budget (free nodes far from any partner or half cycle, which
+    // the shared meshes' duals do not have: 2.0-9.7 labels a node there), a free node could cost
+    // up to 131,071 labels before the forest takes over.
     run_parallel(threads, 2, [&](std::uint32_t i) {
       short_passes(parts[i], std::uint64_t{16} * (parts[i].hi - parts[i].lo));
     });
@@ -180,6 +184,11 @@ class BlossomSolver {
     for (const ShortPart* part : {&parts[0], &parts[1], &whole}) {
       stats_.short_labels += part->labels;
       stats_.short_augmentations += part->augmentations;
+      stats_.short_half_cycles += part->cycles.size();
+      // The half cycles left each become matched edges and one free node, a root of the forest.
+      for (NodeId b : part->cycles) {
+        if (rec_[b].label == kHalf) break_cycle_at(b);
+      }
     }
   }
 
@@ -261,7 +270,9 @@ class BlossomSolver {
   }
 
  private:
-  enum : std::uint8_t { kUnlabelled = 0, kEven = 1, kOdd = 2 };
+  // kHalf: a node on a half-integral odd cycle of the short searches (see short_search), whose
+  // mate record then names its successor on the cycle; none is left when the forest starts.
+  enum : std::uint8_t { kUnlabelled = 0, kEven = 1, kOdd = 2, kHalf = 3 };
   static constexpr Cost kNoCost = INT64_MAX;
 
   struct Conn {
@@ -527,14 +538,16 @@ class BlossomSolver {
     std::vector<NodeId> handed_over{};  // roots whose search met a node of another part
     std::vector<ShortEvent> heap{};
     std::vector<NodeId> labelled{};
+    std::vector<NodeId> cycles{};  // a node of each half cycle closed (some since broken)
     std::uint64_t labels = 0, augmentations = 0;
   };
   enum class ShortEnd : std::uint8_t { done, budget, other_part };
 
-  // Passes over part.roots with budgets 16, 32, .., 1024 (see short_searches), until the part's
-  // searches have given `most` labels.
+  // Passes over part.roots with budgets 16, 32, .., kMostBudget (see short_searches), until the
+  // part's searches have given `most` labels.
+  static constexpr std::uint32_t kMostBudget = 65536;
   void short_passes(ShortPart& part, std::uint64_t most) {
-    for (std::uint32_t budget = 16; budget <= 1024 && !part.roots.empty(); budget *= 2) {
+    for (std::uint32_t budget = 16; budget <= kMostBudget && !part.roots.empty(); budget *= 2) {
       std::size_t left = 0;
       for (NodeId r : part.roots) {
         if (part.labels >= most) break;              // the forest takes the rest
@@ -557,9 +570,11 @@ class BlossomSolver {
   // One primal-dual search from free node `root` alone, on trivial blossoms only (it runs
   // before the forest, when there are no others): even nodes gain and odd nodes lose the
   // search's clock eps, the next event from a small binary heap. It augments at the first tight
-  // edge to another free node (done); it stops without augmenting at a tight edge between two
-  // even nodes (a blossom: done), once `budget` nodes are labelled (budget), or when it would
-  // read a node outside the part (other_part). Stopping anywhere leaves the duals feasible and
+  // edge to another free node or to a node of a half cycle, which it breaks (done); a tight edge
+  // between two of its even nodes closes a half cycle (done); it stops without augmenting once
+  // `budget` nodes are labelled (budget), or when it would read a node outside the part
+  // (other_part). Half cycles are never labelled, and those a part's searches close lie in the
+  // part. Stopping anywhere leaves the duals feasible and
   // every matched and tree edge tight (every constraint that eps tightens has its entry in the
   // heap, and eps never passes the least; a node just labelled even stops the search before
   // eps moves if one of its edges leaves the part), so the forest starts from wherever the
@@ -570,6 +585,10 @@ class BlossomSolver {
     part.labelled.clear();
     std::int64_t eps = 0;
     ShortEnd end = ShortEnd::done;
+    std::optional<ShortEvent> closing;
+    // An even root makes every even node's dual of one parity, so that an edge between two even
+    // nodes turns tight at a whole clock (lowering a free node's dual keeps every constraint).
+    rec_[root].y -= rec_[root].y & 1;
     auto in_tree = [&](NodeId v) { return mark_[v] == stamp; };
     // As in the forest, a labelled node stores y - eps (even) or y + eps (odd) from its label on.
     auto dual = [&](NodeId v) {
@@ -610,9 +629,11 @@ class BlossomSolver {
       const NodeId u = event.u, w = event.w;
       if (in_tree(w)) {
         if (rec_[w].label == kOdd) continue;                 // its slack no longer moves
-        if (event.cost2 - dual(u) - dual(w) >= 2) continue;  // keyed when w was unlabelled
-        break;                                               // a blossom
+        if (event.cost2 - dual(u) - dual(w) != 0) continue;  // keyed when w was unlabelled
+        closing = event;                                     // a half cycle
+        break;
       }
+      if (rec_[w].label == kHalf) break_cycle_at(w);
       if (rec_[w].mate.edge == kNoEdge) {
         // Flip the path from u to the root; (u, w) and every tree edge on it are tight.
         NodeId at = u, across = w;
@@ -649,7 +670,77 @@ class BlossomSolver {
       rec_[v].y = dual(v);
       rec_[v].label = kUnlabelled;
     }
+    if (closing) close_half_cycle(part, root, *closing);
     return end;
+  }
+
+  // The tight edge (u, w) joins two even nodes of root's search: flips the path from the root to
+  // their lowest common ancestor b and makes the odd cycle b .. u w .. b a half cycle, each of
+  // its edges matched by a half (Blossom V's fractional start, Kolmogorov 2009, section 5.1):
+  // the root is covered, every node of the cycle by two halves, and the duals stay optimal for
+  // the matching polytope without its odd-set constraints. The cycle's nodes are marked kHalf,
+  // each one's mate record naming its successor; a later search reaching one breaks the cycle
+  // (break_cycle_at), round_half_cycles turns the rest into matched edges and one free node
+  // each. The search's tree edges are still in link_ and the nodes' mates.
+  void close_half_cycle(ShortPart& part, NodeId root, const ShortEvent& closing) {
+    const NodeId u = closing.u, w = closing.w;
+    const std::uint32_t stamp = ++part.stamp;
+    auto parent = [&](NodeId z) { return link_[rec_[z].mate.node].from; };  // z even, not root
+    for (NodeId z = u;; z = parent(z)) {
+      mark_[z] = stamp;
+      if (z == root) break;
+    }
+    NodeId b = w;
+    while (mark_[b] != stamp) b = parent(b);
+    if (b != root) {  // the stem: each odd node takes its tree parent as mate
+      NodeId odd = rec_[b].mate.node;
+      for (;;) {
+        const TreeLink link = link_[odd];
+        const Mate old = rec_[link.from].mate;
+        rec_[odd].mate = {link.edge, link.from};
+        rec_[link.from].mate = {link.edge, odd};
+        if (old.edge == kNoEdge) break;  // the root
+        odd = old.node;
+      }
+    }
+    // w's side runs up to b (each even node's successor is its mate already), u's side down
+    // from b, then (u, w) closes the cycle.
+    for (NodeId z = w; z != b;) {
+      const NodeId odd = rec_[z].mate.node;
+      rec_[odd].mate = {link_[odd].edge, link_[odd].from};
+      z = link_[odd].from;
+    }
+    Mate below = rec_[u].mate;
+    for (NodeId z = u; z != b;) {
+      const NodeId odd = below.node, up = link_[odd].from;
+      const Mate next = rec_[up].mate;
+      rec_[odd].mate = {below.edge, z};
+      rec_[up].mate = {link_[odd].edge, odd};
+      z = up;
+      below = next;
+    }
+    rec_[u].mate = {closing.edge, w};
+    NodeId at = b;
+    do {
+      rec_[at].label = kHalf;
+      at = rec_[at].mate.node;
+    } while (at != b);
+    part.cycles.push_back(b);
+  }
+
+  // Breaks w's half cycle: the path of the others, from w's successor round to its predecessor,
+  // is matched in pairs of whole edges, and w is left to the caller, without a mate.
+  void break_cycle_at(NodeId w) {
+    NodeId at = rec_[w].mate.node;
+    while (at != w) {
+      const Mate next = rec_[at].mate;
+      const NodeId after = rec_[next.node].mate.node;
+      rec_[next.node].mate = {next.edge, at};
+      rec_[at].label = rec_[next.node].label = kUnlabelled;
+      at = after;
+    }
+    rec_[w].label = kUnlabelled;
+    rec_[w].mate = {};
   }
 
   // ---- the forest

@@ -83,6 +83,7 @@ struct MinCostStats {
   std::uint64_t released_scans = 0;  ///< nodes scanned on leaving an expanded odd blossom
   std::uint64_t short_labels = 0;    ///< labels given by the short single-tree searches
   std::uint64_t short_augmentations = 0;
+  std::uint64_t short_half_cycles = 0;  ///< half-integral odd cycles the short searches closed
 };
 
 struct MinCostResult {
