@@ -144,17 +144,19 @@ class BlossomSolver {
   /// start (Kolmogorov 2009, section 5.1) with a label budget: a search ends at another free
   /// node or at a node of a half cycle (augmenting), or where a tight edge closes an odd cycle
   /// in its own tree (a half cycle, close_half_cycle), or at its budget. Passes over the free
-  /// nodes with a budget per search of 16, 32, .., 65,536; a pass retries only the roots whose
-  /// search ran out of budget (one that does often succeeds on a later pass, once the searches
-  /// around have moved the duals). The half cycles left at the end each give one free node, with
-  /// duals optimal for the matching polytope less its odd-set constraints and no blossom.
-  /// Measured (petersen_weighted_speed, stop 24): where stop 23's searches stopped at a blossom,
-  /// the forest's roots on the dual of rocker-arm-sub3 1,460 -> 300 (Blossom V's own count after
-  /// its start; 676, 780, 98 and 1,524 on the other large meshes, the same as Blossom V's), its
-  /// labels 3.60M -> 1.37M, for 10.8M labels of these searches instead of 9.3M; the solver
-  /// 1.82 -> 1.00 s. Budgets up to 1,024 left 886 roots there, 807 of them out of budget; a
-  /// single pass at 65,536 took 15.5M labels and 1.15 s; a first budget of 64 or 256 instead of
-  /// 16 changed nothing measurable.
+  /// nodes with a budget per search of 16, 128, 1,024, 8,192 and 65,536; a pass retries only the
+  /// roots whose search ran out of budget (one that does often succeeds on a later pass, once
+  /// the searches around have moved the duals). The half cycles left at the end each give one
+  /// free node, with duals optimal for the matching polytope less its odd-set constraints and
+  /// no blossom. Measured (petersen_weighted_speed, stop 24): where stop 23's searches stopped
+  /// at a blossom, the forest's roots on the dual of rocker-arm-sub3 1,460 -> 300 (Blossom V's
+  /// own count after its start; 676, 780, 98 and 1,524 on the other large meshes, the same as
+  /// Blossom V's), its labels 3.60M -> 1.37M, for 10.8M labels of these searches instead of
+  /// 9.3M; the solver 1.82 -> 1.00 s. Budgets doubling up to 1,024 left 886 roots there, 807 of
+  /// them out of budget; a single pass at 65,536 took 15.5M labels and 1.15 s. With budgets
+  /// doubling, 71 % of the searches' labels went to searches that ran out (rocker-arm-sub3's
+  /// dual); growing 8x per pass the searches take 8.8M labels (fertility-sub3's 5.6M -> 4.5M)
+  /// and leave the same roots; 4x and 16x did about as well.
   ///
   /// The searches run in two parts of the breadth-first numbering, [0, n/2) and [n/2, n), on
   /// `threads` threads (0: every core): a search stops, as at its budget, when it would read a
@@ -543,11 +545,11 @@ class BlossomSolver {
   };
   enum class ShortEnd : std::uint8_t { done, budget, other_part };
 
-  // Passes over part.roots with budgets 16, 32, .., kMostBudget (see short_searches), until the
-  // part's searches have given `most` labels.
+  // Passes over part.roots with budgets 16, 128, .., kMostBudget (see short_searches), until
+  // the part's searches have given `most` labels.
   static constexpr std::uint32_t kMostBudget = 65536;
   void short_passes(ShortPart& part, std::uint64_t most) {
-    for (std::uint32_t budget = 16; budget <= kMostBudget && !part.roots.empty(); budget *= 2) {
+    for (std::uint32_t budget = 16; budget <= kMostBudget && !part.roots.empty(); budget *= 8) {
       std::size_t left = 0;
       for (NodeId r : part.roots) {
         if (part.labels >= most) break;              // the forest takes the rest
