@@ -78,12 +78,24 @@ BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<cons
   order.new_node.assign(n, kNoNode);
   HugeVector<NodeId> old_node(n);  // by new id: the visiting order, the search's queue
   std::uint32_t visited = 0;
+  constexpr std::uint32_t kAhead = 8;
   Slot* last = order.slots.data();
   for (NodeId root = 0; root < n; ++root) {
     if (order.new_node[root] != kNoNode) continue;
     order.new_node[root] = visited;
     old_node[visited++] = root;
     for (NodeId head = order.new_node[root]; head < visited; ++head) {
+      // The node 8 places ahead in the queue has its costs and its neighbours' new ids
+      // requested now, which the visit below would otherwise wait for one miss at a time:
+      // the search 0.095 -> 0.077 s on rocker-arm-sub3's dual, 5.5 -> 4.5 ms on armadillo's
+      // (medians of five; 4, 16 and 32 places ahead did about as well).
+      if (head + kAhead < visited) {
+        const NodeId ahead = old_node[head + kAhead];
+        for (EdgeId e : graph.incident_edges(ahead)) {
+          __builtin_prefetch(&costs[e]);
+          __builtin_prefetch(&order.new_node[graph.other_end(e, ahead)]);
+        }
+      }
       const NodeId v = old_node[head];
       if (order.uniform_degree == 0) order.first_slot[head] = last - order.slots.data();
       Slot* const first = last;
