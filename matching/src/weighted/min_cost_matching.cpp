@@ -30,8 +30,8 @@ void check_costs(std::span<const Cost> costs, std::uint32_t edge_count, Cost lim
 }
 
 // The solver runs on the breadth-first renumbering (breadth_first_order.hpp says why: 4x fewer
-// cache misses per scanned neighbour on subdivided meshes); the matching and the node duals are
-// mapped back to the input's ids, the odd sets need no mapping.
+// cache misses per scanned neighbour on subdivided meshes); it writes the matching and the node
+// duals in the input's ids, the odd sets need no mapping.
 template <class Graph>
 MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
                     const MinCostOptions& options) {
@@ -39,8 +39,7 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
   Stopwatch init;
   const weighted_detail::BreadthFirstAdjacency order =
       weighted_detail::breadth_first_adjacency(graph, costs);
-  HugeVector<EdgeId> mate;
-  weighted_detail::BlossomSolver solver(order, mate, result.stats);
+  weighted_detail::BlossomSolver solver(order, result.stats);
   if (options.greedy_start) solver.greedy_start();
   if (options.short_searches) {
     solver.short_searches(options.threads);
@@ -53,24 +52,8 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
   solver.run();
   result.stats.search_seconds = searches.seconds();
   Stopwatch certificate;
-  MatchingCertificate ordered = solver.certificate();
-  const std::uint32_t n = graph.node_count();
-  result.matching = Matching(n);
-  result.certificate.node_dual.resize(n);
-  result.certificate.node_set.resize(n);
-  for (NodeId v = 0; v < n; ++v) {
-    const NodeId w = order.new_node[v];
-    result.matching.mate_edge[v] = mate[w];
-    result.certificate.node_dual[v] = ordered.node_dual[w];
-    result.certificate.node_set[v] = ordered.node_set[w];
-  }
-  result.certificate.set_parent = std::move(ordered.set_parent);
-  result.certificate.set_dual = std::move(ordered.set_dual);
+  solver.write_result(order.new_node, result);
   result.stats.certificate_seconds = certificate.seconds();
-  for (NodeId v = 0; v < graph.node_count(); ++v) {
-    const EdgeId e = result.matching.mate_edge[v];
-    if (graph.endpoints(e)[0] == v) result.total_cost += costs[e];
-  }
   return result;
 }
 
