@@ -44,8 +44,10 @@ struct MatchReport {
   const MatchArgs& args;
   GraphFormat format;
   const GraphFile& graph;
-  const AnyGraphMatching& matched;
+  const std::optional<AnyGraphMatching>& matched;           // by --algorithm (see run_match)
   const std::optional<AnyGraphCheapestMatching>& cheapest;  // --objective cost
+  std::uint32_t size;
+  bool perfect;
   double read_seconds, cost_seconds, match_seconds, write_seconds, total_seconds;
   bool written;
 };
@@ -54,13 +56,15 @@ void write_stats_json(const MatchReport& r) {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(r.args.stats_json.c_str(), "w"),
                                                        &std::fclose);
   if (!file) throw std::runtime_error("cannot write " + r.args.stats_json);
-  const Stats& s = r.matched.stats;
   std::FILE* out = file.get();
   std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"format\": %s,\n",
                json_string(r.args.input).c_str(), json_string(r.args.output).c_str(),
                json_string(std::string(to_string(r.format))).c_str());
   std::fprintf(out, "  \"algorithm\": %s,\n  \"augment\": %s,\n  \"objective\": %s,\n",
-               json_string(r.matched.cubic_bridgeless ? r.args.algorithm : "augment").c_str(),
+               json_string(!r.matched                    ? "min-cost"
+                           : r.matched->cubic_bridgeless ? r.args.algorithm
+                                                         : "augment")
+                   .c_str(),
                json_string(r.args.augment).c_str(), json_string(r.args.objective).c_str());
   if (r.cheapest) {
     std::fprintf(out,
@@ -70,26 +74,31 @@ void write_stats_json(const MatchReport& r) {
   }
   std::fprintf(out,
                "  \"nodes\": %" PRIu32
-               ",\n  \"edges\": %zu,\n  \"cubic_bridgeless\": %s,\n"
-               "  \"note\": %s,\n  \"perfect\": %s,\n  \"matched_edges\": %" PRIu32
+               ",\n  \"edges\": %zu,\n  \"perfect\": %s,\n  \"matched_edges\": %" PRIu32
                ",\n  \"unmatched_nodes\": %" PRIu64 ",\n  \"written\": %s,\n",
-               r.graph.node_count, r.graph.edges.size(),
-               r.matched.cubic_bridgeless ? "true" : "false", json_string(r.matched.note).c_str(),
-               r.matched.perfect ? "true" : "false", r.matched.size,
-               std::uint64_t{r.graph.node_count} - 2 * std::uint64_t{r.matched.size},
+               r.graph.node_count, r.graph.edges.size(), r.perfect ? "true" : "false", r.size,
+               std::uint64_t{r.graph.node_count} - 2 * std::uint64_t{r.size},
                r.written ? "true" : "false");
+  if (r.matched) {  // the run by --algorithm, when there was one
+    const Stats& s = r.matched->stats;
+    std::fprintf(out, "  \"cubic_bridgeless\": %s,\n  \"note\": %s,\n",
+                 r.matched->cubic_bridgeless ? "true" : "false",
+                 json_string(r.matched->note).c_str());
+    std::fprintf(out,
+                 "  \"augmenting_paths\": %" PRIu64 ",\n  \"blossoms\": %" PRIu64
+                 ",\n  \"reductions\": %" PRIu64
+                 ",\n  \"schrijver\": %s,\n  \"ordered_sweep\": %s,\n",
+                 s.augmenting_paths, s.blossoms, s.reductions, s.schrijver ? "true" : "false",
+                 s.ordered_sweep ? "true" : "false");
+    std::fprintf(out,
+                 "  \"validate_seconds\": %.6f,\n  \"initial_seconds\": %.6f,\n  "
+                 "\"augment_seconds\": %.6f,\n",
+                 s.validate_seconds, s.initial_seconds, s.augment_seconds);
+  }
   std::fprintf(out,
-               "  \"augmenting_paths\": %" PRIu64 ",\n  \"blossoms\": %" PRIu64
-               ",\n  \"reductions\": %" PRIu64
-               ",\n  \"schrijver\": %s,\n  \"ordered_sweep\": %s,\n",
-               s.augmenting_paths, s.blossoms, s.reductions, s.schrijver ? "true" : "false",
-               s.ordered_sweep ? "true" : "false");
-  std::fprintf(out,
-               "  \"read_seconds\": %.6f,\n  \"validate_seconds\": %.6f,\n  \"initial_seconds\": "
-               "%.6f,\n  \"augment_seconds\": %.6f,\n  \"match_seconds\": %.6f,\n  "
+               "  \"read_seconds\": %.6f,\n  \"match_seconds\": %.6f,\n  "
                "\"write_seconds\": %.6f,\n  \"total_seconds\": %.6f\n}\n",
-               r.read_seconds, s.validate_seconds, s.initial_seconds, s.augment_seconds,
-               r.match_seconds, r.write_seconds, r.total_seconds);
+               r.read_seconds, r.match_seconds, r.write_seconds, r.total_seconds);
 }
 
 }  // namespace
@@ -153,34 +162,40 @@ int run_match(const MatchArgs& args) {
   }
   const double read_seconds = seconds_since(start);
   auto clock = std::chrono::steady_clock::now();
-  // match_any_graph verifies every answer (the perfect one, or the maximum one by its
-  // Tutte-Berge witness) before returning it.
-  const AnyGraphMatching matched = match_any_graph(graph.node_count, graph.edges,
-                                                   {.algorithm = *algorithm,
-                                                    .augment = *augment,
-                                                    .seed = args.seed,
-                                                    .peer = &lemon_peer::maximum_matching});
-  // The cheapest maximum matching, certified inside (cheapest_matching_any_graph).
+  // The matching by --algorithm, unless only the cheapest is wanted (it finds the maximum size
+  // itself): with --objective cost, only to tell first whether a perfect one exists. Both
+  // verify what they return (a perfect matching; a maximum one by its Tutte-Berge witness; the
+  // cheapest by its dual solution).
+  std::optional<AnyGraphMatching> matched;
+  if (!by_cost || args.require_perfect) {
+    matched = match_any_graph(graph.node_count, graph.edges,
+                              {.algorithm = *algorithm,
+                               .augment = *augment,
+                               .seed = args.seed,
+                               .peer = &lemon_peer::maximum_matching});
+  }
   std::optional<AnyGraphCheapestMatching> cheapest;
   const auto cost_clock = std::chrono::steady_clock::now();
-  if (by_cost && (matched.perfect || !args.require_perfect)) {
+  if (by_cost && (!matched || matched->perfect)) {
     cheapest = cheapest_matching_any_graph(graph.node_count, graph.edges, graph.costs, 0);
   }
   const double cost_seconds = seconds_since(cost_clock);
   const double match_seconds = seconds_since(clock);
-  const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{matched.size};
+  const std::uint32_t size = cheapest ? cheapest->size : matched->size;
+  const bool perfect = cheapest ? cheapest->perfect : matched->perfect;
+  const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{size};
 
-  if (!matched.cubic_bridgeless && !by_cost) {
+  if (!by_cost && !matched->cubic_bridgeless) {
     std::fprintf(stderr,
                  "petersen: note: %s is not cubic and bridgeless (%s): a maximum matching "
                  "instead, %" PRIu32 " edges, %" PRIu64 " nodes unmatched\n",
-                 args.input.c_str(), matched.note.c_str(), matched.size, unmatched);
+                 args.input.c_str(), matched->note.c_str(), size, unmatched);
   }
-  const bool write = matched.perfect || !args.require_perfect;
+  const bool write = perfect || !args.require_perfect;
   clock = std::chrono::steady_clock::now();
   if (write) {
     write_file_bytes(args.output, cheapest ? matched_edge_lines(graph, cheapest->mate_edge)
-                                           : matched_edge_lines(graph, matched.mate_edge));
+                                           : matched_edge_lines(graph, matched->mate_edge));
   }
   const double write_seconds = seconds_since(clock);
   const double total_seconds = seconds_since(start);
@@ -189,10 +204,10 @@ int run_match(const MatchArgs& args) {
               std::string(to_string(format ? *format : graph_format_of(args.input))).c_str(),
               graph.node_count, graph.edges.size());
   std::printf("matching    %s: %s, %" PRIu32 " edges, %" PRIu64 " nodes unmatched (%.4f s)\n",
-              cheapest                   ? "min-cost"
-              : matched.cubic_bridgeless ? args.algorithm.c_str()
-                                         : "augmenting paths",
-              matched.perfect ? "perfect" : "maximum", matched.size, unmatched, match_seconds);
+              cheapest                    ? "min-cost"
+              : matched->cubic_bridgeless ? args.algorithm.c_str()
+                                          : "augmenting paths",
+              perfect ? "perfect" : "maximum", size, unmatched, match_seconds);
   if (cheapest) {
     std::printf("cost        %" PRId64 " (minimum certified, %.4f s)\n", cheapest->total_cost,
                 cost_seconds);
@@ -203,8 +218,8 @@ int run_match(const MatchArgs& args) {
   std::printf("total       %.4f s\n", total_seconds);
   if (!args.stats_json.empty()) {
     write_stats_json({args, format ? *format : graph_format_of(args.input), graph, matched,
-                      cheapest, read_seconds, cost_seconds, match_seconds, write_seconds,
-                      total_seconds, write});
+                      cheapest, size, perfect, read_seconds, cost_seconds, match_seconds,
+                      write_seconds, total_seconds, write});
   }
   if (!write) {
     std::fprintf(stderr, "petersen: %s has no perfect matching; nothing written to %s\n",

@@ -210,11 +210,24 @@ TEST_F(MatchCommand, CostsWithoutAPerfectMatchingGiveTheCheapestMaximumOne) {
             std::to_string(costs[e]) + "\n";
   }
   write(path("w.txt"), text);
-  ASSERT_EQ(run(path("w.txt") + " " + path("m.txt") + " --objective cost"), 0) << err_;
+  ASSERT_EQ(run(path("w.txt") + " " + path("m.txt") + " --objective cost --stats-json " +
+                path("stats.json")),
+            0)
+      << err_;
   EXPECT_EQ(err_, "");  // no note on cubic graphs: the objective is the cost
   const std::string matching = read(path("m.txt"));
   EXPECT_EQ(read_back(matching, 8, edges, 0), 3);
   EXPECT_EQ(cost_of(matching, edges, costs), 8);
+  // Only the cheapest maximum matching ran (it finds the maximum size itself), and says so.
+  const std::string stats = read(path("stats.json"));
+  EXPECT_NE(stats.find("\"algorithm\": \"min-cost\""), std::string::npos) << stats;
+  EXPECT_NE(stats.find("\"perfect\": false,\n  \"matched_edges\": 3,\n  \"unmatched_nodes\": 2"),
+            std::string::npos)
+      << stats;
+  EXPECT_EQ(stats.find("\"augmenting_paths\""), std::string::npos) << stats;
+  // Asked for a perfect one first, it tells there is none and writes nothing.
+  EXPECT_EQ(run(path("w.txt") + " " + path("m2.txt") + " --objective cost --require-perfect"), 3);
+  EXPECT_FALSE(fs::exists(path("m2.txt")));
   // Without costs the objective cannot be met: refused, naming the file.
   write(path("plain.txt"), "0 1\n1 2\n2 3\n");
   EXPECT_EQ(run(path("plain.txt") + " " + path("p.txt") + " --objective cost"), 1);
