@@ -115,12 +115,21 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
     }
   }
   std::vector<Wide> chain(sets, 0);  // the values of s and every set above it
-  for (std::uint32_t s : order)
+  std::vector<std::uint32_t> outermost(sets);
+  for (std::uint32_t s : order) {
     chain[s] = c.set_dual[s] + (parent[s] == kNoSet ? 0 : chain[parent[s]]);
+    outermost[s] = parent[s] == kNoSet ? s : outermost[parent[s]];
+  }
 
-  // The smallest set holding both u and v (kNoSet: none).
+  // The smallest set holding both u and v (kNoSet: none). Sets under different outermost ones
+  // share none, nor does a set with no set: most edges leaving a set are settled so, where the
+  // walk up from the deeper end made the whole check 2.2-2.4x slower on the duals of
+  // fertility-sub3 and rocker-arm-sub3 (0.152 -> 0.064 s, 0.365 -> 0.150 s), whose blossoms
+  // nest deeply.
   auto common = [&](NodeId u, NodeId v) {
     std::uint32_t a = innermost[u], b = innermost[v];
+    if (a == b) return a;
+    if (a == kNoSet || b == kNoSet || outermost[a] != outermost[b]) return kNoSet;
     while (a != b) {
       if (a == kNoSet || (b != kNoSet && depth[b] > depth[a])) std::swap(a, b);
       a = parent[a];
