@@ -136,6 +136,33 @@ TEST(AnyGraphCheapest, SkipsLoopsAndRefusesBadInput) {
   EXPECT_THROW(cheapest_matching_any_graph(3, edges, {1, 2, kMaxCost + 1}), std::invalid_argument);
 }
 
+// Cubic and bridgeless graphs take the perfect solver straight away (Petersen's theorem); with a
+// bridge or another degree, the maximum one: both cost what LEMON's optimum costs when there is a
+// perfect matching, in the edge list's ids.
+RC_GTEST_PROP(AnyGraphCheapest, CubicBridgelessOrNotEqualsLemon, ()) {
+  const bool bridgeless = *rc::gen::arbitrary<bool>();
+  const CubicGraph c = bridgeless ? *rc::gen::arbitrary<CubicGraph>()
+                                  : (*testing::cubic_graphs_with_a_bridge()).graph;
+  const testing::EdgeList edges = testing::edge_list(c);
+  const std::vector<std::int64_t> costs = *rc::gen::container<std::vector<std::int64_t>>(
+      edges.size(), rc::gen::inRange<std::int64_t>(-50, 500));
+  const AnyGraphCheapestMatching m = cheapest_matching_any_graph(c.node_count(), edges, costs, 2);
+  std::int64_t total = 0;
+  for (NodeId v = 0; v < c.node_count(); ++v) {
+    const std::uint32_t e = m.mate_edge[v];
+    if (e == kNoEdge) continue;
+    RC_ASSERT(edges[e][0] == v || edges[e][1] == v);
+    RC_ASSERT(m.mate_edge[edges[e][0] == v ? edges[e][1] : edges[e][0]] == e);
+    if (edges[e][0] == v) total += costs[e];
+  }
+  RC_ASSERT(total == m.total_cost);
+  const std::optional<std::int64_t> lemon =
+      testing::lemon_min_cost_perfect(c.node_count(), edges, costs);
+  RC_ASSERT(m.perfect == lemon.has_value());
+  if (lemon) RC_ASSERT(m.total_cost == *lemon);
+  RC_TAG(bridgeless ? "bridgeless" : "a bridge", m.perfect ? "perfect" : "not perfect");
+}
+
 // The BGL adaptor's minimum-cost matching on a graph with an edge_weight property of integers:
 // a maximum matching (Boost's size) whose cost, read back through the mate map, is LEMON's
 // weighted optimum when the graph has a perfect matching, and the doubled-graph solver's
