@@ -603,11 +603,10 @@ class BlossomSolver {
   // between two of its even nodes closes a half cycle (done); it stops without augmenting once
   // `budget` nodes are labelled (budget), or when it would read a node outside the part
   // (other_part). Half cycles are never labelled, and those a part's searches close lie in the
-  // part. Stopping anywhere leaves the duals feasible and
-  // every matched and tree edge tight (every constraint that eps tightens has its entry in the
-  // heap, and eps never passes the least; a node just labelled even stops the search before
-  // eps moves if one of its edges leaves the part), so the forest starts from wherever the
-  // searches stopped.
+  // part. Stopping anywhere leaves the duals feasible and every matched, half-matched and tree
+  // edge tight (every constraint that eps tightens has its entry in the heap, and eps never
+  // passes the least; a node just labelled even stops the search before eps moves if one of its
+  // edges leaves the part), so the forest starts from wherever the searches stopped.
   ShortEnd short_search(ShortPart& part, NodeId root, std::uint32_t budget) {
     const std::uint32_t stamp = ++part.stamp;
     part.heap.clear();
@@ -709,8 +708,8 @@ class BlossomSolver {
   // the root is covered, every node of the cycle by two halves, and the duals stay optimal for
   // the matching polytope without its odd-set constraints. The cycle's nodes are marked kHalf,
   // each one's mate record naming its successor; a later search reaching one breaks the cycle
-  // (break_cycle_at), round_half_cycles turns the rest into matched edges and one free node
-  // each. The search's tree edges are still in link_ and the nodes' mates.
+  // (break_cycle_at), and short_searches breaks those left at its end, each leaving one free
+  // node. The search's tree edges are still in link_ and the nodes' mates.
   void close_half_cycle(ShortPart& part, NodeId root, const ShortEvent& closing) {
     const NodeId u = closing.u, w = closing.w;
     const std::uint32_t stamp = ++part.stamp;
