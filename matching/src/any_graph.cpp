@@ -9,7 +9,6 @@
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
-#include "petersen/matching/verify_min_cost.hpp"
 #include "stopwatch.hpp"
 
 namespace petersen {
@@ -131,30 +130,6 @@ AnyGraphCheapestMatching cheapest_matching_any_graph(
     throw std::invalid_argument("min-cost matching: " + std::to_string(costs.size()) +
                                 " costs for " + std::to_string(edges.size()) + " edges");
   }
-  AnyGraphCheapestMatching result;
-  if (!not_cubic(node_count, edges)) {
-    const CubicGraph cubic = CubicGraph::from_edges(node_count, edges);
-    if (!find_bridge(cubic)) {
-      // Petersen's theorem: a perfect matching exists, so the cheapest perfect one is the
-      // cheapest maximum one, and no maximum matching needs finding first (`petersen match
-      // --objective cost` on rocker-arm-sub3's dual with its quality costs: 1.79-1.92 ->
-      // 1.51-1.63 s).
-      const MinCostResult cheapest = min_cost_perfect_matching(cubic, costs, {.threads = threads});
-      if (const CertificateCheck check = verify_min_cost_perfect_matching(
-              node_count, cubic.edge_ends(), costs, cheapest.matching, cheapest.total_cost,
-              cheapest.certificate);
-          !check.ok()) {
-        throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
-                               check.problem);
-      }
-      result.mate_edge.assign(cheapest.matching.mate_edge.begin(),
-                              cheapest.matching.mate_edge.end());
-      result.size = node_count / 2;  // the verifier has checked it perfect
-      result.perfect = true;
-      result.total_cost = cheapest.total_cost;
-      return result;
-    }
-  }
   std::vector<std::array<NodeId, 2>> kept;
   std::vector<Cost> kept_costs;
   std::vector<EdgeId> input_edge;
@@ -166,6 +141,7 @@ AnyGraphCheapestMatching cheapest_matching_any_graph(
   }
   const CheapestMaximumResult cheapest = cheapest_maximum_matching(
       CsrGraph::from_edges(node_count, kept), kept_costs, {.threads = threads});
+  AnyGraphCheapestMatching result;
   result.mate_edge.resize(node_count, kNoEdge);
   for (NodeId v = 0; v < node_count; ++v) {
     const EdgeId e = cheapest.matching.mate_edge[v];

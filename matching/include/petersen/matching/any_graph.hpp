@@ -55,11 +55,10 @@ struct AnyGraphCheapestMatching {
 
 /// The matching of least total cost among the maximum matchings of any graph given as an edge
 /// list, with one integer cost per edge (at most 2^40 in absolute value): the common core of
-/// `petersen match --objective cost`, Python's min_cost_matching and the adaptors. A cubic
-/// bridgeless graph goes to min_cost_perfect_matching (it has a perfect matching: Petersen's
-/// theorem); otherwise loops, which no matching has, are left out and the rest goes to
-/// cheapest_maximum_matching (min_cost_matching.hpp). Either answer's dual solution is checked
-/// by the independent verifier before it returns. `threads` as MinCostOptions::threads (0: every core; the answer does not
+/// `petersen match --objective cost`, Python's min_cost_matching and the adaptors. Loops, which
+/// no matching has, are left out; the rest goes to cheapest_maximum_matching
+/// (min_cost_matching.hpp), which checks the answer's dual solution by the independent verifier
+/// before it returns. `threads` as MinCostOptions::threads (0: every core; the answer does not
 /// depend on it). Throws GraphError naming the first edge with an endpoint out of range,
 /// std::invalid_argument for a cost out of range or a count of costs other than of edges.
 AnyGraphCheapestMatching cheapest_matching_any_graph(

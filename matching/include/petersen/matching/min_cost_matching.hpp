@@ -144,11 +144,13 @@ struct CheapestMaximumResult {
 };
 
 /// The cheapest maximum matching of any graph, for callers that do not know whether it has a
-/// perfect one: a maximum matching (maximum_matching, its Tutte–Berge witness checked) tells,
-/// then min_cost_perfect_matching runs when it is perfect and min_cost_maximum_matching (twice
-/// the work) when not. The answer's certificate is checked by verify_min_cost_perfect_matching
-/// or verify_min_cost_maximum_matching, and its size against the maximum's, before it returns
-/// (std::logic_error if not: a bug). Throws std::invalid_argument as those two do.
+/// perfect one: a cubic bridgeless graph has one (Petersen's theorem); otherwise a maximum
+/// matching (maximum_matching, its Tutte–Berge witness checked) tells. Then
+/// min_cost_perfect_matching runs when there is a perfect one and min_cost_maximum_matching
+/// (twice the work) when not. The answer's certificate is checked by
+/// verify_min_cost_perfect_matching or verify_min_cost_maximum_matching, and its size against
+/// the maximum's, before it returns (std::logic_error if not: a bug). Throws
+/// std::invalid_argument as those two do.
 CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                                 const MinCostOptions& options = {});
 
