@@ -27,6 +27,9 @@ struct EdgeGroups {
 /// larger vertex.
 inline void sort_bucket(std::array<std::uint32_t, 2>* first, std::array<std::uint32_t, 2>* last) {
   if (last - first > 16) return std::sort(first, last);
+  // Nothing to sort; and an empty range may be two null pointers (a slice without halfedges),
+  // where first + 1 below would be undefined.
+  if (last - first < 2) return;
   for (auto* i = first + 1; i < last; ++i) {
     const std::array<std::uint32_t, 2> entry = *i;
     auto* j = i;

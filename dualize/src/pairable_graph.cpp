@@ -268,9 +268,13 @@ PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cu
     for (std::uint32_t i = 0; i < entry_count; ++i) {
       // The two slots are random writes (an edge's triangles are anywhere in the face order);
       // their lines are fetched for writing a few entries ahead, as the store buffer otherwise
-      // fills with misses (armadillo-sub2: this loop was 6 % of the run's CPU samples).
-      if (constexpr std::uint32_t kAhead = 16; i + kAhead < entry_count) {
+      // fills with misses (armadillo-sub2: this loop was 6 % of the run's CPU samples). Only a
+      // pairable edge's first entry is a triangle's halfedge for sure: another may be a polygon's,
+      // which has no slot (its address would lie outside node_edges, undefined even unread).
+      if (constexpr std::uint32_t kAhead = 16;
+          i + kAhead < entry_count && entries[i + kAhead][0] == kPairable) {
         __builtin_prefetch(node_edges + slot(entries[i + kAhead][1]), 1);
+        __builtin_prefetch(node_edges + slot(entries[i + kAhead + 1][1]), 1);
       }
       if (entries[i][0] != kPairable) continue;
       const std::uint32_t h1 = entries[i][1], h2 = entries[i + 1][1];

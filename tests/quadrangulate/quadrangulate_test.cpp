@@ -146,6 +146,37 @@ TEST(Quadrangulate, CertifiesAMaximumThatIsNotPerfect) {
   expect_correct(mesh, /*all_quad=*/true);
 }
 
+// Found by the conversion's fuzzer (clang's UBSan, fuzz/quad_fuzzer.cpp): a face whose corners
+// are all one vertex has only loops, so the grouping of halfedges gets an empty slice; and in a
+// mesh mostly of quads, the numbering of the pairable edges read ahead into the quads' halfedges,
+// which have no slot in the dual.
+TEST(Quadrangulate, DegenerateFacesAndQuadsAroundTriangles) {
+  expect_correct(mesh_of({{0, 0, 0}, {0, 1, 0}}, {{0, 0, 0, 0}}));
+  expect_correct(mesh_of({{0, 0, 0}, {0, 1, 0}}, {{0, 0, 0, 0}}), /*all_quad=*/true);
+  // A 6 x 6 grid of unit squares, all quads but the middle one, cut into two triangles.
+  std::vector<std::array<double, 3>> positions;
+  for (int y = 0; y <= 6; ++y)
+    for (int x = 0; x <= 6; ++x) positions.push_back({double(x), double(y), 0});
+  std::vector<std::vector<VertexId>> faces;
+  for (VertexId y = 0; y < 6; ++y) {
+    for (VertexId x = 0; x < 6; ++x) {
+      const VertexId a = 7 * y + x, b = a + 1, c = a + 8, d = a + 7;
+      if (x == 3 && y == 3) {
+        faces.push_back({a, b, c});
+        faces.push_back({a, c, d});
+      } else {
+        faces.push_back({a, b, c, d});
+      }
+    }
+  }
+  const PolygonMesh grid = mesh_of(positions, faces);
+  const QuadResult result = quadrangulate(grid);
+  EXPECT_EQ(result.stats.pairs, 1u);
+  EXPECT_EQ(result.stats.polygons_kept, 35u);
+  expect_correct(grid);
+  expect_correct(grid, /*all_quad=*/true);
+}
+
 TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
   PolygonMesh bad = mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 7}});
   EXPECT_THROW(quadrangulate(bad), MeshError);

@@ -1,0 +1,81 @@
+// libFuzzer target for the whole conversion, bytes to quads: the input is an OBJ file, its last
+// byte also choosing the options (algorithm, objective, all-quad, a corner threshold, which
+// attribute borders may be crossed). What does not parse is the readers' business (their own
+// targets); what parses must convert, or throw MeshError where the options ask for the
+// impossible (all-quad with a leftover triangle that cannot become a quad). Any other exception,
+// a crash, a sanitizer report, a hang or a huge allocation is a finding, and so is a result that
+// breaks what QuadResult promises: an uncertified pairing, pair counts that do not add up, an
+// output face out of range, attributes inconsistent with the faces, a triangle left by all-quad.
+
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+
+namespace {
+
+using namespace petersen;
+
+void require(bool condition) {
+  if (!condition) std::abort();
+}
+
+QuadOptions options_from(std::uint8_t choice) {
+  // ds and gw pair small closed components by reductions, lrs by contraction; frink is their
+  // O(n^2) oracle (inputs stay under -max_len, so it stays quick).
+  constexpr Algorithm kAlgorithms[] = {Algorithm::ps, Algorithm::sg, Algorithm::lrs,
+                                       Algorithm::gw, Algorithm::ds, Algorithm::frink,
+                                       Algorithm::ps, Algorithm::lrs};
+  QuadOptions options;
+  options.algorithm = kAlgorithms[choice & 7];
+  options.objective = (choice & 8) ? Objective::quality : Objective::pairs;
+  options.all_quad = (choice & 16) != 0;
+  if (choice & 32) options.max_corner_deviation = 40.0;
+  if (choice & 64) options.cross = {CutCause::uv_seam, CutCause::material, CutCause::group};
+  options.threads = (choice & 128) ? 2 : 1;
+  return options;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  if (size == 0) return 0;
+  const std::string_view bytes(reinterpret_cast<const char*>(data), size);
+  PolygonMesh mesh;
+  try {
+    mesh = parse_mesh(bytes, MeshFormat::obj, "fuzz");
+  } catch (const MeshError&) {
+    return 0;
+  }
+  const QuadOptions options = options_from(data[size - 1]);
+  QuadResult result;
+  try {
+    result = quadrangulate(mesh, options);
+  } catch (const MeshError&) {
+    require(options.all_quad);  // the one refusal a parsed mesh may meet
+    return 0;
+  }
+  const QuadStats& stats = result.stats;
+  require(stats.maximum_certified);
+  require(options.objective != Objective::quality || stats.optimality_certified);
+  require(stats.faces_in == mesh.face_count());
+  require(2 * stats.pairs + stats.triangles_left == stats.triangles);
+  require(stats.triangles + stats.polygons_kept == stats.faces_in);
+  if (!options.all_quad) require(result.mesh.face_count() == stats.faces_in - stats.pairs);
+  require(result.sources.size() == result.mesh.face_count());
+  require(result.mesh.positions.size() == mesh.positions.size() + stats.added_vertices);
+  try {
+    check_attributes(result.mesh);
+  } catch (const MeshError&) {
+    std::abort();
+  }
+  for (std::size_t f = 0; f < result.mesh.face_count(); ++f) {
+    const auto face = result.mesh.face(static_cast<FaceId>(f));
+    require(face.size() >= 3);
+    require(!options.all_quad || face.size() != 3);
+    for (VertexId v : face) require(v < result.mesh.positions.size());
+  }
+  return 0;
+}
