@@ -204,6 +204,43 @@ RC_GTEST_PROP(MinCostMaximum, SizeEqualsLemonMaximumAndIsCertified, ()) {
   if (2 * r.size == n) RC_ASSERT(testing::lemon_min_cost_perfect(n, edges, costs) == r.total_cost);
 }
 
+// Found by fuzz/match_fuzzer.cpp. The unmatched-node cost K bounds a matching's size by the
+// edges and the nodes they touch, not by n: one edge among 60,000 isolated nodes, at a cost
+// near 2^40, was refused (K past 2^52). And the doubled graph's own total, K for each of the
+// thousands of free nodes, passed 2^63 (signed overflow) though nothing read it.
+TEST(MinCostMaximum, FewEdgesAmongManyFreeNodesAndFarApartCosts) {
+  {
+    const std::uint32_t n = 60000;
+    const Edges edges = {{1, 6}};
+    const std::vector<Cost> costs = {(Cost{1} << 40) - 1};
+    const CsrGraph g = CsrGraph::from_edges(n, edges);
+    const MinCostMaximumResult r = min_cost_maximum_matching(g, costs);
+    EXPECT_EQ(r.size, 1u);
+    EXPECT_EQ(r.total_cost, costs[0]);
+    EXPECT_TRUE(verify_min_cost_maximum_matching(n, ends_of(g), costs, r.matching, r.total_cost,
+                                                 r.unmatched_cost, r.certificate)
+                    .ok());
+  }
+  {
+    // 2,000 disjoint edges at +-2^40 (K just under 2^52) and 3,000 isolated nodes.
+    const std::uint32_t n = 7000;
+    Edges edges;
+    std::vector<Cost> costs;
+    for (NodeId i = 0; i < 2000; ++i) {
+      edges.push_back({2 * i, 2 * i + 1});
+      costs.push_back(i % 2 == 0 ? Cost{1} << 40 : -(Cost{1} << 40));
+    }
+    const CsrGraph g = CsrGraph::from_edges(n, edges);
+    const MinCostMaximumResult r = min_cost_maximum_matching(g, costs);
+    EXPECT_EQ(r.size, 2000u);
+    EXPECT_EQ(r.total_cost, 0);
+    EXPECT_GT(r.unmatched_cost, Cost{1} << 51);
+    EXPECT_TRUE(verify_min_cost_maximum_matching(n, ends_of(g), costs, r.matching, r.total_cost,
+                                                 r.unmatched_cost, r.certificate)
+                    .ok());
+  }
+}
+
 // cheapest_maximum_matching picks the perfect solver or the maximum one; either way the answer
 // is as large as LEMON's maximum and as cheap as the maximum solver's.
 RC_GTEST_PROP(CheapestMaximum, EqualsTheMaximumSolversOptimum, ()) {

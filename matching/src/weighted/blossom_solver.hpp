@@ -58,6 +58,8 @@
 namespace petersen::weighted_detail {
 
 inline constexpr std::uint32_t kNone = 0xFFFFFFFFu;
+/// A sum of up to n costs: n/2 matched edges of up to 2^40 each pass 2^63 from n = 2^24 on.
+__extension__ using WideCost = __int128;
 
 class BlossomSolver {
  public:
@@ -228,12 +230,15 @@ class BlossomSolver {
     while (alive_trees_ > 0) step();
   }
 
-  /// The matching, its cost and the dual solution in the input's ids (input node v is node
-  /// new_node[v] here); run() must have returned. O(n + blossoms). Written straight in the
-  /// input's order, each node's record requested 16 nodes ahead: on rocker-arm-sub3's dual
-  /// 27-32 ms, where a certificate in the solver's order, mapped, then the cost summed at the
-  /// input's edges took 40-54 ms (1.4-2.4 ms against 2.0-2.9 on armadillo's).
-  void write_result(std::span<const NodeId> new_node, MinCostResult& result) const {
+  /// The matching and the dual solution in the input's ids (input node v is node new_node[v]
+  /// here); run() must have returned. Returns the matching's total cost, exact: the doubled
+  /// graph of min_cost_maximum_matching may take it past 2^63 (n edges of cost up to 2^52), so
+  /// the caller decides what it needs of it. O(n + blossoms). Written straight in the input's
+  /// order, each node's record requested 16 nodes ahead: on rocker-arm-sub3's dual 27-32 ms,
+  /// where a certificate in the solver's order, mapped, then the cost summed at the input's
+  /// edges took 40-54 ms (1.4-2.4 ms against 2.0-2.9 on armadillo's).
+  [[nodiscard]] WideCost write_result(std::span<const NodeId> new_node,
+                                      MinCostResult& result) const {
     MatchingCertificate& c = result.certificate;
     const auto ids = static_cast<std::uint32_t>(rec_.size());  // the blossom ids ever used
     // index[b - n]: blossom b's set in the certificate (a blossom of dual zero has none).
@@ -285,17 +290,18 @@ class BlossomSolver {
     }
     // The cost, from each matched edge's slot at its smaller end, in this order (the slots
     // are read in sequence).
-    result.total_cost = 0;
+    WideCost total = 0;
     for (NodeId v = 0; v < n_; ++v) {
       const Mate m = rec_[v].mate;
       if (m.node < v) continue;
       for (const Slot& slot : slots_of(v)) {
         if (slot.edge == m.edge) {
-          result.total_cost += slot.cost2 / 2;
+          total += slot.cost2 / 2;
           break;
         }
       }
     }
+    return total;
   }
 
  private:

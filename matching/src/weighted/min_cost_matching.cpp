@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -31,13 +32,25 @@ void check_costs(std::span<const Cost> costs, std::uint32_t edge_count, Cost lim
   }
 }
 
+using weighted_detail::WideCost;
+
+// A total cost as the results hold it: a total past 64 bits is an error, not a wrapped number.
+Cost fitting_total(WideCost total) {
+  if (total > INT64_MAX || total < INT64_MIN) {
+    throw std::overflow_error(
+        "min-cost matching: the total cost passes 2^63 (many edges of costs near 2^40); "
+        "scale the costs down");
+  }
+  return static_cast<Cost>(total);
+}
+
 // The solver runs on the breadth-first renumbering (breadth_first_order.hpp says why: 4x fewer
 // cache misses per scanned neighbour on subdivided meshes); it writes the matching and the node
-// duals in the input's ids, the odd sets need no mapping.
+// duals in the input's ids, the odd sets need no mapping. Returns the total cost exact, beside
+// the result, whose total_cost it leaves to the caller.
 template <class Graph>
-MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
-                    const MinCostOptions& options) {
-  MinCostResult result;
+WideCost solve(const Graph& graph, std::span<const Cost> costs, const MinCostOptions& options,
+               MinCostResult& result) {
   Stopwatch init;
   const weighted_detail::BreadthFirstAdjacency order =
       weighted_detail::breadth_first_adjacency(graph, costs);
@@ -54,8 +67,17 @@ MinCostResult solve(const Graph& graph, std::span<const Cost> costs,
   solver.run();
   result.stats.search_seconds = searches.seconds();
   Stopwatch certificate;
-  solver.write_result(order.new_node, result);
+  const WideCost total = solver.write_result(order.new_node, result);
   result.stats.certificate_seconds = certificate.seconds();
+  return total;
+}
+
+template <class Graph>
+MinCostResult solve_perfect(const Graph& graph, std::span<const Cost> costs,
+                            const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  MinCostResult result;
+  result.total_cost = fitting_total(solve(graph, costs, options, result));
   return result;
 }
 
@@ -95,14 +117,12 @@ HugeVector<Cost> scale_costs(std::span<const double> costs, double scale) {
 
 MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,
                                         const MinCostOptions& options) {
-  check_costs(costs, graph.edge_count(), kMaxCost);
-  return solve(graph, costs, options);
+  return solve_perfect(graph, costs, options);
 }
 
 MinCostResult min_cost_perfect_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                         const MinCostOptions& options) {
-  check_costs(costs, graph.edge_count(), kMaxCost);
-  return solve(graph, costs, options);
+  return solve_perfect(graph, costs, options);
 }
 
 MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
@@ -117,12 +137,20 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
     most = std::max(most, c);
     least = std::min(least, c);
   }
-  // K = 1 + floor(n/2)·(max(0, most) − min(0, least)), kept below 2^52 so that the doubled
-  // graph's duals (about K) and their doubling stay far inside 64 bits.
-  // n/2 < 2^31 and most − least <= 2^41, so k fits in 64 bits unsigned.
-  const std::uint64_t k = 1 + std::uint64_t{n / 2} * static_cast<std::uint64_t>(most - least);
-  if (k >= std::uint64_t{1} << 52) {
-    throw std::invalid_argument("min_cost_maximum_matching: the unmatched-node cost exceeds 2^52");
+  // K = 1 + ν̄·(max(0, most) − min(0, least)) exceeds the cost difference of any two matchings
+  // (see the header), ν̄ = min(half the nodes with an edge, the edges) bounding their size: a
+  // graph of a few edges among many isolated nodes (found by fuzz/match_fuzzer.cpp) keeps a small
+  // K, where floor(n/2) refused it. K is kept below 2^52 so that the doubled graph's duals (about
+  // K) and their doubling stay far inside 64 bits; the product is taken in 128 bits (ν̄ < 2^31,
+  // most − least <= 2^41).
+  std::uint32_t touched = 0;
+  for (NodeId v = 0; v < n; ++v) touched += graph.degree(v) > 0;
+  const std::uint32_t largest = std::min(touched / 2, m);
+  const WideCost k = 1 + WideCost{largest} * (WideCost{most} - WideCost{least});
+  if (k >= WideCost{1} << 52) {
+    throw std::invalid_argument(
+        "min_cost_maximum_matching: the unmatched-node cost exceeds 2^52 (costs too far apart "
+        "for this many matchable edges)");
   }
   const Cost unmatched_cost = static_cast<Cost>(k);
   std::vector<std::array<NodeId, 2>> edges;
@@ -138,22 +166,26 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
   doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
   doubled_costs.insert(doubled_costs.end(), n, unmatched_cost);
 
-  MinCostResult inner = solve(doubled, doubled_costs, options);
+  // The doubled graph's own total (up to n edges of cost K) is not needed: the first copy's is.
+  MinCostResult inner;
+  solve(doubled, doubled_costs, options, inner);
   MinCostMaximumResult result;
   result.matching = Matching(n);
   result.unmatched_cost = unmatched_cost;
   // Both copies are optimal halves of equal cost (else the cheaper one, doubled, would beat the
   // optimum), so the first copy is a minimum-cost maximum matching.
+  WideCost total = 0;
   for (NodeId v = 0; v < n; ++v) {
     const EdgeId e = inner.matching.mate_edge[v];
     if (e < m) {
       result.matching.mate_edge[v] = e;
       if (graph.endpoints(e)[0] == v) {
         ++result.size;
-        result.total_cost += costs[e];
+        total += costs[e];
       }
     }
   }
+  result.total_cost = fitting_total(total);
   result.certificate = std::move(inner.certificate);
   result.stats = inner.stats;
   return result;

@@ -197,7 +197,19 @@ CertificateCheck verify_min_cost_maximum_matching(std::uint32_t n,
     most = std::max<Wide>(most, x);
     least = std::min<Wide>(least, x);
   }
-  const Wide needed = 1 + Wide{n / 2} * (most - least);
+  // K must exceed the cost difference of any two matchings: at most ν·(most − least), ν their
+  // size, at most half the nodes some edge (not a loop) touches and at most those edges.
+  std::vector<bool> touched(n, false);
+  std::uint64_t edges = 0;
+  for (std::size_t e = 0; e < m; ++e) {
+    const NodeId a = edge_ends[2 * e], b = edge_ends[2 * e + 1];
+    if (a == b || a >= n || b >= n) continue;
+    touched[a] = touched[b] = true;
+    ++edges;
+  }
+  const auto touched_count =
+      static_cast<std::uint64_t>(std::count(touched.begin(), touched.end(), true));
+  const Wide needed = 1 + Wide{std::min(touched_count / 2, edges)} * (most - least);
   if (Wide{unmatched_cost} < needed) {
     return fail("unmatched cost " + std::to_string(unmatched_cost) + " is below " + str(needed));
   }

@@ -105,7 +105,9 @@ struct MinCostResult {
 /// expansions that rescan up to m edges: O(n² m); in practice the work follows the regions the
 /// trees cover (armadillo's dual, 86k nodes: 0.04 s of CPU time, stop 24).
 /// Iterative throughout. Throws GraphError when the graph has no perfect matching,
-/// std::invalid_argument when costs has the wrong size or a cost out of range.
+/// std::invalid_argument when costs has the wrong size or a cost out of range, and
+/// std::overflow_error when the total cost passes 2^63 (possible from 2^24 nodes on, with
+/// costs near kMaxCost).
 MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const Cost> costs,
                                         const MinCostOptions& options = {});
 MinCostResult min_cost_perfect_matching(const CsrGraph& graph, std::span<const Cost> costs,
@@ -124,13 +126,15 @@ struct MinCostMaximumResult {
 
 /// A minimum-cost matching among the maximum-cardinality matchings of `graph`, by reduction:
 /// the doubled graph H has G, a copy G' (node n + v, edge m + e, same costs) and an edge v–v' of
-/// cost K = 1 + floor(n/2)·(max(0, max cost) − min(0, min cost)) per node. A perfect matching
-/// of H is M ∪ M' plus v–v' for the u nodes M leaves free, costing 2·cost(M) + K·u; K exceeds
-/// the cost difference of any two matchings of G, so the cheapest perfect matching of H leaves
-/// the fewest nodes free, and among those costs the least. The certificate proves that perfect
+/// cost K = 1 + ν̄·(max(0, max cost) − min(0, min cost)) per node, where ν̄ = min(half the nodes
+/// with an edge, the edges) bounds a matching's size. A perfect matching of H is M ∪ M' plus
+/// v–v' for the u nodes M leaves free, costing 2·cost(M) + K·u; K exceeds the cost difference
+/// of any two matchings of G, so the cheapest perfect matching of H leaves the fewest nodes
+/// free, and among those costs the least. The certificate proves that perfect
 /// matching of H optimal; verify_min_cost_maximum_matching rebuilds H and checks it. Throws
-/// std::invalid_argument when costs has the wrong size, a cost is out of range or K·n would
-/// leave 62 bits. Twice the work of min_cost_perfect_matching on a graph of n nodes.
+/// std::invalid_argument when costs has the wrong size, a cost is out of range or K would pass
+/// 2^52, and std::overflow_error when the total cost passes 2^63. Twice the work of
+/// min_cost_perfect_matching on a graph of n nodes.
 MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                                const MinCostOptions& options = {});
 
@@ -150,7 +154,7 @@ struct CheapestMaximumResult {
 /// (twice the work) when not. The answer's certificate is checked by
 /// verify_min_cost_perfect_matching or verify_min_cost_maximum_matching, and its size against
 /// the maximum's, before it returns (std::logic_error if not: a bug). Throws
-/// std::invalid_argument as those two do.
+/// std::invalid_argument and std::overflow_error as those two do.
 CheapestMaximumResult cheapest_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                                 const MinCostOptions& options = {});
 

@@ -34,9 +34,10 @@ CertificateCheck verify_min_cost_perfect_matching(std::uint32_t node_count,
 
 /// Checks a min_cost_maximum_matching result: rebuilds the doubled graph H and its perfect
 /// matching M ∪ M' ∪ {v–v' : v free in M} from `matching` (see min_cost_matching.hpp), checks
-/// that `unmatched_cost` is at least 1 + floor(n/2)·(max(0, max cost) − min(0, min cost)),
-/// and checks the certificate on H with total 2·total_cost + K·(free nodes). Then `matching` is
-/// of maximum size and, among those, of minimum cost.
+/// that `unmatched_cost` is at least 1 + ν̄·(max(0, max cost) − min(0, min cost)), ν̄ the
+/// lesser of half the nodes an edge (not a loop) touches and the number of such edges, and checks
+/// the certificate on H with total 2·total_cost + K·(free nodes). Then `matching` is of maximum
+/// size and, among those, of minimum cost.
 CertificateCheck verify_min_cost_maximum_matching(std::uint32_t node_count,
                                                   std::span<const NodeId> edge_ends,
                                                   std::span<const Cost> costs,
