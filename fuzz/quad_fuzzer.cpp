@@ -5,13 +5,21 @@
 // impossible (all-quad with a leftover triangle that cannot become a quad). Any other exception,
 // a crash, a sanitizer report, a hang or a huge allocation is a finding, and so is a result that
 // breaks what QuadResult promises: an uncertified pairing, pair counts that do not add up, an
-// output face out of range, attributes inconsistent with the faces, a triangle left by all-quad.
+// output face out of range, attributes inconsistent with the faces, a triangle left by all-quad;
+// and `petersen info`'s report and the writers run on the way (the result read back the same).
+
+#include <unistd.h>
 
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <string_view>
+#include <vector>
 
+#include "petersen/dualize/mesh_report.hpp"
 #include "petersen/dualize/read_mesh.hpp"
+#include "petersen/dualize/write_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
 namespace {
@@ -76,6 +84,29 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     require(face.size() >= 3);
     require(!options.all_quad || face.size() != 3);
     for (VertexId v : face) require(v < result.mesh.positions.size());
+  }
+  // `petersen info` on the input, and the output written and read back, as OBJ, binary PLY or
+  // OFF by the first byte: the same numbers and faces (write_mesh promises both); as OBJ, nothing
+  // dropped (what an OBJ carried, an OBJ can hold). A name or value the format cannot spell is
+  // the writer's one refusal.
+  (void)describe(inspect_mesh(mesh));
+  static const std::string stem = "/dev/shm/petersen-quad-fuzz-" + std::to_string(getpid());
+  const char* const extension[] = {".obj", ".ply", ".off"};
+  const std::string path = stem + extension[data[0] % 3];
+  std::vector<std::string> dropped;
+  try {
+    dropped = write_mesh(path, result.mesh);
+  } catch (const MeshError&) {
+    return 0;
+  }
+  require(data[0] % 3 != 0 || dropped.empty());
+  const PolygonMesh back = read_mesh(path);
+  std::remove(path.c_str());
+  require(back.positions == result.mesh.positions);
+  require(back.corners == result.mesh.corners);
+  require(back.face_count() == result.mesh.face_count());
+  for (std::size_t f = 0; f < back.face_count(); ++f) {
+    require(back.arity(static_cast<FaceId>(f)) == result.mesh.arity(static_cast<FaceId>(f)));
   }
   return 0;
 }
