@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 #include <string_view>
@@ -26,21 +27,25 @@ using namespace petersen;
 
 constexpr std::uint32_t kFree = 0xFFFFFFFFu;
 
-void require(bool condition) {
-  if (!condition) std::abort();
+// A broken promise names itself in the log before the abort that libFuzzer reports.
+void require(bool condition, const char* what, int line) {
+  if (condition) return;
+  std::fprintf(stderr, "%s:%d: broken: %s\n", __FILE__, line, what);
+  std::abort();
 }
+#define REQUIRE(condition) require((condition), #condition, __LINE__)
 
 // The matching's size, after checking that mate_edge is a matching of `edges`.
 std::uint32_t checked_size(const GraphFile& graph, const std::vector<std::uint32_t>& mate_edge) {
-  require(mate_edge.size() == graph.node_count);
+  REQUIRE(mate_edge.size() == graph.node_count);
   std::uint32_t matched = 0;
   for (std::uint32_t v = 0; v < graph.node_count; ++v) {
     const std::uint32_t e = mate_edge[v];
     if (e == kFree) continue;
-    require(e < graph.edges.size());
+    REQUIRE(e < graph.edges.size());
     const auto [a, b] = graph.edges[e];
-    require(a != b && (a == v || b == v));
-    require(mate_edge[a == v ? b : a] == e);
+    REQUIRE(a != b && (a == v || b == v));
+    REQUIRE(mate_edge[a == v ? b : a] == e);
     ++matched;
   }
   return matched / 2;
@@ -65,10 +70,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   Options options;
   options.algorithm = kAlgorithms[data[size - 1] % 5];
   const AnyGraphMatching maximum = match_any_graph(graph.node_count, graph.edges, options);
-  require(checked_size(graph, maximum.mate_edge) == maximum.size);
-  require(maximum.perfect == (2 * std::uint64_t{maximum.size} == graph.node_count));
-  require(maximum.cubic_bridgeless == maximum.note.empty());
-  require(!maximum.cubic_bridgeless || maximum.perfect);
+  REQUIRE(checked_size(graph, maximum.mate_edge) == maximum.size);
+  REQUIRE(maximum.perfect == (2 * std::uint64_t{maximum.size} == graph.node_count));
+  REQUIRE(maximum.cubic_bridgeless == maximum.note.empty());
+  REQUIRE(!maximum.cubic_bridgeless || maximum.perfect);
   if (graph.costs.empty()) return 0;
   AnyGraphCheapestMatching cheapest;
   try {
@@ -91,17 +96,17 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto nodes = static_cast<std::uint64_t>(std::count(touched.begin(), touched.end(), true));
     const auto k = 1 + static_cast<unsigned __int128>(std::min(nodes / 2, edges)) *
                            static_cast<std::uint64_t>(most - least);
-    require(!maximum.perfect && k >= (std::uint64_t{1} << 52));
+    REQUIRE(!maximum.perfect && k >= (std::uint64_t{1} << 52));
     return 0;
   }
-  require(checked_size(graph, cheapest.mate_edge) == cheapest.size);
-  require(cheapest.size == maximum.size);
-  require(cheapest.perfect == maximum.perfect);
+  REQUIRE(checked_size(graph, cheapest.mate_edge) == cheapest.size);
+  REQUIRE(cheapest.size == maximum.size);
+  REQUIRE(cheapest.perfect == maximum.perfect);
   std::int64_t total = 0;
   for (std::uint32_t v = 0; v < graph.node_count; ++v) {
     const std::uint32_t e = cheapest.mate_edge[v];
     if (e != kFree && graph.edges[e][0] == v) total += graph.costs[e];
   }
-  require(total == cheapest.total_cost);
+  REQUIRE(total == cheapest.total_cost);
   return 0;
 }

@@ -1,15 +1,18 @@
-// libFuzzer target for the whole conversion, bytes to quads: the input is an OBJ file, its last
-// byte also choosing the options (algorithm, objective, all-quad, a corner threshold, which
-// attribute borders may be crossed). What does not parse is the readers' business (their own
-// targets); what parses must convert, or throw MeshError where the options ask for the
-// impossible (all-quad with a leftover triangle that cannot become a quad). Any other exception,
-// a crash, a sanitizer report, a hang or a huge allocation is a finding, and so is a result that
-// breaks what QuadResult promises: an uncertified pairing, pair counts that do not add up, an
-// output face out of range, attributes inconsistent with the faces, a triangle left by all-quad;
-// and `petersen info`'s report and the writers run on the way (the result read back the same).
+// libFuzzer target for the whole conversion, bytes to quads: the input is an OBJ or a PLY file
+// (PETERSEN_FUZZ_FORMAT), its last byte also choosing the options (algorithm, objective, all-quad,
+// a corner threshold, which attribute borders may be crossed). What does not parse is the readers'
+// business (their own targets); what parses must convert, or throw MeshError where the options ask
+// for the impossible (all-quad with a leftover triangle that cannot become a quad). Any other
+// exception, a crash, a sanitizer report, a hang or a huge allocation is a finding, and so is a
+// result that breaks what QuadResult promises: an uncertified pairing, pair counts that do not add
+// up, an output face out of range, attributes inconsistent with the faces, a triangle left by
+// all-quad; and `petersen info`'s report and the writers run on the way (the result read back the
+// same).
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -26,9 +29,27 @@ namespace {
 
 using namespace petersen;
 
-void require(bool condition) {
-  if (!condition) std::abort();
+// A broken promise names itself in the log before the abort that libFuzzer reports.
+void require(bool condition, const char* what, int line) {
+  if (condition) return;
+  std::fprintf(stderr, "%s:%d: broken: %s\n", __FILE__, line, what);
+  std::abort();
 }
+#define REQUIRE(condition) require((condition), #condition, __LINE__)
+
+// Equal values, NaN equal to NaN: a property or a PLY texture coordinate is kept as read, NaN
+// included (parse_ply.cpp), and must read back so.
+bool same(double a, double b) {
+  return a == b || (std::isnan(a) && std::isnan(b));
+}
+template <class Values>
+bool same(const Values& a, const Values& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(),
+                    [](double x, double y) { return same(x, y); });
+}
+
+constexpr const char* kOwnExtension =
+    MeshFormat::PETERSEN_FUZZ_FORMAT == MeshFormat::obj ? ".obj" : ".ply";
 
 QuadOptions options_from(std::uint8_t choice) {
   // ds and gw pair small closed components by reductions, lrs by contraction; frink is their
@@ -53,7 +74,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   PolygonMesh mesh;
   try {
-    mesh = parse_mesh(bytes, MeshFormat::obj, "fuzz");
+    mesh = parse_mesh(bytes, MeshFormat::PETERSEN_FUZZ_FORMAT, "fuzz");
   } catch (const MeshError&) {
     return 0;
   }
@@ -62,18 +83,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     result = quadrangulate(mesh, options);
   } catch (const MeshError&) {
-    require(options.all_quad);  // the one refusal a parsed mesh may meet
+    REQUIRE(options.all_quad);  // the one refusal a parsed mesh may meet
     return 0;
   }
   const QuadStats& stats = result.stats;
-  require(stats.maximum_certified);
-  require(options.objective != Objective::quality || stats.optimality_certified);
-  require(stats.faces_in == mesh.face_count());
-  require(2 * stats.pairs + stats.triangles_left == stats.triangles);
-  require(stats.triangles + stats.polygons_kept == stats.faces_in);
-  if (!options.all_quad) require(result.mesh.face_count() == stats.faces_in - stats.pairs);
-  require(result.sources.size() == result.mesh.face_count());
-  require(result.mesh.positions.size() == mesh.positions.size() + stats.added_vertices);
+  REQUIRE(stats.maximum_certified);
+  REQUIRE(options.objective != Objective::quality || stats.optimality_certified);
+  REQUIRE(stats.faces_in == mesh.face_count());
+  REQUIRE(2 * stats.pairs + stats.triangles_left == stats.triangles);
+  REQUIRE(stats.triangles + stats.polygons_kept == stats.faces_in);
+  if (!options.all_quad) REQUIRE(result.mesh.face_count() == stats.faces_in - stats.pairs);
+  REQUIRE(result.sources.size() == result.mesh.face_count());
+  REQUIRE(result.mesh.positions.size() == mesh.positions.size() + stats.added_vertices);
   try {
     check_attributes(result.mesh);
   } catch (const MeshError&) {
@@ -81,14 +102,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   for (std::size_t f = 0; f < result.mesh.face_count(); ++f) {
     const auto face = result.mesh.face(static_cast<FaceId>(f));
-    require(face.size() >= 3);
-    require(!options.all_quad || face.size() != 3);
-    for (VertexId v : face) require(v < result.mesh.positions.size());
+    REQUIRE(face.size() >= 3);
+    REQUIRE(!options.all_quad || face.size() != 3);
+    for (VertexId v : face) REQUIRE(v < result.mesh.positions.size());
   }
   // `petersen info` on the input, and the output written and read back, as OBJ, binary PLY or
-  // OFF by the first byte: the same numbers and faces (write_mesh promises both); as OBJ, nothing
-  // dropped (what an OBJ carried, an OBJ can hold). A name or value the format cannot spell is
-  // the writer's one refusal.
+  // OFF by the first byte: the same numbers and faces (write_mesh promises both); in the input's
+  // own format, nothing dropped (what it carried, it can hold). A name or value the format cannot
+  // spell is the writer's one refusal.
   (void)describe(inspect_mesh(mesh));
   static const std::string stem = "/dev/shm/petersen-quad-fuzz-" + std::to_string(getpid());
   const char* const extension[] = {".obj", ".ply", ".off"};
@@ -99,14 +120,32 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const MeshError&) {
     return 0;
   }
-  require(data[0] % 3 != 0 || dropped.empty());
+  REQUIRE(!path.ends_with(kOwnExtension) || dropped.empty());
   const PolygonMesh back = read_mesh(path);
   std::remove(path.c_str());
-  require(back.positions == result.mesh.positions);
-  require(back.corners == result.mesh.corners);
-  require(back.face_count() == result.mesh.face_count());
+  REQUIRE(back.positions == result.mesh.positions);
+  REQUIRE(back.corners == result.mesh.corners);
+  REQUIRE(back.face_count() == result.mesh.face_count());
   for (std::size_t f = 0; f < back.face_count(); ++f) {
-    require(back.arity(static_cast<FaceId>(f)) == result.mesh.arity(static_cast<FaceId>(f)));
+    REQUIRE(back.arity(static_cast<FaceId>(f)) == result.mesh.arity(static_cast<FaceId>(f)));
+  }
+  if (!path.ends_with(kOwnExtension)) return 0;
+  // In its own format, the values the result carries read back as they are.
+  const MeshAttributes &a = result.mesh.attributes, &b = back.attributes;
+  REQUIRE(b.position_type == a.position_type);
+  REQUIRE(b.vertex_properties.size() == a.vertex_properties.size());
+  for (std::size_t i = 0; i < a.vertex_properties.size(); ++i) {
+    REQUIRE(same(b.vertex_properties[i].values, a.vertex_properties[i].values));
+  }
+  REQUIRE(b.face_properties.size() == a.face_properties.size());
+  for (std::size_t i = 0; i < a.face_properties.size(); ++i) {
+    REQUIRE(same(b.face_properties[i].values, a.face_properties[i].values));
+  }
+  REQUIRE(b.corner_texcoord.empty() == a.corner_texcoord.empty());
+  for (std::size_t c = 0; c < a.corner_texcoord.size(); ++c) {
+    const std::uint32_t i = a.corner_texcoord[c], j = b.corner_texcoord[c];
+    REQUIRE((i == kNoAttribute) == (j == kNoAttribute));
+    if (i != kNoAttribute) REQUIRE(same(a.texcoords[i], b.texcoords[j]));
   }
   return 0;
 }

@@ -308,6 +308,12 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
         derived_attributes(mesh.attributes, input_vertices, face_of, corner_from, new_vertices);
   }
   out.attributes.position_type = mesh.attributes.position_type;
+  // A float PLY is written back as float: its new vertices are held as floats now, so that the
+  // result is what the file will hold (found by fuzz/quad_fuzzer.cpp: a midpoint of two floats
+  // needs up to 25 bits).
+  for (std::size_t v = input_vertices; v < mesh.positions.size(); ++v) {
+    for (double& x : mesh.positions[v]) x = held_as(out.attributes.position_type, x);
+  }
   out.positions = std::move(mesh.positions);
   result.stats.added_vertices = out.positions.size() - input_vertices;
   result.stats.split_quads = pieces;

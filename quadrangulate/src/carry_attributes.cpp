@@ -60,11 +60,18 @@ class CornerValues {
   std::map<std::array<std::uint64_t, 3>, std::uint32_t> appended_;
 };
 
-bool is_integer(ScalarType type) {
-  return type != ScalarType::float32 && type != ScalarType::float64;
-}
-
 }  // namespace
+
+double held_as(ScalarType type, double value) {
+  switch (type) {
+    case ScalarType::float64:
+      return value;
+    case ScalarType::float32:
+      return static_cast<float>(value);
+    default:
+      return std::round(value);
+  }
+}
 
 MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vertices_before,
                                   std::span<const FaceId> face_of,
@@ -113,7 +120,7 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
       const int n = blend_size(new_vertices[i]);
       double sum = 0;
       for (int k = 0; k < n; ++k) sum += column.values[new_vertices[i][k]];
-      out.values[vertices_before + i] = is_integer(column.type) ? std::round(sum / n) : sum / n;
+      out.values[vertices_before + i] = held_as(column.type, sum / n);
     }
   }
   return after;

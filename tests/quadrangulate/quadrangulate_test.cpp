@@ -494,6 +494,28 @@ TEST(Quadrangulate, AllQuadInterpolatesAttributes) {
   EXPECT_THROW(quadrangulate(mesh, {.all_quad = true}), MeshError);
 }
 
+// A float PLY is written back as float: all_quad's new vertices and float properties are held
+// as floats, so that the result is what the file holds (found by fuzz/quad_fuzzer.cpp: the
+// midpoint of 1 and 1 + 2^-23 needs 25 bits, and was rounded only on the way out).
+TEST(Quadrangulate, AllQuadHoldsFloatPositionsAndPropertiesAsFloats) {
+  const double one_up = 1 + std::ldexp(1.0, -23);
+  PolygonMesh mesh = mesh_of({{1, 0, 0}, {one_up, 3, 0}, {0, 1, one_up}}, {{0, 1, 2}});
+  mesh.attributes.position_type = ScalarType::float32;
+  mesh.attributes.vertex_properties.push_back({"quality", ScalarType::float32, {}});
+  mesh.attributes.vertex_properties[0].values = {1, one_up, 0.1f};
+  const QuadResult result = quadrangulate(mesh, {.all_quad = true});
+  ASSERT_GT(result.stats.added_vertices, 0u);
+  for (const auto& p : result.mesh.positions) {
+    for (double x : p) EXPECT_EQ(double(float(x)), x);
+  }
+  for (double x : result.mesh.attributes.vertex_properties[0].values) {
+    EXPECT_EQ(double(float(x)), x);
+  }
+  EXPECT_EQ(result.mesh.attributes.position_type, ScalarType::float32);
+  EXPECT_EQ(check_quad_result(mesh, result, true, false), "");
+  EXPECT_EQ(check_attributes_kept(mesh, result), "");
+}
+
 // Random attributes for `mesh`, drawn inside a property; each kind present or not at random.
 // Texture coordinates and normals follow the vertex, but a few corners get another value (a
 // seam) and a few another entry of the same value (no seam); materials among names one of which

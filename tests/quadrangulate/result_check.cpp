@@ -550,7 +550,9 @@ std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& re
             double sum = 0;
             for (VertexId u : parents) sum += column.values[u];
             double expected = sum / double(parents.size());
-            if (column.type != ScalarType::float32 && column.type != ScalarType::float64) {
+            if (column.type == ScalarType::float32) {
+              expected = static_cast<float>(expected);  // a float column holds floats
+            } else if (column.type != ScalarType::float64) {
               expected = std::round(expected);
             }
             if (!close(expected, b.vertex_properties[c].values[v])) {
@@ -599,11 +601,14 @@ std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& re
       // centre of their four vertices, found by its position; where a flat or folded quad puts
       // two of these on one point, either may be the one.
       const auto& p = out.positions[v];
+      // Float positions (a float PLY's) hold floats: the average rounded to float.
+      const bool floats = input.attributes.position_type == ScalarType::float32;
       auto at = [&](const std::vector<VertexId>& us) {
         for (int d = 0; d < 3; ++d) {
           double sum = 0;
           for (VertexId u : us) sum += input.positions[u][d];
-          if (!close(sum / double(us.size()), p[d])) return false;
+          const double average = sum / double(us.size());
+          if (!close(floats ? static_cast<float>(average) : average, p[d])) return false;
         }
         return true;
       };

@@ -144,11 +144,13 @@ struct QuadResult {
   /// (material, group, object, smoothing group, face properties) are its first triangle's; kept
   /// and left faces keep theirs; vertex properties are copied. all_quad's new vertices get
   /// interpolated values: vertex properties averaged over the edge's ends or the quad's corners
-  /// (integer types rounded), and each face around a new vertex its own corner values averaged
-  /// likewise (normals renormalised), so a seam stays a seam; the new texture coordinates and
-  /// normals are appended, one entry per distinct value. lrs flips edges, and a flipped triangle
-  /// has no corners or face of the input to take attributes from: on a mesh with corner or face
-  /// attributes its closed components are paired by ps (lrs_fallback_components says so).
+  /// (integer types rounded, float32 ones held as floats, and the position too when
+  /// attributes.position_type is float32: the result holds what a writer writes), and each face
+  /// around a new vertex its own corner values averaged likewise (normals renormalised), so a
+  /// seam stays a seam; the new texture coordinates and normals are appended, one entry per
+  /// distinct value. lrs flips edges, and a flipped triangle has no corners or face of the input
+  /// to take attributes from: on a mesh with corner or face attributes its closed components are
+  /// paired by ps (lrs_fallback_components says so).
   PolygonMesh mesh;
   /// For each output face, the input faces it came from: {t1, t2} for a pair's quad (the quad
   /// follows t1's orientation), {f, kNoFace} for a face kept or left. With lrs, a triangle its
