@@ -6,8 +6,8 @@
 // exception, a crash, a sanitizer report, a hang or a huge allocation is a finding, and so is a
 // result that breaks what QuadResult promises: an uncertified pairing, pair counts that do not add
 // up, an output face out of range, attributes inconsistent with the faces, a triangle left by
-// all-quad; and `petersen info`'s report and the writers run on the way (the result read back the
-// same).
+// all-quad; and `petersen info`'s report, `petersen render` and the writers run on the way (the
+// result read back the same).
 
 #include <unistd.h>
 
@@ -24,6 +24,7 @@
 #include "petersen/dualize/read_mesh.hpp"
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/render/render_mesh.hpp"
 
 namespace {
 
@@ -112,6 +113,18 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // spell is the writer's one refusal.
   (void)describe(inspect_mesh(mesh));
   static const std::string stem = "/dev/shm/petersen-quad-fuzz-" + std::to_string(getpid());
+  // `petersen render` of the result, at its smallest (a picture of every input would be most of the
+  // time), PNG or SVG by the first byte: its refusals are for paths and views, neither of which
+  // occurs.
+  if (data[0] & 4) {
+    const std::string picture = stem + ((data[0] & 8) ? ".svg" : ".png");
+    render_mesh(result.mesh, picture,
+                {.width = 200,
+                 .height = 200,
+                 .first_added_vertex = static_cast<VertexId>(mesh.positions.size()),
+                 .caption = {"fuzz"}});
+    std::remove(picture.c_str());
+  }
   const char* const extension[] = {".obj", ".ply", ".off"};
   const std::string path = stem + extension[data[0] % 3];
   std::vector<std::string> dropped;
