@@ -1,4 +1,4 @@
-// libFuzzer target for the whole conversion, bytes to quads: the input is an OBJ or a PLY file
+// libFuzzer target for the whole conversion, bytes to quads: the input is an OBJ, OFF or PLY file
 // (PETERSEN_FUZZ_FORMAT), its last byte also choosing the options (algorithm, objective, all-quad,
 // a corner threshold, which attribute borders may be crossed). What does not parse is the readers'
 // business (their own targets); what parses must convert, or throw MeshError where the options ask
@@ -49,8 +49,10 @@ bool same(const Values& a, const Values& b) {
                     [](double x, double y) { return same(x, y); });
 }
 
-constexpr const char* kOwnExtension =
-    MeshFormat::PETERSEN_FUZZ_FORMAT == MeshFormat::obj ? ".obj" : ".ply";
+constexpr MeshFormat kFormat = MeshFormat::PETERSEN_FUZZ_FORMAT;
+constexpr const char* kOwnExtension = kFormat == MeshFormat::obj   ? ".obj"
+                                      : kFormat == MeshFormat::ply ? ".ply"
+                                                                   : ".off";
 
 QuadOptions options_from(std::uint8_t choice) {
   // ds and gw pair small closed components by reductions, lrs by contraction; frink is their
@@ -75,7 +77,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::string_view bytes(reinterpret_cast<const char*>(data), size);
   PolygonMesh mesh;
   try {
-    mesh = parse_mesh(bytes, MeshFormat::PETERSEN_FUZZ_FORMAT, "fuzz");
+    mesh = parse_mesh(bytes, kFormat, "fuzz");
   } catch (const MeshError&) {
     return 0;
   }
