@@ -5,20 +5,16 @@
 // the reader allows.
 
 #include <cstdint>
-#include <cstdlib>
 #include <string_view>
 
 #include "petersen/graph_io/read_graph.hpp"
+#include "require.hpp"
 
 namespace {
 
 using namespace petersen;
 
 constexpr GraphFormat kFormat = GraphFormat::PETERSEN_FUZZ_GRAPH_FORMAT;
-
-void require(bool condition) {
-  if (!condition) std::abort();
-}
 
 }  // namespace
 
@@ -30,10 +26,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const GraphError&) {
     return 0;
   }
-  for (const auto& [a, b] : graph.edges) require(a < graph.node_count && b < graph.node_count);
-  require(graph.costs.empty() || graph.costs.size() == graph.edges.size());
-  for (std::int64_t cost : graph.costs) require(cost >= -kMaxFileCost && cost <= kMaxFileCost);
-  require(graph.node_count <= 2 * std::uint64_t{graph.edges.size()} + (std::uint64_t{1} << 24));
-  require(graph.first_id == (kFormat == GraphFormat::dimacs ? 1u : 0u));
+  for (const auto& [a, b] : graph.edges) REQUIRE(a < graph.node_count && b < graph.node_count);
+  REQUIRE(graph.costs.empty() || graph.costs.size() == graph.edges.size());
+  for (std::int64_t cost : graph.costs) REQUIRE(cost >= -kMaxFileCost && cost <= kMaxFileCost);
+  REQUIRE(graph.node_count <= 2 * std::uint64_t{graph.edges.size()} + (std::uint64_t{1} << 24));
+  REQUIRE(graph.first_id == (kFormat == GraphFormat::dimacs ? 1u : 0u));
   return 0;
 }

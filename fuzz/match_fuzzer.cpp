@@ -12,28 +12,19 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
 #include <string_view>
 #include <vector>
 
 #include "petersen/graph_io/read_graph.hpp"
 #include "petersen/matching/any_graph.hpp"
+#include "require.hpp"
 
 namespace {
 
 using namespace petersen;
 
 constexpr std::uint32_t kFree = 0xFFFFFFFFu;
-
-// A broken promise names itself in the log before the abort that libFuzzer reports.
-void require(bool condition, const char* what, int line) {
-  if (condition) return;
-  std::fprintf(stderr, "%s:%d: broken: %s\n", __FILE__, line, what);
-  std::abort();
-}
-#define REQUIRE(condition) require((condition), #condition, __LINE__)
 
 // The matching's size, after checking that mate_edge is a matching of `edges`.
 std::uint32_t checked_size(const GraphFile& graph, const std::vector<std::uint32_t>& mate_edge) {

@@ -4,20 +4,16 @@
 // attributes, and the triangle reader must agree with the polygon reader on the same bytes.
 
 #include <cstdint>
-#include <cstdlib>
 #include <string_view>
 
 #include "petersen/dualize/read_mesh.hpp"
+#include "require.hpp"
 
 namespace {
 
 using namespace petersen;
 
 constexpr MeshFormat kFormat = MeshFormat::PETERSEN_FUZZ_FORMAT;
-
-void require(bool condition) {
-  if (!condition) std::abort();
-}
 
 bool same_triangles(const PolygonMesh& polygons, const TriangleMesh& triangles) {
   if (triangles.positions != polygons.positions) return false;
@@ -44,31 +40,31 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   } catch (const MeshError&) {
   }
   if (parsed) {
-    require(mesh.face_count() > 0);
+    REQUIRE(mesh.face_count() > 0);
     // What the reader keeps beside the faces is consistent with them (a MeshError here is a
     // reader's bug, not bad input).
     try {
       check_attributes(mesh);
-    } catch (const MeshError&) {
-      std::abort();
+    } catch (const MeshError& e) {
+      fuzz::broken(e.what(), __FILE__, __LINE__);
     }
-    require(mesh.all_triangles()
+    REQUIRE(mesh.all_triangles()
                 ? mesh.corners.size() % 3 == 0
                 : mesh.face_start.front() == 0 && mesh.face_start.back() == mesh.corners.size());
     all_triangles = true;
     for (std::size_t f = 0; f < mesh.face_count(); ++f) {
       const auto face = mesh.face(static_cast<FaceId>(f));
-      require(face.size() >= 3);
+      REQUIRE(face.size() >= 3);
       all_triangles = all_triangles && face.size() == 3;
-      for (VertexId v : face) require(v < mesh.positions.size());
+      for (VertexId v : face) REQUIRE(v < mesh.positions.size());
     }
   }
   // The triangle reader accepts exactly the all-triangle meshes, with the same faces.
   try {
     const TriangleMesh triangles = parse_triangle_mesh(bytes, kFormat, "fuzz");
-    require(parsed && all_triangles && same_triangles(mesh, triangles));
+    REQUIRE(parsed && all_triangles && same_triangles(mesh, triangles));
   } catch (const MeshError&) {
-    require(!parsed || !all_triangles);
+    REQUIRE(!parsed || !all_triangles);
   }
   return 0;
 }

@@ -15,7 +15,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -25,18 +24,11 @@
 #include "petersen/dualize/write_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
+#include "require.hpp"
 
 namespace {
 
 using namespace petersen;
-
-// A broken promise names itself in the log before the abort that libFuzzer reports.
-void require(bool condition, const char* what, int line) {
-  if (condition) return;
-  std::fprintf(stderr, "%s:%d: broken: %s\n", __FILE__, line, what);
-  std::abort();
-}
-#define REQUIRE(condition) require((condition), #condition, __LINE__)
 
 // Equal values, NaN equal to NaN: a property or a PLY texture coordinate is kept as read, NaN
 // included (parse_ply.cpp), and must read back so.
@@ -100,8 +92,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   REQUIRE(result.mesh.positions.size() == mesh.positions.size() + stats.added_vertices);
   try {
     check_attributes(result.mesh);
-  } catch (const MeshError&) {
-    std::abort();
+  } catch (const MeshError& e) {
+    fuzz::broken(e.what(), __FILE__, __LINE__);
   }
   for (std::size_t f = 0; f < result.mesh.face_count(); ++f) {
     const auto face = result.mesh.face(static_cast<FaceId>(f));
