@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
-#include "petersen/dualize/polygon_generators.hpp"
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/generators/polygon_generators.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 

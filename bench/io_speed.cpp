@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/write_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/io/write_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
 
 namespace {

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"

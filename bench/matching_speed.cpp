@@ -14,9 +14,9 @@
 
 #include "bfs_floor.hpp"
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_generators.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/generators/surface_generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"

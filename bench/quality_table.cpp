@@ -22,8 +22,8 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/write_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/io/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_generators.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/generators/surface_generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/matching/avoiding.hpp"
 

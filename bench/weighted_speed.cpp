@@ -26,7 +26,7 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "petersen/graph_io/read_graph.hpp"
+#include "petersen/io/read_graph.hpp"
 #include "require.hpp"
 
 namespace {

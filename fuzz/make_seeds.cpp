@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "petersen/dualize/surface_generators.hpp"
-#include "petersen/dualize/write_mesh.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
+#include "petersen/io/write_mesh.hpp"
+#include "petersen/generators/graph_generators.hpp"
 
 namespace {
 

@@ -16,7 +16,7 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/graph_io/read_graph.hpp"
+#include "petersen/io/read_graph.hpp"
 #include "petersen/matching/any_graph.hpp"
 #include "require.hpp"
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "require.hpp"
 
 namespace {

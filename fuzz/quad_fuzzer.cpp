@@ -19,9 +19,9 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/dualize/mesh_report.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/write_mesh.hpp"
+#include "petersen/mesh/mesh_report.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/io/write_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
 #include "require.hpp"

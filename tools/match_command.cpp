@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "file_bytes.hpp"
+#include "petersen/io/file_bytes.hpp"
 #include "json_text.hpp"
-#include "petersen/graph_io/read_graph.hpp"
+#include "petersen/io/read_graph.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
 

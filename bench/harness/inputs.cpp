@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "plate.hpp"
 #include "simplify.hpp"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "paper_figures.hpp"
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::bench {
 

@@ -4,7 +4,7 @@
 
 #include <cstdint>
 
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 
 namespace petersen::bench {
 

@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::bench {
 

@@ -3,7 +3,7 @@
 #include <map>
 #include <memory>
 
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 
 namespace petersen::micro {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "edge_groups.hpp"
+#include "petersen/mesh/edge_groups.hpp"
 
 namespace petersen {
 

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "edge_groups.hpp"
+#include "petersen/mesh/edge_groups.hpp"
 #include "petersen/graph/parallel.hpp"
 
 namespace petersen {

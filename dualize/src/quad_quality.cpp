@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
-#include "petersen/dualize/vec3.hpp"
+#include "petersen/mesh/vec3.hpp"
 #include "petersen/graph/parallel.hpp"
 
 namespace petersen {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "petersen/dualize/surface_check.hpp"
+#include "petersen/mesh/surface_check.hpp"
 #include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {

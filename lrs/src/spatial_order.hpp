@@ -12,7 +12,7 @@
 
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::lrs {
 

@@ -3,7 +3,7 @@
 #include <stdexcept>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/surface_check.hpp"
+#include "petersen/mesh/surface_check.hpp"
 #include "spatial_order.hpp"
 
 namespace petersen::lrs {

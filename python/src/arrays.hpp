@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::python {
 

@@ -1,5 +1,5 @@
 #pragma once
-// A mesh's attributes (petersen/dualize/mesh_attributes.hpp) as a Python dict and back: index
+// A mesh's attributes (petersen/mesh/mesh_attributes.hpp) as a Python dict and back: index
 // arrays as int64 with -1 for "none", property columns as numpy arrays of the dtype their PLY
 // type names (so a uint8 colour is read and written back as uint8).
 
@@ -7,7 +7,7 @@
 
 #include <span>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::python {
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "carry_attributes.hpp"
-#include "edge_groups.hpp"
+#include "petersen/mesh/edge_groups.hpp"
 
 namespace petersen::quad_detail {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <span>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::quad_detail {
 

@@ -12,6 +12,7 @@
 #include "carry_attributes.hpp"
 #include "lap_clock.hpp"
 #include "pair_triangles.hpp"
+#include "petersen/dualize/quad_of.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/huge_pages.hpp"
@@ -22,19 +23,6 @@
 namespace petersen {
 
 namespace {
-
-// The quad of triangles t1 and t2 across their shared edge, in t1's orientation: t1 = (a, b, c)
-// and t2 holding a, b and d give (a, d, b, c), whichever way t2 runs.
-std::array<VertexId, 4> quad_of(std::span<const VertexId> t1, std::span<const VertexId> t2) {
-  auto in_t2 = [&](VertexId v) { return v == t2[0] || v == t2[1] || v == t2[2]; };
-  for (int k = 0; k < 3; ++k) {
-    const VertexId a = t1[k], b = t1[(k + 1) % 3], c = t1[(k + 2) % 3];
-    if (!in_t2(a) || !in_t2(b)) continue;
-    const VertexId d = t2[0] != a && t2[0] != b ? t2[0] : t2[1] != a && t2[1] != b ? t2[1] : t2[2];
-    return {a, d, b, c};
-  }
-  throw std::logic_error("internal error: paired triangles share no edge");
-}
 
 // How many vertices some face's corners name (those out of range left out).
 std::int64_t referenced_vertex_count(const PolygonMesh& mesh) {

@@ -10,7 +10,7 @@
 #include <numeric>
 
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/dualize/vec3.hpp"
+#include "petersen/mesh/vec3.hpp"
 
 namespace petersen {
 

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
 
 namespace petersen {

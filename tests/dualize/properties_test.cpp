@@ -6,8 +6,8 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quads.hpp"
-#include "petersen/dualize/surface_check.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/mesh/surface_check.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"

@@ -14,7 +14,7 @@
 
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/quads.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
 namespace petersen {

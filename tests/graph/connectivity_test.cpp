@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 
 namespace petersen {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 
 namespace petersen {
 namespace {

@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 

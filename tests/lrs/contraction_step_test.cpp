@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 

@@ -13,8 +13,8 @@
 #include <utility>
 
 #include "petersen/dualize/quads.hpp"
-#include "petersen/dualize/surface_check.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/mesh/surface_check.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/lrs/contraction_step.hpp"
 #include "petersen/lrs/dual_rows.hpp"
 #include "petersen/matching/augment.hpp"

@@ -9,8 +9,8 @@
 #include <cstdio>
 
 #include "petersen/dualize/quads.hpp"
-#include "petersen/dualize/read_mesh.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "shared_meshes.hpp"
 #include "small_meshes.hpp"

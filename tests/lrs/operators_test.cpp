@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "petersen/dualize/polygon_generators.hpp"
-#include "petersen/dualize/surface_check.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/polygon_generators.hpp"
+#include "petersen/mesh/surface_check.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/lrs/edge_contraction.hpp"
 #include "petersen/lrs/edge_flip.hpp"
 #include "petersen/testing/arbitrary.hpp"

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/lrs/triangulation.hpp"
 
 namespace petersen::lrs::testing {

@@ -17,7 +17,7 @@
 
 #include "peers.hpp"
 #include "petersen/adaptors/boost_graph.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"

@@ -13,7 +13,7 @@
 
 #include "peers.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/verify_min_cost.hpp"

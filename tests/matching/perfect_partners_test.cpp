@@ -9,7 +9,7 @@
 #include <algorithm>
 #include <random>
 
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
 

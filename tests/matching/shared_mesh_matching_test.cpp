@@ -5,7 +5,7 @@
 
 #include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/read_mesh.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "shared_meshes.hpp"
 

@@ -3,7 +3,7 @@
 
 #include "peers.hpp"
 #include "petersen/graph/connectivity.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <set>
 
-#include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "result_check.hpp"
 #include "shuffled_faces.hpp"

@@ -8,10 +8,10 @@
 
 #include <cmath>
 
-#include "petersen/dualize/mesh_report.hpp"
-#include "petersen/dualize/polygon_generators.hpp"
+#include "petersen/mesh/mesh_report.hpp"
+#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"

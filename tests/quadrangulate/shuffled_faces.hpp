@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::testing {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "peers.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 
 namespace petersen {
 namespace {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 
 namespace petersen {

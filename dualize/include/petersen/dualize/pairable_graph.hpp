@@ -8,7 +8,7 @@
 #include <span>
 #include <string_view>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 
 namespace petersen {

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
 

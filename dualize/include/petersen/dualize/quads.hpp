@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/matching/matching.hpp"
 

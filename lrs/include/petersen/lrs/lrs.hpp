@@ -11,7 +11,7 @@
 
 #include <cstdint>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/matching/matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"

@@ -11,7 +11,7 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
 

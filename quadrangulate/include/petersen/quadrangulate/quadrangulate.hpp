@@ -19,7 +19,7 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 

@@ -19,11 +19,11 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/mesh.hpp"
-#include "petersen/dualize/polygon_generators.hpp"
-#include "petersen/dualize/surface_generators.hpp"
+#include "petersen/mesh/mesh.hpp"
+#include "petersen/generators/polygon_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/generators.hpp"
+#include "petersen/generators/graph_generators.hpp"
 
 namespace petersen {
 

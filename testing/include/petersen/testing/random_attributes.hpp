@@ -15,7 +15,7 @@
 #include <random>
 #include <string>
 
-#include "petersen/dualize/mesh.hpp"
+#include "petersen/mesh/mesh.hpp"
 #include "petersen/testing/arbitrary.hpp"
 
 namespace petersen::testing {

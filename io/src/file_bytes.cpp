@@ -1,0 +1,342 @@
+#include "petersen/io/file_bytes.hpp"
+
+#include <fcntl.h>
+#include <libdeflate.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <random>
+#include <system_error>
+
+#include "petersen/mesh/mesh.hpp"
+
+namespace petersen {
+
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what, int error) {
+  throw MeshError(path + ": " + what + ": " + std::generic_category().message(error));
+}
+
+// Closes the descriptor on every way out.
+struct Descriptor {
+  int fd = -1;
+  Descriptor(int fd) : fd(fd) {}  // NOLINT: wraps open()'s result
+  Descriptor(const Descriptor&) = delete;
+  Descriptor& operator=(const Descriptor&) = delete;
+  ~Descriptor() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+FileBytes allocate(const std::string& path, std::size_t size) {
+  try {
+    return {make_huge_array<char>(size), 0, {}};
+  } catch (const std::bad_alloc&) {
+    throw MeshError(path + ": cannot allocate " + std::to_string(size) + " bytes to read it");
+  }
+}
+
+// A copy of the first `bytes.size` bytes in a buffer of `capacity` bytes.
+FileBytes grown(const std::string& path, const FileBytes& bytes, std::size_t capacity) {
+  FileBytes larger = allocate(path, capacity);
+  std::memcpy(larger.data.get(), bytes.data.get(), bytes.size);
+  larger.size = bytes.size;
+  return larger;
+}
+
+// The bytes as they are on disk. A regular file's pages are mapped from the page cache rather
+// than read into a buffer: a fresh buffer costs a page fault per page, and on this development VM
+// (Firecracker, free page reporting) fresh memory is filled at 0.2-0.3 GB/s, so reading the
+// 2.5 GB 10^8-triangle plate took 5.7-6.5 s against 0.4-1.0 s to map and scan it (a standalone
+// test, page cache warm; bench/RESULTS.md, stop 16). Read ahead in full (MAP_POPULATE): the
+// parsers read every byte once, in order.
+FileBytes read_raw(const std::string& path) {
+  Descriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+  if (file.fd < 0) fail(path, "cannot open for reading", errno);
+  struct stat status;
+  if (::fstat(file.fd, &status) != 0) fail(path, "cannot read", errno);
+  if (S_ISREG(status.st_mode) && status.st_size > 0) {
+    const auto size = static_cast<std::size_t>(status.st_size);
+    void* pages = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, file.fd, 0);
+    // A file system that cannot map files is read as a pipe is.
+    if (pages != MAP_FAILED)
+      return {{}, size, MappedBytes(static_cast<const char*>(pages), {size})};
+  }
+  // A regular file's size is known; a pipe's is found by reading (one byte more lets the read
+  // that sees the end need no growth).
+  std::size_t capacity =
+      (S_ISREG(status.st_mode) ? static_cast<std::size_t>(status.st_size) : 1 << 20) + 1;
+  FileBytes bytes = allocate(path, capacity);
+  for (;;) {
+    if (bytes.size == capacity) {
+      capacity *= 2;
+      bytes = grown(path, bytes, capacity);
+    }
+    const ssize_t got = ::read(file.fd, bytes.data.get() + bytes.size,
+                               std::min<std::size_t>(capacity - bytes.size, 1 << 30));
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) fail(path, "cannot read", errno);
+    if (got == 0) return bytes;
+    bytes.size += static_cast<std::size_t>(got);
+  }
+}
+
+bool is_gzip(std::string_view bytes) {
+  return bytes.size() >= 2 && static_cast<unsigned char>(bytes[0]) == 0x1f &&
+         static_cast<unsigned char>(bytes[1]) == 0x8b;
+}
+
+std::size_t physical_memory() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+  return pages > 0 && page > 0 ? static_cast<std::size_t>(pages) * static_cast<std::size_t>(page)
+                               : SIZE_MAX;
+}
+
+struct DecompressorFree {
+  void operator()(libdeflate_decompressor* d) const { libdeflate_free_decompressor(d); }
+};
+struct CompressorFree {
+  void operator()(libdeflate_compressor* c) const { libdeflate_free_compressor(c); }
+};
+
+// Deflate's largest ratio: a 258-byte match costs at least 2 bits, so 1032 output bytes per input
+// byte; more output than that from a stream means a corrupt or hostile file.
+constexpr std::size_t kDeflateMaxRatio = 1032;
+
+// libdeflate decompresses whole members into a buffer of known size; measured on armadillo-sub2
+// (20 MB gzip, 26 MB PLY) it takes 0.10 s against zlib's gzread 0.21 s.
+FileBytes gunzip(const std::string& path, std::string_view in) {
+  const std::size_t limit = std::min(in.size() * kDeflateMaxRatio, physical_memory());
+  // The last member's trailer holds its size mod 2^32 (exact for the usual single member); below
+  // the compressed size it has wrapped, or the file has several members.
+  std::size_t capacity = 0;
+  if (in.size() >= 18) {  // the smallest gzip member
+    const auto* trailer = reinterpret_cast<const unsigned char*>(in.data() + in.size() - 4);
+    capacity = trailer[0] | trailer[1] << 8 | trailer[2] << 16 |
+               static_cast<std::size_t>(trailer[3]) << 24;
+  }
+  while (capacity < in.size() && capacity + (std::size_t{1} << 32) <= limit) {
+    capacity += std::size_t{1} << 32;
+  }
+  capacity = std::min(capacity, limit);
+  FileBytes out = allocate(path, capacity);
+  std::unique_ptr<libdeflate_decompressor, DecompressorFree> decompressor(
+      libdeflate_alloc_decompressor());
+  if (!decompressor) throw MeshError(path + ": cannot allocate a gzip decompressor");
+  std::size_t pos = 0;
+  while (pos < in.size()) {
+    if (pos > 0 && !is_gzip(in.substr(pos))) {
+      // gzip and zlib accept zero padding after the last member; anything else is damage.
+      if (std::all_of(in.begin() + pos, in.end(), [](char c) { return c == 0; })) break;
+      throw MeshError(path + ": " + std::to_string(in.size() - pos) +
+                      " bytes after the gzip data, from byte " + std::to_string(pos));
+    }
+    std::size_t used = 0, written = 0;
+    const libdeflate_result result = libdeflate_gzip_decompress_ex(
+        decompressor.get(), in.data() + pos, in.size() - pos, out.data.get() + out.size,
+        capacity - out.size, &used, &written);
+    if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
+      // The member is decompressed again into a larger buffer: doubling bounds the waste.
+      if (capacity == limit) {
+        throw MeshError(path + ": decompresses to more than " + std::to_string(limit) + " bytes (" +
+                        (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
+                                                               : "the machine's memory") +
+                        "): corrupt or not a mesh");
+      }
+      capacity = std::min(std::max<std::size_t>(2 * capacity, 1 << 16), limit);
+      out = grown(path, out, capacity);
+      continue;
+    }
+    if (result != LIBDEFLATE_SUCCESS) {
+      throw MeshError(path + ": corrupt gzip data in the member starting at byte " +
+                      std::to_string(pos));
+    }
+    pos += used;
+    out.size += written;
+  }
+  return out;
+}
+
+// A new file beside the target, renamed over it by commit(). Where the file system allows it
+// (Linux's O_TMPFILE), the file has no name until commit() links it: a run killed while writing
+// leaves nothing behind. Elsewhere it is created under a unique hidden name and removed unless
+// committed.
+class TemporaryFile {
+ public:
+  explicit TemporaryFile(const std::string& target) : target_(target) {
+    const std::filesystem::path folder = std::filesystem::path(target).parent_path();
+    // Mode 0666 in both cases, so that the umask applies as for any new file.
+    fd_ = ::open(folder.empty() ? "." : folder.c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (fd_ < 0 && errno != EOPNOTSUPP && errno != EISDIR && errno != EINVAL) {
+      fail(target_, "cannot create a file in its folder", errno);
+    }
+    if (fd_ < 0) {
+      create_named([&](const char* name) {
+        fd_ = ::open(name, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        return fd_ >= 0;
+      });
+    }
+    // A file that is replaced keeps its permissions.
+    struct stat status;
+    if (::stat(target.c_str(), &status) == 0 && S_ISREG(status.st_mode)) {
+      ::fchmod(fd_, status.st_mode & 07777);
+    }
+  }
+  TemporaryFile(const TemporaryFile&) = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+  ~TemporaryFile() {
+    if (fd_ >= 0) ::close(fd_);
+    if (!committed_ && !path_.empty()) ::unlink(path_.c_str());
+  }
+
+  // A large write whose bytes start on a block boundary in memory and in the file goes past the
+  // page cache (O_DIRECT), all but its last partial block: through the cache, each page of the
+  // file is a fresh page of memory, and on this development VM (free page reporting) those are
+  // filled at 0.2-0.3 GB/s. 2 GB written and flushed: 5.3-8.0 s through the cache, 1.3-2.0 s
+  // direct (a standalone test; bench/RESULTS.md, stop 16). Where the file system refuses direct
+  // writes, or the device wants larger blocks, the bytes go through the cache as before.
+  void write(std::string_view bytes) {
+    if (bytes.size() >= kDirectMinBytes && offset_ % kDirectBlock == 0 &&
+        reinterpret_cast<std::uintptr_t>(bytes.data()) % kDirectBlock == 0) {
+      const int flags = ::fcntl(fd_, F_GETFL);
+      if (flags >= 0 && ::fcntl(fd_, F_SETFL, flags | O_DIRECT) == 0) {
+        bytes.remove_prefix(put(bytes.substr(0, bytes.size() / kDirectBlock * kDirectBlock), true));
+        if (::fcntl(fd_, F_SETFL, flags) != 0) fail(target_, "write failed", errno);
+      }
+    }
+    put(bytes, false);
+  }
+
+  // Flushed to disk before the rename, so a crash leaves the old file or the whole new one.
+  void commit() {
+    if (::fsync(fd_) != 0) fail(target_, "write failed", errno);
+    if (path_.empty()) {
+      // The unnamed file gets a name (through /proc: linking by descriptor needs privileges).
+      const std::string self = "/proc/self/fd/" + std::to_string(fd_);
+      create_named([&](const char* name) {
+        return ::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, name, AT_SYMLINK_FOLLOW) == 0;
+      });
+    }
+    const int fd = fd_;
+    fd_ = -1;
+    if (::close(fd) != 0) fail(target_, "write failed", errno);
+    if (::rename(path_.c_str(), target_.c_str()) != 0) fail(target_, "cannot replace", errno);
+    committed_ = true;
+  }
+
+ private:
+  // Makes path_ a new unique name beside the target, as mkstemp would, by create(name).
+  template <class Create>
+  void create_named(const Create& create) {
+    const std::filesystem::path path(target_);
+    std::random_device random;
+    for (int attempt = 0;; ++attempt) {
+      const std::uint64_t tag = std::uint64_t{random()} << 32 | random();
+      char hex[17];
+      std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(tag));
+      // Built by appends: GCC 12 gives a false -Wrestrict on chains of operator+ here.
+      std::string name(1, '.');
+      name.append(path.filename().string()).append(".").append(hex).append(".tmp");
+      const std::string candidate = (path.parent_path() / name).string();
+      if (create(candidate.c_str())) {
+        path_ = candidate;
+        return;
+      }
+      if (errno != EEXIST || attempt == 100) {
+        fail(target_, "cannot create a file in its folder", errno);
+      }
+    }
+  }
+
+  static constexpr std::size_t kDirectBlock = 4096;  // a multiple of every common logical block
+  static constexpr std::size_t kDirectMinBytes = std::size_t{64} << 20;
+
+  // Writes the bytes at the file's end; returns how many. `direct`: stops without failing at the
+  // first refusal (EINVAL: alignment or support), leaving the rest to a write through the cache.
+  std::size_t put(std::string_view bytes, bool direct) {
+    std::size_t written = 0;
+    while (written < bytes.size()) {
+      const ssize_t put = ::write(fd_, bytes.data() + written,
+                                  std::min<std::size_t>(bytes.size() - written, 1 << 30));
+      if (put < 0 && errno == EINTR) continue;
+      if (put < 0 && direct && errno == EINVAL) break;
+      if (put < 0) fail(target_, "write failed", errno);
+      written += static_cast<std::size_t>(put);
+    }
+    offset_ += written;
+    return written;
+  }
+
+  std::string target_;
+  std::string path_;  // empty while the file has no name
+  int fd_ = -1;
+  bool committed_ = false;
+  std::size_t offset_ = 0;  // bytes written so far
+};
+
+// Compressed in independent gzip members of this many input bytes: the output buffer stays
+// small and the file stays one standard gzip stream for every reader (RFC 1952 members).
+constexpr std::size_t kGzipMemberBytes = std::size_t{64} << 20;
+
+// Level 6, zlib's default: libdeflate at 6 took 0.67-0.86 s on armadillo-sub2's 26 MB PLY
+// against 4.7 s for zlib at 6, and its output was smaller.
+constexpr int kGzipLevel = 6;
+
+void write_gzip(TemporaryFile& file, const std::string& path, std::string_view bytes) {
+  std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(
+      libdeflate_alloc_compressor(kGzipLevel));
+  if (!compressor) throw MeshError(path + ": cannot allocate a gzip compressor");
+  const std::size_t chunk = std::min(bytes.size(), kGzipMemberBytes);
+  const std::size_t bound = libdeflate_gzip_compress_bound(compressor.get(), chunk);
+  const HugeArray<char> out = make_huge_array<char>(bound);
+  do {
+    const std::string_view member = bytes.substr(0, chunk);
+    const std::size_t size =
+        libdeflate_gzip_compress(compressor.get(), member.data(), member.size(), out.get(), bound);
+    if (size == 0) throw MeshError(path + ": gzip compression failed");
+    file.write({out.get(), size});
+    bytes.remove_prefix(member.size());
+  } while (!bytes.empty());
+}
+
+}  // namespace
+
+void Unmap::operator()(const char* bytes) const {
+  ::munmap(const_cast<char*>(bytes), size);
+}
+
+bool ends_with_nocase(std::string_view path, std::string_view suffix) {
+  if (path.size() < suffix.size()) return false;
+  path.remove_prefix(path.size() - suffix.size());
+  for (std::size_t i = 0; i < suffix.size(); ++i) {
+    const char c = path[i] >= 'A' && path[i] <= 'Z' ? char(path[i] - 'A' + 'a') : path[i];
+    if (c != suffix[i]) return false;
+  }
+  return true;
+}
+
+FileBytes read_file_bytes(const std::string& path) {
+  FileBytes raw = read_raw(path);
+  if (!is_gzip(raw.view())) return raw;
+  return gunzip(path, raw.view());
+}
+
+void write_file_bytes(const std::string& path, std::string_view bytes) {
+  TemporaryFile file(path);
+  if (ends_with_nocase(path, ".gz")) {
+    write_gzip(file, path, bytes);
+  } else {
+    file.write(bytes);
+  }
+  file.commit();
+}
+
+}  // namespace petersen

@@ -1,0 +1,81 @@
+#pragma once
+// Triangle and quad meshes as flat arrays of positions and corner indices.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "petersen/mesh/mesh_attributes.hpp"
+#include "petersen/graph/huge_pages.hpp"
+
+namespace petersen {
+
+using VertexId = std::uint32_t;
+using FaceId = std::uint32_t;
+
+/// Vertex positions; like every large array of the library, on huge pages once large
+/// (petersen/graph/huge_pages.hpp), so that meshes, graphs and scratch arrays recycle one
+/// another's memory.
+using Positions = HugeVector<std::array<double, 3>>;
+
+/// A triangle mesh: positions and, per triangle, three corner indices in counter-clockwise order
+/// seen from outside. Edge k of triangle t joins corners k and (k+1)%3.
+struct TriangleMesh {
+  Positions positions;
+  HugeVector<std::array<VertexId, 3>> triangles;
+};
+
+/// A quad mesh over the same positions as the triangle mesh it came from.
+struct QuadMesh {
+  Positions positions;
+  HugeVector<std::array<VertexId, 4>> quads;
+};
+
+/// A mesh whose faces have any number of corners (three or more), as flat arrays: face f's
+/// corners, in order, are corners[face_start[f]] up to corners[face_start[f + 1]]. While every
+/// face is a triangle, face_start stays empty and face f is corners[3f], corners[3f + 1],
+/// corners[3f + 2]: 4 bytes per face saved where it matters, on large all-triangle meshes.
+/// add_face keeps that invariant; code that fills the arrays directly must keep it too.
+struct PolygonMesh {
+  Positions positions;
+  HugeVector<VertexId> corners;
+  HugeVector<std::uint32_t> face_start;  ///< empty (all triangles), or face_count() + 1 offsets
+  /// Texture coordinates, normals, materials, groups and other properties, where the mesh has
+  /// them (see MeshAttributes); add_face does not touch them.
+  MeshAttributes attributes;
+
+  bool all_triangles() const { return face_start.empty(); }
+  std::size_t face_count() const {
+    return all_triangles() ? corners.size() / 3 : face_start.size() - 1;
+  }
+  std::uint32_t arity(FaceId f) const {
+    return all_triangles() ? 3 : face_start[f + 1] - face_start[f];
+  }
+  std::span<const VertexId> face(FaceId f) const {
+    const std::size_t first = all_triangles() ? 3 * std::size_t{f} : face_start[f];
+    return {corners.data() + first, arity(f)};
+  }
+  /// Appends a face (at least three corners; not checked here). Switches to explicit face starts
+  /// at the first face that is not a triangle. Throws MeshError past 2^32 - 1 corners.
+  void add_face(std::span<const VertexId> face_corners);
+};
+
+/// Throws MeshError naming the first attribute array whose size does not match the mesh (one
+/// entry per corner, face or vertex) or whose index is out of range. O(corners + faces).
+void check_attributes(const PolygonMesh& mesh);
+
+/// The triangle mesh as a polygon mesh (a copy of its corners), and back: to_triangle_mesh throws
+/// MeshError naming the first face that is not a triangle. O(F).
+PolygonMesh to_polygon_mesh(const TriangleMesh& mesh);
+TriangleMesh to_triangle_mesh(const PolygonMesh& mesh);
+
+/// Raised for bad mesh input or a mesh that is not a closed surface; the message names the file
+/// and line, or the element index.
+struct MeshError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace petersen
