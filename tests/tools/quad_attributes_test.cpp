@@ -1,4 +1,4 @@
-// `petersen quad` end to end on what a mesh carries (issue 13's done-when): an OBJ with texture
+// `petersen quad` end to end on what a mesh carries: an OBJ with texture
 // coordinates, normals, several materials and groups, and a PLY with vertex colours, converted
 // by the tool; its output read back and checked against the input, face by face.
 
