@@ -180,23 +180,8 @@ class PairableGraphBuilder {
         attribute_cuts_(has_attribute_cuts(cuts)),
         triangles_only_(mesh.all_triangles()),
         half_(mesh) {
-    const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
-    // Per face only for polygons, where the test is quadratic in the arity; a triangle's is three
-    // comparisons on corners the edge visit reads anyway.
-    if (!triangles_only_) {
-      degenerate_face_.resize(face_count);
-      for (FaceId f = 0; f < face_count; ++f) degenerate_face_[f] = repeats_a_vertex(mesh.face(f));
-    }
-    if (triangles_only_) {
-      graph.node_count = face_count;
-    } else {
-      face_node_.assign(face_count, kNoNode);
-      for (FaceId f = 0; f < face_count; ++f) {
-        if (mesh.arity(f) != 3) continue;
-        face_node_[f] = graph.node_count++;
-        graph.node_face.push_back(f);
-      }
-    }
+    if (!triangles_only_) mark_degenerate_polygons();
+    number_nodes(graph);
     graph.node_edges.assign(3 * std::size_t{graph.node_count}, kNoEdge);
     graph.edge_ends.reserve(triangles_only_ ? mesh.corners.size() : 0);
   }
@@ -239,6 +224,29 @@ class PairableGraphBuilder {
   }
 
  private:
+  // Per face only for polygons, where the test is quadratic in the arity; a triangle's is three
+  // comparisons on corners the edge visit reads anyway (degenerate).
+  void mark_degenerate_polygons() {
+    const auto face_count = static_cast<FaceId>(mesh_.face_count());
+    degenerate_face_.resize(face_count);
+    for (FaceId f = 0; f < face_count; ++f) degenerate_face_[f] = repeats_a_vertex(mesh_.face(f));
+  }
+
+  // Triangles become nodes in face order.
+  void number_nodes(PairableGraph& graph) {
+    const auto face_count = static_cast<FaceId>(mesh_.face_count());
+    if (triangles_only_) {
+      graph.node_count = face_count;
+      return;
+    }
+    face_node_.assign(face_count, kNoNode);
+    for (FaceId f = 0; f < face_count; ++f) {
+      if (mesh_.arity(f) != 3) continue;
+      face_node_[f] = graph.node_count++;
+      graph.node_face.push_back(f);
+    }
+  }
+
   NodeId node_of(FaceId f) const { return triangles_only_ ? f : face_node_[f]; }
 
   // Halfedge h's slot in node_edges: side h - first(f) of its face f's node.
