@@ -49,7 +49,8 @@ struct QuadRun {
   const PolygonMesh& mesh;
   const QuadOptions& options;
   // The mesh itself when the caller gave it up: the output takes over its positions instead of
-  // copying them once nothing reads them any more, and lrs may free its corners (pair_triangles).
+  // copying them once nothing reads them any more, and lrs may free its corners (pair_triangles);
+  // null otherwise.
   PolygonMesh* movable;
   // Counted before the pairing, which may free the mesh's corners.
   FaceId face_count = static_cast<FaceId>(mesh.face_count());
