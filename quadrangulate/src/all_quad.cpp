@@ -15,6 +15,8 @@ constexpr std::uint32_t kBlocked = 0xFFFFFFFEu;    // an edge of three or more f
 constexpr std::uint32_t kUnreached = 0xFFFFFFFFu;  // a face no search has reached
 constexpr std::uint32_t kStart = 0xFFFFFFFDu;      // the face a search starts from
 
+using Sources = HugeVector<std::array<FaceId, 2>>;
+
 // The output mesh's halfedges with the twin of each: the other halfedge of an edge of exactly two
 // faces, kBoundary for an edge of one face, kBlocked otherwise.
 struct Halfedges : PolygonHalfedges {
@@ -40,8 +42,30 @@ Halfedges halfedges_of(const PolygonMesh& mesh) {
   return half;
 }
 
-// Where a path crosses a face: the sides (corner positions) it enters and leaves by, and the
-// midpoint vertex on each (kNoNode where it does not cross).
+// The edges of three or more faces, as lists of their halfedges: splitting one, the last resort of
+// a search, gives every face on it the midpoint.
+struct NonManifoldEdges {
+  std::vector<std::uint32_t> edge_of;  // per halfedge: its edge's index, or kNoNode
+  std::vector<std::vector<std::uint32_t>> halfedges;
+};
+
+NonManifoldEdges non_manifold_edges_of(const Halfedges& half) {
+  NonManifoldEdges edges{std::vector<std::uint32_t>(half.count(), kNoNode), {}};
+  const EdgeGroups groups = half.group();
+  for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
+    if (end - first < 3) return;
+    const auto index = static_cast<std::uint32_t>(edges.halfedges.size());
+    std::vector<std::uint32_t>& members = edges.halfedges.emplace_back();
+    for (std::uint32_t i = first; i < end; ++i) {
+      edges.edge_of[groups.entries[i][1]] = index;
+      members.push_back(groups.entries[i][1]);
+    }
+  });
+  return edges;
+}
+
+// Where paths cross a face: the sides (corner positions) they enter and leave by, and the midpoint
+// vertex on each (kNoNode where none crosses).
 struct Crossing {
   std::uint32_t side[2] = {kNoNode, kNoNode};
   VertexId midpoint[2] = {kNoNode, kNoNode};
@@ -55,220 +79,288 @@ std::array<double, 3> average(std::span<const std::array<double, 3>> points) {
   return sum;
 }
 
-}  // namespace
+// Appends a new vertex at the average of `corners`, and with attributes what it is made of.
+VertexId add_vertex_between(PolygonMesh& mesh, std::vector<Blend>* new_vertices, Blend corners) {
+  std::array<double, 3> points[4];
+  std::size_t n = 0;
+  for (; n < 4 && corners[n] != kNoAttribute; ++n) points[n] = mesh.positions[corners[n]];
+  mesh.positions.push_back(average({points, n}));
+  if (new_vertices != nullptr) new_vertices->push_back(corners);
+  return static_cast<VertexId>(mesh.positions.size() - 1);
+}
 
-void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
-  PolygonMesh& mesh = result.mesh;
-  const Halfedges half = halfedges_of(mesh);
-  const std::uint32_t face_count = static_cast<std::uint32_t>(mesh.face_count());
-  const std::size_t input_vertices = mesh.positions.size();
+// Where a search for a path ends: its last face, and the halfedge the path leaves it by (a boundary
+// or non-manifold edge), kNoNode when the path ends in a left triangle.
+struct PathEnd {
+  FaceId target = kNoFace;
+  std::uint32_t exit = kNoNode;
+};
 
-  // used: a left triangle already joined, or a quad already on a path.
-  std::vector<std::uint8_t> used(face_count, 0);
-  std::vector<Crossing> crossing(face_count);
-  std::vector<std::uint32_t> reached_by(face_count,
-                                        kUnreached);  // the halfedge a search entered by
-  std::vector<FaceId> visited, queue;
-  // With attributes: what each new vertex, output corner and output face is made from.
-  const bool carry = !mesh.attributes.empty();
-  std::vector<Blend> new_vertices, corner_from;
-  std::vector<FaceId> face_of;
-  auto midpoint_of = [&](std::uint32_t h) {
-    const std::array<double, 3> ends[2] = {mesh.positions[half.from(h)],
-                                           mesh.positions[half.to(h)]};
-    mesh.positions.push_back(average(ends));
-    if (carry) new_vertices.push_back({half.from(h), half.to(h), kNoAttribute, kNoAttribute});
-    return static_cast<VertexId>(mesh.positions.size() - 1);
-  };
-  auto cross = [&](FaceId f, std::uint32_t h, VertexId m) {
-    Crossing& c = crossing[f];
-    const int slot = c.side[0] == kNoNode ? 0 : 1;
-    c.side[slot] = h - half.first(f);
-    c.midpoint[slot] = m;
-  };
+// The paths from each left triangle and the midpoints on them: which faces they cross, where.
+// Each path is a breadth-first search over pair quads not on a path yet; O(r) for the region r it
+// explores.
+class LeftoverJoiner {
+ public:
+  LeftoverJoiner(PolygonMesh& mesh, const Halfedges& half, const std::vector<FaceKind>& kinds,
+                 const Sources& sources, std::vector<Blend>* new_vertices)
+      : mesh_(mesh),
+        half_(half),
+        kinds_(kinds),
+        sources_(sources),
+        new_vertices_(new_vertices),
+        non_manifold_(non_manifold_edges_of(half)),
+        used_(kinds.size(), 0),
+        crossing_(kinds.size()),
+        reached_by_(kinds.size(), kUnreached) {}
 
-  // A non-manifold edge's halfedges, for the last resort below: splitting it gives every face on
-  // it the midpoint.
-  std::vector<std::uint32_t> group_of(half.count(), kNoNode);
-  std::vector<std::vector<std::uint32_t>> groups;
-  {
-    const EdgeGroups edges = half.group();
-    for_each_edge_group(edges, [&](std::uint32_t first, std::uint32_t end) {
-      if (end - first < 3) return;
-      groups.emplace_back();
-      for (std::uint32_t i = first; i < end; ++i) {
-        group_of[edges.entries[i][1]] = static_cast<std::uint32_t>(groups.size() - 1);
-        groups.back().push_back(edges.entries[i][1]);
+  // Joins every left triangle, in face order; a quad that got one midpoint from a split
+  // non-manifold edge is joined right after the path that split it.
+  std::vector<Crossing> join_all() && {
+    const auto face_count = static_cast<FaceId>(kinds_.size());
+    for (FaceId s = 0; s < face_count; ++s) {
+      if (kinds_[s] != FaceKind::left || used_[s]) continue;
+      check_not_degenerate(s);
+      used_[s] = 1;
+      join(s);
+      while (!pending_.empty()) {
+        const FaceId g = pending_.back();
+        pending_.pop_back();
+        join(g);
       }
-    });
+    }
+    return std::move(crossing_);
   }
-  // Quads that got one midpoint from a split non-manifold edge and need a path of their own.
-  std::vector<FaceId> pending;
-  auto usable_at_split = [&](FaceId g) {
-    return !used[g] && (kinds[g] == FaceKind::left || kinds[g] == FaceKind::pair);
-  };
 
-  // From face s (a left triangle, or a quad with one midpoint): breadth-first over pair quads not
-  // on a path yet, to the nearest free left triangle or boundary edge; failing both, to the
-  // nearest non-manifold edge whose other faces are all free left triangles or free quads (each
-  // such quad then starts a path of its own). Splits along the path found.
-  auto join = [&](FaceId s) {
-    visited.assign(1, s);
-    queue.assign(1, s);
-    reached_by[s] = kStart;
-    FaceId target = kNoFace;
-    std::uint32_t exit = kNoNode;  // the halfedge the path leaves its last face by
-    FaceId split_face = kNoFace;   // the last resort: a face beside a non-manifold edge
-    std::uint32_t split_exit = kNoNode;
-    for (std::size_t head = 0; head < queue.size() && target == kNoFace; ++head) {
-      const FaceId f = queue[head];
-      const std::uint32_t first = half.first(f);
-      for (std::uint32_t k = 0; k < mesh.arity(f) && target == kNoFace; ++k) {
+ private:
+  void check_not_degenerate(FaceId s) const {
+    const auto corners = mesh_.face(s);
+    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0]) {
+      throw MeshError("--all-quad: left triangle (input face " + std::to_string(sources_[s][0]) +
+                      ") repeats a vertex; it cannot become a quad");
+    }
+  }
+
+  // From face s (a left triangle, or a quad with one midpoint) to the nearest free left triangle
+  // or boundary edge, failing both to the nearest non-manifold edge it may split; splits along
+  // the path found.
+  void join(FaceId s) {
+    const PathEnd end = find_path(s);
+    const VertexId exit_midpoint = split_along_path(s, end);
+    for (FaceId f : visited_) reached_by_[f] = kUnreached;
+    if (end.exit != kNoNode && non_manifold_.edge_of[end.exit] != kNoNode) {
+      split_other_faces_of(end.exit, exit_midpoint);
+    }
+  }
+
+  bool usable_at_split(FaceId g) const {
+    return !used_[g] && (kinds_[g] == FaceKind::left || kinds_[g] == FaceKind::pair);
+  }
+
+  // Whether face f may end a path at halfedge h, a non-manifold edge: every other face on the edge
+  // is a free left triangle or a free quad (each such quad then starts a path of its own).
+  bool may_split_non_manifold(FaceId f, std::uint32_t h) const {
+    if (non_manifold_.edge_of[h] == kNoNode) return false;
+    bool all_usable = true;
+    for (std::uint32_t other : non_manifold_.halfedges[non_manifold_.edge_of[h]]) {
+      all_usable &= other == h || (half_.face(other) != f && usable_at_split(half_.face(other)));
+    }
+    return all_usable;
+  }
+
+  void reach(FaceId g, std::uint32_t entry) {
+    reached_by_[g] = entry;
+    visited_.push_back(g);
+  }
+
+  // Breadth-first from s; reached_by_ holds the halfedge each face was entered by.
+  PathEnd find_path(FaceId s) {
+    visited_.assign(1, s);
+    queue_.assign(1, s);
+    reached_by_[s] = kStart;
+    PathEnd end, last_resort;
+    for (std::size_t head = 0; head < queue_.size() && end.target == kNoFace; ++head) {
+      const FaceId f = queue_[head];
+      const std::uint32_t first = half_.first(f);
+      for (std::uint32_t k = 0; k < mesh_.arity(f) && end.target == kNoFace; ++k) {
         const std::uint32_t h = first + k;
-        if (half.twin[h] == kBlocked) {
-          if (split_face == kNoFace && group_of[h] != kNoNode) {
-            bool all_usable = true;
-            for (std::uint32_t other : groups[group_of[h]]) {
-              all_usable &=
-                  other == h || (half.face(other) != f && usable_at_split(half.face(other)));
-            }
-            if (all_usable) {
-              split_face = f;
-              split_exit = h;
-            }
-          }
+        if (half_.twin[h] == kBlocked) {
+          if (last_resort.target == kNoFace && may_split_non_manifold(f, h)) last_resort = {f, h};
           continue;
         }
-        if (reached_by[f] == h) continue;  // the side the search came in by
-        if (half.twin[h] == kBoundary) {
-          target = f;
-          exit = h;
+        if (reached_by_[f] == h) continue;  // the side the search came in by
+        if (half_.twin[h] == kBoundary) {
+          end = {f, h};
           break;
         }
-        const FaceId g = half.face(half.twin[h]);
-        if (used[g] || reached_by[g] != kUnreached) continue;
-        if (kinds[g] == FaceKind::left) {
-          reached_by[g] = half.twin[h];
-          visited.push_back(g);
-          target = g;
-        } else if (kinds[g] == FaceKind::pair) {
-          reached_by[g] = half.twin[h];
-          visited.push_back(g);
-          queue.push_back(g);
+        const FaceId g = half_.face(half_.twin[h]);
+        if (used_[g] || reached_by_[g] != kUnreached) continue;
+        if (kinds_[g] == FaceKind::left) {
+          reach(g, half_.twin[h]);
+          end = {g, kNoNode};
+        } else if (kinds_[g] == FaceKind::pair) {
+          reach(g, half_.twin[h]);
+          queue_.push_back(g);
         }
       }
     }
-    if (target == kNoFace && split_face != kNoFace) {
-      target = split_face;
-      exit = split_exit;
-    }
-    if (target == kNoFace) {
-      throw MeshError("--all-quad: face " + std::to_string(result.sources[s][0]) +
+    if (end.target == kNoFace) end = last_resort;
+    if (end.target == kNoFace) {
+      throw MeshError("--all-quad: face " + std::to_string(sources_[s][0]) +
                       " (input) can reach no left triangle, no boundary edge and no non-manifold "
                       "edge it could split, across edges of two faces and quads not already "
                       "split; no all-quad mesh on these vertices");
     }
-    // Walk back from the target, splitting each edge crossed.
+    return end;
+  }
+
+  VertexId split_edge(std::uint32_t h) {
+    return add_vertex_between(mesh_, new_vertices_,
+                              {half_.from(h), half_.to(h), kNoAttribute, kNoAttribute});
+  }
+
+  void cross(FaceId f, std::uint32_t h, VertexId midpoint) {
+    Crossing& c = crossing_[f];
+    const int slot = c.side[0] == kNoNode ? 0 : 1;
+    c.side[slot] = h - half_.first(f);
+    c.midpoint[slot] = midpoint;
+  }
+
+  // Walks back from the path's end to s, splitting each edge crossed (the exit first). Returns the
+  // exit's midpoint, kNoNode when the path ends in a left triangle.
+  VertexId split_along_path(FaceId s, PathEnd end) {
     VertexId exit_midpoint = kNoNode;
-    if (exit != kNoNode) {
-      exit_midpoint = midpoint_of(exit);
-      cross(target, exit, exit_midpoint);
+    if (end.exit != kNoNode) {
+      exit_midpoint = split_edge(end.exit);
+      cross(end.target, end.exit, exit_midpoint);
     } else {
-      used[target] = 1;
+      used_[end.target] = 1;
     }
-    if (kinds[target] == FaceKind::pair) used[target] = 1;
-    for (FaceId f = target; f != s;) {
-      const std::uint32_t entry = reached_by[f];  // f's halfedge, twin in the previous face
-      const VertexId m = midpoint_of(entry);
+    if (kinds_[end.target] == FaceKind::pair) used_[end.target] = 1;
+    for (FaceId f = end.target; f != s;) {
+      const std::uint32_t entry = reached_by_[f];  // f's halfedge, twin in the previous face
+      const VertexId m = split_edge(entry);
       cross(f, entry, m);
-      const std::uint32_t back = half.twin[entry];
-      const FaceId previous = half.face(back);
+      const std::uint32_t back = half_.twin[entry];
+      const FaceId previous = half_.face(back);
       cross(previous, back, m);
-      if (kinds[f] == FaceKind::pair) used[f] = 1;
+      if (kinds_[f] == FaceKind::pair) used_[f] = 1;
       f = previous;
     }
-    for (FaceId f : visited) reached_by[f] = kUnreached;
-    if (exit != kNoNode && group_of[exit] != kNoNode) {
-      for (std::uint32_t other : groups[group_of[exit]]) {
-        if (other == exit) continue;
-        const FaceId g = half.face(other);
-        if (!usable_at_split(g)) {  // the path itself went through it
-          throw MeshError("--all-quad: the split of a non-manifold edge beside input face " +
-                          std::to_string(result.sources[g][0]) +
-                          " meets a face already split; no all-quad mesh found");
-        }
-        cross(g, other, exit_midpoint);
-        used[g] = 1;
-        if (kinds[g] == FaceKind::pair) pending.push_back(g);
-      }
-    }
-  };
+    return exit_midpoint;
+  }
 
-  for (FaceId s = 0; s < face_count; ++s) {
-    if (kinds[s] != FaceKind::left || used[s]) continue;
-    const auto corners = mesh.face(s);
-    if (corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0]) {
-      throw MeshError("--all-quad: left triangle (input face " +
-                      std::to_string(result.sources[s][0]) +
-                      ") repeats a vertex; it cannot become a quad");
-    }
-    used[s] = 1;
-    join(s);
-    while (!pending.empty()) {
-      const FaceId g = pending.back();
-      pending.pop_back();
-      join(g);
+  // A path left by non-manifold edge `exit`: the edge's other faces take its midpoint too.
+  void split_other_faces_of(std::uint32_t exit, VertexId midpoint) {
+    for (std::uint32_t other : non_manifold_.halfedges[non_manifold_.edge_of[exit]]) {
+      if (other == exit) continue;
+      const FaceId g = half_.face(other);
+      if (!usable_at_split(g)) {  // the path itself went through it
+        throw MeshError("--all-quad: the split of a non-manifold edge beside input face " +
+                        std::to_string(sources_[g][0]) +
+                        " meets a face already split; no all-quad mesh found");
+      }
+      cross(g, other, midpoint);
+      used_[g] = 1;
+      if (kinds_[g] == FaceKind::pair) pending_.push_back(g);
     }
   }
 
-  // The faces again, with every crossed face replaced by its pieces (same sources).
-  PolygonMesh out;
-  HugeVector<std::array<FaceId, 2>> sources;
-  out.corners.reserve(mesh.corners.size() + 8 * (mesh.positions.size() - input_vertices));
-  std::uint64_t pieces = 0;
-  for (FaceId f = 0; f < face_count; ++f) {
-    const auto q = mesh.face(f);
-    const Crossing& c = crossing[f];
-    // The corners of each piece added below: a corner of f (its position k in f), or the
-    // midpoint of f's side k (k + kSide), or f's centre (kCentre); f's own corner values blended.
-    constexpr std::uint32_t kSide = 8, kCentre = 16;
-    auto made_of = [&](std::initializer_list<std::uint32_t> piece) {
-      if (!carry) return;
-      face_of.push_back(f);
-      const std::uint32_t first = half.first(f), n = mesh.arity(f);
-      for (std::uint32_t k : piece) {
-        if (k == kCentre) {
-          corner_from.push_back({first, first + 1, first + 2, first + 3});
-        } else if (k >= kSide) {
-          corner_from.push_back(
-              {first + k - kSide, first + (k - kSide + 1) % n, kNoAttribute, kNoAttribute});
-        } else {
-          corner_from.push_back({first + k, kNoAttribute, kNoAttribute, kNoAttribute});
-        }
+  PolygonMesh& mesh_;
+  const Halfedges& half_;
+  const std::vector<FaceKind>& kinds_;
+  const Sources& sources_;
+  std::vector<Blend>* new_vertices_;  // null without attributes
+  const NonManifoldEdges non_manifold_;
+  std::vector<std::uint8_t> used_;  // a left triangle already joined, or a quad already on a path
+  std::vector<Crossing> crossing_;
+  std::vector<std::uint32_t> reached_by_;  // the halfedge a search entered by
+  std::vector<FaceId> visited_, queue_;
+  std::vector<FaceId> pending_;  // quads with one midpoint from a non-manifold split
+};
+
+// A piece's corner, by its place in the face it is cut from: corner k, the midpoint of side k
+// (k + kSide), or the face's centre (kCentre).
+constexpr std::uint32_t kSide = 8, kCentre = 16;
+
+// The output faces after the splits, and with attributes what each face and corner is made from.
+struct RebuiltFaces {
+  PolygonMesh mesh;
+  Sources sources;
+  std::vector<FaceId> face_of;
+  std::vector<Blend> corner_from;
+  std::uint64_t pieces = 0;  // faces made by the splits
+};
+
+// The faces again, with every crossed face replaced by its pieces (same sources).
+class FaceRebuilder {
+ public:
+  FaceRebuilder(PolygonMesh& mesh, const Halfedges& half, const Sources& sources,
+                std::vector<Blend>* new_vertices)
+      : mesh_(mesh), half_(half), sources_(sources), new_vertices_(new_vertices) {}
+
+  RebuiltFaces rebuild(std::span<const Crossing> crossing, std::size_t input_vertices) && {
+    out_.mesh.corners.reserve(mesh_.corners.size() + 8 * (mesh_.positions.size() - input_vertices));
+    for (FaceId f = 0; f < crossing.size(); ++f) {
+      const Crossing& c = crossing[f];
+      if (c.side[0] == kNoNode) {
+        add_as_is(f);
+      } else if (mesh_.arity(f) == 3) {
+        add_split_triangle(f, c);
+      } else {
+        add_split_quad(f, c);
       }
-    };
-    if (c.side[0] == kNoNode) {
-      out.add_face(q);
-      sources.push_back(result.sources[f]);
-      if (carry) {
-        face_of.push_back(f);
-        for (std::uint32_t k = 0; k < q.size(); ++k) {
-          corner_from.push_back({half.first(f) + k, kNoAttribute, kNoAttribute, kNoAttribute});
-        }
+    }
+    return std::move(out_);
+  }
+
+ private:
+  bool carry() const { return new_vertices_ != nullptr; }
+
+  void add_as_is(FaceId f) {
+    const auto q = mesh_.face(f);
+    out_.mesh.add_face(q);
+    out_.sources.push_back(sources_[f]);
+    if (!carry()) return;
+    out_.face_of.push_back(f);
+    for (std::uint32_t k = 0; k < q.size(); ++k) {
+      out_.corner_from.push_back({half_.first(f) + k, kNoAttribute, kNoAttribute, kNoAttribute});
+    }
+  }
+
+  // A piece of face f: its vertices, and the same corners by their place in f, whose corner
+  // values each blends.
+  void add_piece(FaceId f, const std::array<VertexId, 4>& corners,
+                 std::initializer_list<std::uint32_t> places) {
+    out_.mesh.add_face(corners);
+    out_.sources.push_back(sources_[f]);
+    ++out_.pieces;
+    if (!carry()) return;
+    out_.face_of.push_back(f);
+    const std::uint32_t first = half_.first(f), n = mesh_.arity(f);
+    for (std::uint32_t k : places) {
+      if (k == kCentre) {
+        out_.corner_from.push_back({first, first + 1, first + 2, first + 3});
+      } else if (k >= kSide) {
+        out_.corner_from.push_back(
+            {first + k - kSide, first + (k - kSide + 1) % n, kNoAttribute, kNoAttribute});
+      } else {
+        out_.corner_from.push_back({first + k, kNoAttribute, kNoAttribute, kNoAttribute});
       }
-      continue;
     }
-    if (q.size() == 3) {
-      // A left triangle with one midpoint m on side i: (q_i, m, q_i+1, q_i+2).
-      const std::uint32_t i = c.side[0];
-      const std::array<VertexId, 4> quad{q[i], c.midpoint[0], q[(i + 1) % 3], q[(i + 2) % 3]};
-      out.add_face(quad);
-      made_of({i, kSide + i, (i + 1) % 3, (i + 2) % 3});
-      sources.push_back(result.sources[f]);
-      ++pieces;
-      continue;
-    }
-    // A quad crossed through sides i and j with midpoints mi, mj.
+  }
+
+  // A left triangle with one midpoint m on side i: (q_i, m, q_i+1, q_i+2).
+  void add_split_triangle(FaceId f, const Crossing& c) {
+    const auto q = mesh_.face(f);
+    const std::uint32_t i = c.side[0];
+    add_piece(f, {q[i], c.midpoint[0], q[(i + 1) % 3], q[(i + 2) % 3]},
+              {i, kSide + i, (i + 1) % 3, (i + 2) % 3});
+  }
+
+  // A quad crossed through sides i and j with midpoints mi, mj: two quads when the path goes
+  // straight through, three around a new centre vertex when it turns.
+  void add_split_quad(FaceId f, const Crossing& c) {
+    const auto q = mesh_.face(f);
     std::uint32_t i = c.side[0], j = c.side[1];
     VertexId mi = c.midpoint[0], mj = c.midpoint[1];
     if ((i + 3) % 4 == j) {  // j just before i: swap so that j = i + 1 or i + 2
@@ -277,48 +369,56 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
     }
     const VertexId a = q[i], b = q[(i + 1) % 4], cc = q[(i + 2) % 4], d = q[(i + 3) % 4];
     const std::uint32_t ia = i, ib = (i + 1) % 4, ic = (i + 2) % 4, id = (i + 3) % 4;
-    if (j == (i + 2) % 4) {
-      const std::array<VertexId, 4> left{a, mi, mj, d}, right{mi, b, cc, mj};
-      out.add_face(left);
-      made_of({ia, kSide + ia, kSide + ic, id});
-      out.add_face(right);
-      made_of({kSide + ia, ib, ic, kSide + ic});
-      sources.push_back(result.sources[f]);
-      sources.push_back(result.sources[f]);
-      pieces += 2;
-    } else {
-      const std::array<double, 3> corners[4] = {mesh.positions[a], mesh.positions[b],
-                                                mesh.positions[cc], mesh.positions[d]};
-      mesh.positions.push_back(average(corners));
-      if (carry) new_vertices.push_back({a, b, cc, d});
-      const VertexId x = static_cast<VertexId>(mesh.positions.size() - 1);
-      const std::array<VertexId, 4> first{a, mi, x, d}, second{mi, b, mj, x}, third{x, mj, cc, d};
-      out.add_face(first);
-      made_of({ia, kSide + ia, kCentre, id});
-      out.add_face(second);
-      made_of({kSide + ia, ib, kSide + ib, kCentre});
-      out.add_face(third);
-      made_of({kCentre, kSide + ib, ic, id});
-      for (int k = 0; k < 3; ++k) sources.push_back(result.sources[f]);
-      pieces += 3;
+    if (j == ic) {
+      add_piece(f, {a, mi, mj, d}, {ia, kSide + ia, kSide + ic, id});
+      add_piece(f, {mi, b, cc, mj}, {kSide + ia, ib, ic, kSide + ic});
+      return;
     }
+    const VertexId x = add_vertex_between(mesh_, new_vertices_, {a, b, cc, d});
+    add_piece(f, {a, mi, x, d}, {ia, kSide + ia, kCentre, id});
+    add_piece(f, {mi, b, mj, x}, {kSide + ia, ib, kSide + ib, kCentre});
+    add_piece(f, {x, mj, cc, d}, {kCentre, kSide + ib, ic, id});
   }
+
+  PolygonMesh& mesh_;
+  const Halfedges& half_;
+  const Sources& sources_;
+  std::vector<Blend>* new_vertices_;  // null without attributes
+  RebuiltFaces out_;
+};
+
+}  // namespace
+
+void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds) {
+  PolygonMesh& mesh = result.mesh;
+  const Halfedges half = halfedges_of(mesh);
+  const std::size_t input_vertices = mesh.positions.size();
+  // With attributes: what each new vertex is made from.
+  const bool carry = !mesh.attributes.empty();
+  std::vector<Blend> new_vertices;
+  std::vector<Blend>* const blends = carry ? &new_vertices : nullptr;
+
+  const std::vector<Crossing> crossing =
+      LeftoverJoiner(mesh, half, kinds, result.sources, blends).join_all();
+  RebuiltFaces rebuilt =
+      FaceRebuilder(mesh, half, result.sources, blends).rebuild(crossing, input_vertices);
+
+  PolygonMesh& out = rebuilt.mesh;
   if (carry) {
-    out.attributes =
-        derived_attributes(mesh.attributes, input_vertices, face_of, corner_from, new_vertices);
+    out.attributes = derived_attributes(mesh.attributes, input_vertices, rebuilt.face_of,
+                                        rebuilt.corner_from, new_vertices);
   }
   out.attributes.position_type = mesh.attributes.position_type;
-  // A float PLY is written back as float: its new vertices are held as floats now, so that the
-  // result is what the file will hold (found by fuzz/quad_fuzzer.cpp: a midpoint of two floats
-  // needs up to 25 bits).
+  // A float PLY is written back as float: the new vertices are held as floats, so that the result
+  // is what the file will hold (a midpoint of two floats needs up to 25 bits).
   for (std::size_t v = input_vertices; v < mesh.positions.size(); ++v) {
     for (double& x : mesh.positions[v]) x = held_as(out.attributes.position_type, x);
   }
   out.positions = std::move(mesh.positions);
   result.stats.added_vertices = out.positions.size() - input_vertices;
-  result.stats.split_quads = pieces;
+  result.stats.split_quads = rebuilt.pieces;
   result.mesh = std::move(out);
-  result.sources = std::move(sources);
+  result.sources = std::move(rebuilt.sources);
 }
 
 }  // namespace petersen::quad_detail

@@ -73,10 +73,11 @@ double held_as(ScalarType type, double value) {
   }
 }
 
-MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vertices_before,
-                                  std::span<const FaceId> face_of,
-                                  std::span<const Blend> corner_from,
-                                  std::span<const Blend> new_vertices) {
+namespace {
+
+// A derived mesh's attributes before any per-element value: the tables its indices point into,
+// those of the mesh before (blends append to the value tables).
+MeshAttributes shared_tables(const MeshAttributes& before) {
   MeshAttributes after;
   after.texcoords = before.texcoords;
   after.texcoord_components = before.texcoord_components;
@@ -85,7 +86,12 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
   after.group_names = before.group_names;
   after.object_names = before.object_names;
   after.material_libraries = before.material_libraries;
+  return after;
+}
 
+// Texture coordinates, then normals (renormalised): corner c blended by corner_from[c].
+void blend_corners(const MeshAttributes& before, std::span<const Blend> corner_from,
+                   MeshAttributes& after) {
   auto corners = [&](const HugeVector<std::uint32_t>& index, HugeVector<std::uint32_t>& out,
                      HugeVector<std::array<double, 3>>& values, bool unit) {
     if (index.empty()) return;
@@ -95,7 +101,11 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
   };
   corners(before.corner_texcoord, after.corner_texcoord, after.texcoords, false);
   corners(before.corner_normal, after.corner_normal, after.normals, true);
+}
 
+// Face f takes every face value of before's face face_of[f].
+void copy_face_values(const MeshAttributes& before, std::span<const FaceId> face_of,
+                      MeshAttributes& after) {
   auto per_face = [&](const HugeVector<std::uint32_t>& in, HugeVector<std::uint32_t>& out) {
     if (in.empty()) return;
     out.resize(face_of.size());
@@ -112,7 +122,12 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
     out.values.resize(face_of.size());
     for (std::size_t f = 0; f < face_of.size(); ++f) out.values[f] = column.values[face_of[f]];
   }
+}
 
+// The vertices before keep their properties; new vertex i takes the average of those its blend
+// names, held as the column's type.
+void blend_vertex_properties(const MeshAttributes& before, std::size_t vertices_before,
+                             std::span<const Blend> new_vertices, MeshAttributes& after) {
   for (const PropertyColumn& column : before.vertex_properties) {
     PropertyColumn& out = after.vertex_properties.emplace_back(column);
     out.values.resize(vertices_before + new_vertices.size());
@@ -123,6 +138,18 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
       out.values[vertices_before + i] = held_as(column.type, sum / n);
     }
   }
+}
+
+}  // namespace
+
+MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vertices_before,
+                                  std::span<const FaceId> face_of,
+                                  std::span<const Blend> corner_from,
+                                  std::span<const Blend> new_vertices) {
+  MeshAttributes after = shared_tables(before);
+  blend_corners(before, corner_from, after);
+  copy_face_values(before, face_of, after);
+  blend_vertex_properties(before, vertices_before, new_vertices, after);
   return after;
 }
 

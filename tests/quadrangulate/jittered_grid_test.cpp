@@ -1,4 +1,4 @@
-// Issue 14's acceptance test for the objective: a grid of near-square quads with jittered
+// The acceptance test for the quality objective: a grid of near-square quads with jittered
 // vertices, each cut along a random diagonal, is paired back into (almost) the same quads by
 // Objective::quality; the pairs objective is measured beside it for comparison.
 
@@ -42,9 +42,9 @@ double recovered(const PolygonMesh& grid, const JitteredGrid& spec, const QuadRe
   return double(found) / (double(spec.nx) * spec.ny);
 }
 
-// The open grid (the issue's test) turns out forced: from its corners in, a perfect pairing has no
-// choice, and ps gives back every quad too (measured: 100 % on these seeds). On the torus every
-// triangle has three partners and ps gives back 8-10 %, the minimum-cost pairing all of them.
+// The open grid turns out forced: from its corners in, a perfect pairing has no choice, and ps
+// gives back every quad too (100 % on these seeds). On the torus every triangle has three
+// partners and ps gives back 8-10 %, the minimum-cost pairing all of them.
 TEST(JitteredGrid, QualityGivesBackAtLeast99PercentOfTheQuads) {
   for (bool torus : {false, true}) {
     for (std::uint64_t seed : {1, 2, 3}) {

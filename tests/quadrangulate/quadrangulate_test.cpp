@@ -8,12 +8,12 @@
 
 #include <cmath>
 
-#include "petersen/mesh/mesh_report.hpp"
-#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "petersen/testing/random_attributes.hpp"
 #include "result_check.hpp"
@@ -146,10 +146,10 @@ TEST(Quadrangulate, CertifiesAMaximumThatIsNotPerfect) {
   expect_correct(mesh, /*all_quad=*/true);
 }
 
-// Found by the conversion's fuzzer (clang's UBSan, fuzz/quad_fuzzer.cpp): a face whose corners
+// Two cases the grouping and the numbering must survive (under UBSan too): a face whose corners
 // are all one vertex has only loops, so the grouping of halfedges gets an empty slice; and in a
-// mesh mostly of quads, the numbering of the pairable edges read ahead into the quads' halfedges,
-// which have no slot in the dual.
+// mesh mostly of quads, the numbering of the pairable edges reads ahead over the quads'
+// halfedges, which have no slot in the dual.
 TEST(Quadrangulate, DegenerateFacesAndQuadsAroundTriangles) {
   expect_correct(mesh_of({{0, 0, 0}, {0, 1, 0}}, {{0, 0, 0, 0}}));
   expect_correct(mesh_of({{0, 0, 0}, {0, 1, 0}}, {{0, 0, 0, 0}}), /*all_quad=*/true);
@@ -495,8 +495,8 @@ TEST(Quadrangulate, AllQuadInterpolatesAttributes) {
 }
 
 // A float PLY is written back as float: all_quad's new vertices and float properties are held
-// as floats, so that the result is what the file holds (found by fuzz/quad_fuzzer.cpp: the
-// midpoint of 1 and 1 + 2^-23 needs 25 bits, and was rounded only on the way out).
+// as floats, so that the result is what the file holds (the midpoint of 1 and 1 + 2^-23 needs 25
+// bits: rounded only on the way out, the file would differ from the result in memory).
 TEST(Quadrangulate, AllQuadHoldsFloatPositionsAndPropertiesAsFloats) {
   const double one_up = 1 + std::ldexp(1.0, -23);
   PolygonMesh mesh = mesh_of({{1, 0, 0}, {one_up, 3, 0}, {0, 1, one_up}}, {{0, 1, 2}});

@@ -8,8 +8,8 @@
 #include <span>
 #include <string_view>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 

@@ -19,9 +19,9 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -85,8 +85,8 @@ struct QuadOptions {
   std::uint32_t threads = 1;
   /// Whether QuadResult::sources is filled. A caller that does not read them (the command-line
   /// tool) turns this off: lrs then need not find each quad's triangles among the input's, and the
-  /// consuming front door frees the input's corners early (bench/RESULTS.md, issue 15: at most 64
-  /// bytes per triangle).
+  /// consuming front door frees the input's corners early, which lowers lrs's peak (see
+  /// quadrangulate(PolygonMesh&&)).
   bool sources = true;
 };
 
