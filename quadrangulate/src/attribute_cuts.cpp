@@ -2,9 +2,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <numeric>
 #include <stdexcept>
 #include <string>
+
+#include "petersen/mesh/vec3.hpp"
 
 namespace petersen::quad_detail {
 
@@ -80,6 +83,49 @@ HugeVector<std::uint32_t> face_property_ids(const std::vector<PropertyColumn>& c
   return ids;
 }
 
+// Whether every corner of triangle f (corners first..first+2) has a normal along the triangle's own
+// geometric normal: the triangle is flat shaded, so a seam of normals around it is shading, not a
+// feature of the surface. Exported normals are rounded (six decimals at most, often four), hence
+// the tolerance, an angle of about 0.8°. A degenerate triangle has no normal of its own: not flat.
+bool flat_shaded(const PolygonMesh& mesh, std::size_t first) {
+  const MeshAttributes& a = mesh.attributes;
+  const auto& p0 = mesh.positions[mesh.corners[first]];
+  const auto& p1 = mesh.positions[mesh.corners[first + 1]];
+  const auto& p2 = mesh.positions[mesh.corners[first + 2]];
+  const vec3::Vec3 face_normal = vec3::cross(vec3::sub(p1, p0), vec3::sub(p2, p0));
+  const double face_length = std::sqrt(vec3::dot(face_normal, face_normal));
+  if (!(face_length > 0) || !std::isfinite(face_length)) return false;
+  for (std::size_t c = first; c < first + 3; ++c) {
+    if (a.corner_normal[c] == kNoAttribute) return false;
+    const vec3::Vec3& n = a.normals[a.corner_normal[c]];
+    const double length = std::sqrt(vec3::dot(n, n));
+    if (!(vec3::dot(n, face_normal) >= kFlatShadingCosine * length * face_length)) return false;
+  }
+  return true;
+}
+
+// The normal ids of `normal_ids` with every corner of a flat-shaded triangle given one id of its
+// own, shared by all of them and by no smooth corner: two flat-shaded triangles then agree at
+// their shared edge (no seam), while a flat triangle beside a smooth one, or two smooth triangles
+// whose normals differ (a hard edge), still disagree. O(C).
+std::span<const std::uint32_t> with_flat_shading(const PolygonMesh& mesh,
+                                                 std::span<const std::uint32_t> normal_ids,
+                                                 HugeVector<std::uint32_t>& storage) {
+  const std::uint32_t flat = static_cast<std::uint32_t>(mesh.attributes.normals.size());
+  if (flat == kNoAttribute) return normal_ids;  // no id left for it: seams stay as they are
+  bool any = false;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    if (mesh.arity(f) != 3) continue;
+    const std::size_t first = mesh.all_triangles() ? 3 * std::size_t{f} : mesh.face_start[f];
+    if (!flat_shaded(mesh, first)) continue;
+    if (!any && storage.data() != normal_ids.data())
+      storage.assign(normal_ids.begin(), normal_ids.end());
+    any = true;
+    storage[first] = storage[first + 1] = storage[first + 2] = flat;
+  }
+  return any ? std::span<const std::uint32_t>(storage) : normal_ids;
+}
+
 }  // namespace
 
 CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
@@ -105,7 +151,9 @@ CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
     cuts.corner_uv = by_value(a.corner_texcoord, ids_of_points(a.texcoords), ids.corner_uv);
   }
   if (wanted(cuts.corner_normal, a.corner_normal.size(), CutCause::normal_seam)) {
-    cuts.corner_normal = by_value(a.corner_normal, ids_of_points(a.normals), ids.corner_normal);
+    cuts.corner_normal = with_flat_shading(
+        mesh, by_value(a.corner_normal, ids_of_points(a.normals), ids.corner_normal),
+        ids.corner_normal);
   }
   if (wanted(cuts.face_material, a.face_material.size(), CutCause::material)) {
     cuts.face_material =

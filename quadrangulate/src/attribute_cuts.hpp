@@ -17,7 +17,9 @@ struct AttributeCutIds {
 
 /// `options.cuts` with each attribute cut of `mesh` added where the caller left its span empty
 /// and did not name its cause in options.cross. Values are compared, not indices: equal texture
-/// coordinates or normals, equal names and equal property rows get one id (-0 equals +0). Checks
+/// coordinates or normals, equal names and equal property rows get one id (-0 equals +0); the
+/// normals of flat-shaded triangles (kFlatShadingCosine) count as equal, so flat shading makes no
+/// seam. Checks
 /// the attributes first (check_attributes, MeshError) and options.cross (std::invalid_argument).
 /// O(C + F log F + T log T) for C corners, F faces, T texture coordinates and normals; nothing
 /// when the mesh has no attributes.

@@ -143,6 +143,30 @@ bool face_differs(CutCause cause, const MeshAttributes& a, FaceId f, const MeshA
   }
 }
 
+// Whether triangle f is flat shaded: each corner normal along the triangle's own normal, the
+// cosine of their angle at least kFlatShadingCosine. Two flat-shaded triangles make no normal
+// seam.
+bool flat_shaded(const PolygonMesh& mesh, FaceId f) {
+  const MeshAttributes& a = mesh.attributes;
+  if (mesh.arity(f) != 3 || a.corner_normal.empty()) return false;
+  const std::size_t first = first_corner(mesh, f);
+  std::array<std::array<double, 3>, 3> p;
+  for (int k = 0; k < 3; ++k) p[k] = mesh.positions[mesh.corners[first + k]];
+  const double u[3] = {p[1][0] - p[0][0], p[1][1] - p[0][1], p[1][2] - p[0][2]};
+  const double v[3] = {p[2][0] - p[0][0], p[2][1] - p[0][1], p[2][2] - p[0][2]};
+  const double m[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                       u[0] * v[1] - u[1] * v[0]};
+  const double m_length = std::hypot(m[0], m[1], m[2]);
+  if (!(m_length > 0) || !std::isfinite(m_length)) return false;
+  for (std::size_t c = first; c < first + 3; ++c) {
+    if (a.corner_normal[c] == kNoAttribute) return false;
+    const auto& n = a.normals[a.corner_normal[c]];
+    const double dot = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
+    if (!(dot >= kFlatShadingCosine * std::hypot(n[0], n[1], n[2]) * m_length)) return false;
+  }
+  return true;
+}
+
 constexpr CutCause kCornerCauses[] = {CutCause::uv_seam, CutCause::normal_seam};
 constexpr CutCause kFaceCauses[] = {CutCause::material, CutCause::group, CutCause::object,
                                     CutCause::smoothing, CutCause::face_property};
@@ -183,6 +207,7 @@ bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, std::span<const 
   const MeshAttributes& a = mesh.attributes;
   for (CutCause cause : kCornerCauses) {
     if (!applies(cause)) continue;
+    if (cause == CutCause::normal_seam && flat_shaded(mesh, f) && flat_shaded(mesh, g)) continue;
     for (VertexId v : {e.first, e.second}) {
       if (corner_value(a, cause, *corner_at(mesh, f, v)) !=
           corner_value(a, cause, *corner_at(mesh, g, v))) {

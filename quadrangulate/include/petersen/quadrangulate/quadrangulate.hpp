@@ -25,6 +25,11 @@
 
 namespace petersen {
 
+/// A triangle is flat shaded when each of its corner normals n makes with its geometric normal m
+/// an angle whose cosine is at least this (n·m ≥ 0.9999 |n| |m|: within about 0.8°, wide enough
+/// for normals written with four decimals).
+inline constexpr double kFlatShadingCosine = 0.9999;
+
 inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
 
 /// What the pairing optimises besides its size (always the maximum).
@@ -68,7 +73,9 @@ struct QuadOptions {
   /// The mesh's own attributes cut too, on by default (mesh.attributes, where the mesh has them):
   /// no pair crosses a texture-coordinate or normal seam (its two triangles give an end of the
   /// edge different values; compared by value, so two `vt` entries with equal coordinates make
-  /// no seam), nor a border between different materials, groups, objects, smoothing groups or
+  /// no seam; and flat shading is no seam: where both triangles are flat shaded, each corner's
+  /// normal along its own triangle's normal within kFlatShadingCosine, their edge is not cut,
+  /// while a hard edge between smooth-shaded triangles is), nor a border between different materials, groups, objects, smoothing groups or
   /// face property values (all of a face's property columns together; names compared as
   /// strings). Each applies where `cuts` leaves its span empty; name its cause here
   /// (CutCause::uv_seam, normal_seam, material, group, object, smoothing, face_property) to let
