@@ -6,9 +6,11 @@ options where they mean the same. Needs petersen's Python module: bundled in the
 scripts/blender-addon-zip makes, or installed in Blender's Python (docs/blender.md).
 """
 
+import importlib.util
 import math
 import sys
 
+import bmesh
 import bpy
 from bpy.props import BoolProperty, EnumProperty, FloatProperty
 
@@ -33,12 +35,12 @@ def load_petersen():
     Blender's Python.
     """
     problems = []
-    try:
-        from . import petersen as module
-        return module, None
-    except ImportError as error:
-        if getattr(error, "name", None) != f"{__name__}.petersen":
-            problems.append(f"the bundled copy does not load ({error})")
+    if importlib.util.find_spec(".petersen", __name__) is not None:
+        try:
+            from . import petersen as module
+            return module, None
+        except ImportError as error:
+            problems.append(f"the copy bundled in the add-on does not load ({error})")
     try:
         import petersen as module
         return module, None
@@ -145,20 +147,25 @@ class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
 
     def _convert(self, petersen, obj):
         """Pairs the selected triangles of one object; None when it has none selected."""
-        mesh = obj.data
-        selection = convert.selected_triangles(mesh)
-        if len(selection.faces) == 0:
-            return None
-        keep = convert.delimited_edges(mesh, selection, seam=self.seam, sharp=self.sharp,
-                                       materials=self.materials, uvs=self.uvs, vcols=self.vcols)
-        result, used = convert.pair_triangles(
-            petersen, mesh, selection, keep,
-            objective=self.objective.lower(), face_threshold=self.face_threshold,
-            shape_threshold=self.shape_threshold, all_quad=self.all_quad)
-        import bmesh
-        bm = bmesh.from_edit_mesh(mesh)
-        joined = convert.make_quads(bm, mesh, selection, result, used)
-        bmesh.update_edit_mesh(mesh)
+        # In Edit Mode a mesh's UV maps and attributes are the BMesh's, without data: read a
+        # copy of the mesh as update_from_editmode wrote it.
+        mesh = obj.data.copy()
+        try:
+            selection = convert.selected_triangles(mesh)
+            if len(selection.faces) == 0:
+                return None
+            keep = convert.delimited_edges(
+                mesh, selection, seam=self.seam, sharp=self.sharp, materials=self.materials,
+                uvs=self.uvs, vcols=self.vcols)
+            result, used = convert.pair_triangles(
+                petersen, mesh, selection, keep,
+                objective=self.objective.lower(), face_threshold=self.face_threshold,
+                shape_threshold=self.shape_threshold, all_quad=self.all_quad)
+            bm = bmesh.from_edit_mesh(obj.data)
+            joined = convert.make_quads(bm, mesh, selection, result, used)
+            bmesh.update_edit_mesh(obj.data)
+        finally:
+            bpy.data.meshes.remove(mesh)
         return joined, result.stats
 
 

@@ -197,12 +197,9 @@ def _split_for_added_vertices(bm, result, used_vertices):
     vertices ``all_quad`` added: a midpoint splits the edge it lies on, a centre (where a path
     turns inside a quad) is made by cutting the quad."""
     original = len(used_vertices)
-    vert_of = {}  # result vertex id -> BMVert
-
-    def bm_vert(x):
-        if x < original:
-            return bm.verts[int(used_vertices[x])]
-        return vert_of.get(x)
+    bm.verts.ensure_lookup_table()
+    vert_of = dict(enumerate(bm.verts[i] for i in used_vertices.tolist()))  # result id: BMVert
+    bm_vert = vert_of.get
 
     faces = [f.tolist() for f in result.faces if f.max() >= original]
     # A midpoint's edge: two original neighbours (in the output faces) whose midpoint it is.
