@@ -33,12 +33,15 @@ import petersen_quads  # noqa: E402
 SETTINGS = {"defaults (40°, 40°)": math.radians(40.0), "no limit (180°, 180°)": math.pi}
 
 
-def make_object(name, mesh):
-    """A Blender mesh object of petersen's Mesh, active, in Object Mode."""
+def make_object(name, mesh, keep=()):
+    """A Blender mesh object of petersen's Mesh, active, in Object Mode; every other object but
+    those of keep removed."""
     for o in list(bpy.data.objects):
-        bpy.data.objects.remove(o)
+        if o not in keep:
+            bpy.data.objects.remove(o)
     for m in list(bpy.data.meshes):
-        bpy.data.meshes.remove(m)
+        if m.users == 0:
+            bpy.data.meshes.remove(m)
     faces = mesh.F if isinstance(mesh.F, np.ndarray) else None
     counts = (np.full(len(faces), faces.shape[1]) if faces is not None
               else np.array([len(f) for f in mesh.F]))
@@ -122,9 +125,10 @@ def main():
     petersen_quads.unregister()
 
 
-try:
-    main()
-except Exception:
-    import traceback
-    traceback.print_exc()
-    sys.exit(1)
+if __name__ == "__main__":
+    try:
+        main()
+    except Exception:
+        import traceback
+        traceback.print_exc()
+        sys.exit(1)
