@@ -144,61 +144,41 @@ def make_quads(bm, mesh, selection, result, used_vertices):
     """Makes ``result`` (from ``pair_triangles``) in ``bm``, the Edit Mode BMesh of ``mesh``
     whose ``Mesh`` data was written from it just before (same order of vertices, edges, faces).
 
-    Each pair's shared edge is dissolved; with ``all_quad`` the added vertices split their edges
-    (a face beyond the selection sharing such an edge gets the vertex too, so no gap opens) and
-    the pieces are cut out of the faces they lie in. The output faces end up selected, the faces
-    beyond the selection keep their selection. Returns the number of pairs joined.
+    Each pair's two triangles are joined (their shared edge removed); with ``all_quad`` the added
+    vertices split their edges (a face beyond the selection sharing such an edge gets the vertex
+    too, so no gap opens) and the pieces are cut out of the faces they lie in. The output faces
+    end up selected, the faces beyond the selection keep their selection. Returns the number of
+    pairs joined.
     """
     if len(bm.faces) != len(mesh.polygons) or len(bm.edges) != len(mesh.edges):
         raise RuntimeError("the mesh data is not the Edit Mode mesh's (update_from_editmode first)")
     bm.faces.ensure_lookup_table()
-    bm.edges.ensure_lookup_table()
     bm.verts.ensure_lookup_table()
-    for f in bm.faces:
-        f.tag = False
-    for i in selection.faces.tolist():
-        bm.faces[i].tag = True  # a selected triangle: joined faces inherit the tag
-
     sources = result.sources[: len(result.quads)]
-    pairs = np.unique(sources[sources[:, 1] >= 0], axis=0)
-    diagonals = _shared_edges(mesh, selection.triangles[pairs[:, 0]],
-                              selection.triangles[pairs[:, 1]])
-    faces_before = len(bm.faces)
-    if len(diagonals):
-        bmesh.ops.dissolve_edges(bm, edges=[bm.edges[i] for i in diagonals.tolist()],
-                                 use_verts=False, use_face_split=False)
-    joined = faces_before - len(bm.faces)
-
+    pairs = selection.faces[np.unique(sources[sources[:, 1] >= 0], axis=0)]
+    faces = bm.faces
+    triangles = [(faces[a], faces[b]) for a, b in pairs.tolist()]
+    verts = [bm.verts[i] for i in used_vertices.tolist()]
+    join = bmesh.utils.face_join
+    joined = 0
+    for pair in triangles:
+        quad = join(pair)
+        if quad is not None:
+            quad.select = True
+            joined += 1
     if len(result.V) > len(used_vertices):
-        _split_for_added_vertices(bm, result, used_vertices)
-
-    for f in bm.faces:
-        if f.tag:
-            f.select_set(True)
-            f.tag = False
+        _split_for_added_vertices(bm, result, verts)
     bm.select_flush_mode()
     return joined
 
 
-def _shared_edges(mesh, first, second):
-    """The mesh edge index shared by each pair of triangles (rows of vertex indices)."""
-    common = (first[:, :, None] == second[:, None, :]).any(axis=2)  # (k, 3): in both
-    ends = np.sort(first[common].reshape(-1, 2), axis=1)
-    edges = np.sort(_get(mesh.edges, "vertices", np.int64, 2), axis=1)
-    stride = max(len(mesh.vertices), 1)
-    keys = edges[:, 0] * stride + edges[:, 1]
-    order = np.argsort(keys)
-    found = order[np.searchsorted(keys, ends[:, 0] * stride + ends[:, 1], sorter=order)]
-    return found
-
-
-def _split_for_added_vertices(bm, result, used_vertices):
+def _split_for_added_vertices(bm, result, verts):
     """Splits edges and faces of ``bm`` so that it holds the faces of ``result`` that use
     vertices ``all_quad`` added: a midpoint splits the edge it lies on, a centre (where a path
-    turns inside a quad) is made by cutting the quad."""
-    original = len(used_vertices)
-    bm.verts.ensure_lookup_table()
-    vert_of = dict(enumerate(bm.verts[i] for i in used_vertices.tolist()))  # result id: BMVert
+    turns inside a quad) is made by cutting the quad. ``verts``: the BMVert of each of the
+    result's original vertices."""
+    original = len(verts)
+    vert_of = dict(enumerate(verts))  # result vertex id: BMVert
     bm_vert = vert_of.get
 
     faces = [f.tolist() for f in result.faces if f.max() >= original]
@@ -224,20 +204,20 @@ def _split_for_added_vertices(bm, result, used_vertices):
             vert.co = result.V[x]
             vert_of[x] = vert
     for face in faces:
-        _cut_out(bm, face, bm_vert, vert_of, result.V)
+        _cut_out(face, bm_vert, vert_of, result.V)
 
 
-def _cut_out(bm, face, bm_vert, vert_of, positions):
+def _cut_out(face, bm_vert, vert_of, positions):
     """Cuts the output face ``face`` (result vertex ids) out of the BMesh face that holds it,
     one chord at a time; a run of vertices not made yet (a centre) is made along its chord."""
     for _ in range(2 * len(face)):
         known = [bm_vert(x) for x in face if bm_vert(x) is not None]
         if len(known) == len(face):
             target = set(known)
-            if any(set(f.verts) == target for f in known[0].link_faces):
-                for f in known[0].link_faces:
-                    if set(f.verts) == target:
-                        f.tag = True
+            made = [f for f in known[0].link_faces if set(f.verts) == target]
+            if made:
+                for f in made:
+                    f.select = True
                 return
         holders = set(known[0].link_faces)
         for v in known[1:]:
@@ -266,7 +246,7 @@ def _cut_out(bm, face, bm_vert, vert_of, positions):
             made = [v for v in new_face.verts if v not in old]
             for x in run:
                 vert_of[x] = min(made, key=lambda v: (v.co - _vec(positions[x])).length)
-            parent.tag = new_face.tag = True
+            parent.select = new_face.select = True
             break
         else:
             raise RuntimeError(f"cannot cut the output face {face} out of its face")

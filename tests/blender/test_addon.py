@@ -520,6 +520,32 @@ def test_grid_with_hole():
     check_no_gap(before, after, "open grid, all_quad on a part")
 
 
+def test_closed_sphere_all_paired():
+    """An icosphere with its vertices moved a little (the same each run): petersen pairs every
+    triangle, as a closed triangle mesh allows; Blender's greedy pairing leaves some."""
+    def make():
+        if bpy.context.object and bpy.context.object.mode != 'OBJECT':
+            bpy.ops.object.mode_set(mode='OBJECT')
+        for o in list(bpy.data.objects):
+            bpy.data.objects.remove(o)
+        bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=3)
+        obj = bpy.context.active_object
+        for v in obj.data.vertices:
+            v.co *= 1.0 + 0.08 * math.sin(12.9898 * v.index + 78.233 * v.co.z)
+        return obj
+
+    obj = make()
+    select_faces(obj, lambda i, c: True)
+    before = snapshot(obj)
+    run_operator(face_threshold=NO_LIMIT, shape_threshold=NO_LIMIT)
+    made = pairs_made(before, snapshot(obj))
+    check(f"icosphere: every one of {len(before['faces'])} triangles paired",
+          2 * len(made) == len(before["faces"]), len(made))
+    compare_with_blenders_own(None, None, {"face_threshold": NO_LIMIT,
+                                           "shape_threshold": NO_LIMIT},
+                              len(made), make, "icosphere")
+
+
 def test_missing_module_is_a_clear_error():
     V, F = grid_with_hole(4)
     obj = make_object("missing", V, F)
@@ -544,7 +570,7 @@ def main():
     try:
         for test in (test_registered_as_one_undo_step_in_the_face_menu, test_textured_torus,
                      test_partial_selection_and_undo, test_quad_dominant, test_grid_with_hole,
-                     test_missing_module_is_a_clear_error):
+                     test_closed_sphere_all_paired, test_missing_module_is_a_clear_error):
             test()
     except Exception:
         traceback.print_exc()
