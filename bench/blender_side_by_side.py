@@ -23,7 +23,6 @@ import time
 sys.path[:0] = [p for p in os.environ.get("PETERSEN_PYTHONPATH", "").split(os.pathsep) if p]
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parents[1] / "blender"))
 
-import bmesh  # noqa: E402
 import bpy  # noqa: E402
 import numpy as np  # noqa: E402
 

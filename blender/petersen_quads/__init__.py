@@ -55,7 +55,7 @@ def load_petersen():
 
 
 class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
-    """Join the selected triangles into quads: as many pairs as possible (a certified maximum), or the best-shaped of those pairings (Quality)"""
+    """Join the selected triangles into quads: the most pairs possible (certified), or the best-shaped of those (Quality)"""
 
     bl_idname = "mesh.petersen_tris_to_quads"
     bl_label = "Tris to Quads (Petersen)"

@@ -293,9 +293,9 @@ def write_mesh(
     ``.faces`` (trimesh's shape) or ``.points`` and padded ``.faces`` (pyvista's ``PolyData``);
     ``F`` may be a padded array ``[n, i0, ..., n, ...]``. What of such an object is left out
     (other cell blocks, data of several values per point) is warned as ``DroppedWarning``.
-    ``attributes`` (``Attributes``, as ``read_mesh`` gives them) are written as the format can: returns one line per kind of thing it has no place
-    for (e.g. corner normals in a PLY), each also warned as ``DroppedWarning``; empty when
-    everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
+    ``attributes`` (``Attributes``, as ``read_mesh`` gives them) are written as the format can:
+    returns one line per kind of thing it has no place for (e.g. corner normals in a PLY), each
+    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
     place. Reading it back gives the same positions, faces and written attributes. Raises
     ``ValueError`` for an unknown extension, an index out of range, attributes of the wrong size
     or a path that cannot be written.

@@ -41,7 +41,7 @@ def check(name, condition, detail=""):
 
 def torus(nu=12, nv=8, R=3.0, r=1.0):
     """Positions, triangles, per-corner UVs (u wraps at a seam), vertex normals (tilted)."""
-    V, uv_of = [], {}
+    V = []
     for i in range(nu):
         for j in range(nv):
             u, v = 2 * math.pi * i / nu, 2 * math.pi * j / nv
