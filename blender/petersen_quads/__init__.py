@@ -137,9 +137,9 @@ class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
         message = f"{pairs} pairs, {left} triangles left"
         if self.all_quad and left:
             message += " (turned into quads)"
-        if self.objective == 'QUALITY':
-            message += (f"; total worst-corner deviation {total_cost:.1f}\u00b0, "
-                        + ("the certified optimum" if certified else "NOT certified"))
+        if self.objective == 'QUALITY' and pairs:
+            message += (f"; worst corners {total_cost / pairs:.1f}\u00b0 from square on average, "
+                        + ("the certified least" if certified else "NOT certified"))
         else:
             message += "; a certified maximum" if certified else "; NOT certified"
         self.report({'INFO'}, message)

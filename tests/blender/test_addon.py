@@ -280,10 +280,15 @@ def test_registered_as_one_undo_step_in_the_face_menu():
     check("operator registered with REGISTER and UNDO",
           hasattr(bpy.ops.mesh, "petersen_tris_to_quads")
           and {'REGISTER', 'UNDO'} <= set(op.bl_options), op.bl_options)
-    ours = {p.identifier for p in bpy.ops.mesh.petersen_tris_to_quads.get_rna_type().properties}
-    blenders = {p.identifier for p in bpy.ops.mesh.tris_convert_to_quads.get_rna_type().properties}
-    check("every option of Blender's Tris to Quads, same name", blenders <= ours,
-          blenders - ours)
+    ours = {p.identifier: p for p in
+            bpy.ops.mesh.petersen_tris_to_quads.get_rna_type().properties}
+    blenders = {p.identifier: p for p in
+                bpy.ops.mesh.tris_convert_to_quads.get_rna_type().properties}
+    shared = ("face_threshold", "shape_threshold", "uvs", "vcols", "seam", "sharp", "materials")
+    check("Blender's Tris to Quads options, same names, types and defaults",
+          all(name in ours and name in blenders and ours[name].type == blenders[name].type
+              and ours[name].default == blenders[name].default for name in shared),
+          [n for n in shared if n not in ours or n not in blenders])
 
     class Recorder:
         def __init__(self):
