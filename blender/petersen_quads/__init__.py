@@ -101,33 +101,47 @@ class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
             self.report({'ERROR'}, problem)
             return {'CANCELLED'}
         objects = _meshes_in_edit_mode(context)
-        for obj in objects:
-            obj.update_from_editmode()
-        with_normals = [o for o in objects if o.data.has_custom_normals]
+        # First every object's pairing, so that a mesh petersen refuses leaves all unchanged.
+        plans = []
+        try:
+            for obj in objects:
+                obj.update_from_editmode()
+                plan = self._pair(petersen, obj)
+                if plan is not None:
+                    plans.append(plan)
+        except ValueError as error:
+            for plan in plans:
+                bpy.data.meshes.remove(plan[1])
+            self.report({'ERROR'}, f"Tris to Quads (Petersen): {error}")
+            return {'CANCELLED'}
+
+        with_normals = [p[0] for p in plans if p[0].data.has_custom_normals]
         if with_normals:
             bpy.ops.object.mode_set(mode='OBJECT')
             for obj in with_normals:
                 convert.record_corner_normals(obj.data)
             bpy.ops.object.mode_set(mode='EDIT')
-
         pairs = left = 0
         total_cost = 0.0
         certified = True
         try:
-            for obj in objects:
-                outcome = self._convert(petersen, obj)
-                if outcome is None:
-                    continue
-                joined, stats = outcome
-                pairs += joined
-                left += stats["triangles_left"]
-                total_cost += stats.get("objective_total", 0.0)
-                certified &= bool(stats.get("optimality_certified" if self.objective == 'QUALITY'
-                                            else "maximum_certified", False))
-        except (ValueError, RuntimeError) as error:
-            self.report({'ERROR'}, f"Tris to Quads (Petersen): {error}")
-            return {'CANCELLED'}
+            for obj, mesh, selection, result, used in plans:
+                bm = bmesh.from_edit_mesh(obj.data)
+                pairs += convert.make_quads(bm, mesh, selection, result, used)
+                bmesh.update_edit_mesh(obj.data)
+                left += result.stats["triangles_left"]
+                total_cost += result.stats.get("objective_total", 0.0)
+                certified &= bool(result.stats.get(
+                    "optimality_certified" if self.objective == 'QUALITY'
+                    else "maximum_certified", False))
+        except RuntimeError as error:
+            # The mesh may be partly changed: finish as one undo step that restores it.
+            self.report({'ERROR'}, f"Tris to Quads (Petersen): {error}; the mesh may be partly "
+                                   "converted: Undo restores it")
+            return {'FINISHED'}
         finally:
+            for plan in plans:
+                bpy.data.meshes.remove(plan[1])
             if with_normals:
                 bpy.ops.object.mode_set(mode='OBJECT')
                 for obj in with_normals:
@@ -145,14 +159,18 @@ class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
         self.report({'INFO'}, message)
         return {'FINISHED'}
 
-    def _convert(self, petersen, obj):
-        """Pairs the selected triangles of one object; None when it has none selected."""
-        # In Edit Mode a mesh's UV maps and attributes are the BMesh's, without data: read a
-        # copy of the mesh as update_from_editmode wrote it.
+    def _pair(self, petersen, obj):
+        """petersen's pairing of the selected triangles of one object, as (object, a copy of its
+        mesh data, selection, result, vertices used); None when it has none selected.
+
+        The copy: in Edit Mode a mesh's UV maps and attributes are the BMesh's, without data, so
+        they are read from a copy of the mesh as update_from_editmode wrote it (the caller
+        removes it)."""
         mesh = obj.data.copy()
         try:
             selection = convert.selected_triangles(mesh)
             if len(selection.faces) == 0:
+                bpy.data.meshes.remove(mesh)
                 return None
             keep = convert.delimited_edges(
                 mesh, selection, seam=self.seam, sharp=self.sharp, materials=self.materials,
@@ -161,12 +179,13 @@ class MESH_OT_petersen_tris_to_quads(bpy.types.Operator):
                 petersen, mesh, selection, keep,
                 objective=self.objective.lower(), face_threshold=self.face_threshold,
                 shape_threshold=self.shape_threshold, all_quad=self.all_quad)
-            bm = bmesh.from_edit_mesh(obj.data)
-            joined = convert.make_quads(bm, mesh, selection, result, used)
-            bmesh.update_edit_mesh(obj.data)
-        finally:
+        except ValueError as error:
             bpy.data.meshes.remove(mesh)
-        return joined, result.stats
+            raise ValueError(f"{obj.name}: {convert.in_blender_terms(error, selection)}") from None
+        except Exception:
+            bpy.data.meshes.remove(mesh)
+            raise
+        return obj, mesh, selection, result, used
 
 
 def _meshes_in_edit_mode(context):

@@ -11,6 +11,7 @@ change when faces change; the operator records them before and sets them again a
 
 from dataclasses import dataclass
 import math
+import re
 
 import bmesh
 import numpy as np
@@ -138,6 +139,16 @@ def pair_triangles(petersen, mesh, selection, keep_edges, *, objective, face_thr
         keep_edges=keep_local,
     )
     return result, used_vertices
+
+
+def in_blender_terms(message, selection):
+    """petersen's error message with the faces it names (indices among the selected triangles it
+    was given, "face N (input)") as Blender's face indices, and its option as Blender's."""
+    def face(match):
+        n = int(match.group(1))
+        return f"face {selection.faces[n]}" if n < len(selection.faces) else match.group(0)
+    message = re.sub(r"face (\d+) \(input\)", face, str(message))
+    return message.replace("--all-quad", "All Quads")
 
 
 def make_quads(bm, mesh, selection, result, used_vertices):

@@ -12,6 +12,7 @@ at the first failure, 0 when every check passed.
 import math
 import os
 import pathlib
+import re
 import sys
 import traceback
 
@@ -551,6 +552,31 @@ def test_closed_sphere_all_paired():
                               len(made), make, "icosphere")
 
 
+def test_all_quad_refused_leaves_the_mesh():
+    """All Quads where a triangle left has nowhere to go (a closed sphere whose shape limit lets
+    few pairs through): cancelled, the face named by its Blender index, the mesh unchanged."""
+    if bpy.context.object and bpy.context.object.mode != 'OBJECT':
+        bpy.ops.object.mode_set(mode='OBJECT')
+    for o in list(bpy.data.objects):
+        bpy.data.objects.remove(o)
+    bpy.ops.mesh.primitive_ico_sphere_add(subdivisions=3)
+    obj = bpy.context.active_object
+    select_faces(obj, lambda i, c: i % 7 != 0)
+    before = snapshot(obj)
+    try:
+        result, message = run_operator(all_quad=True, shape_threshold=math.radians(5)), ""
+    except RuntimeError as error:
+        result, message = {'CANCELLED'}, str(error)
+    after = snapshot(obj)
+    named = [int(n) for n in re.findall(r"face (\d+)", message)]
+    check("All Quads refused: cancelled, naming a selected triangle by its Blender index, "
+          "the mesh unchanged",
+          result == {'CANCELLED'} and "All Quads" in message and named
+          and all(before["faces"][n]["select"] for n in named)
+          and [f["corners"] for f in after["faces"]] == [f["corners"] for f in before["faces"]],
+          message)
+
+
 def test_missing_module_is_a_clear_error():
     V, F = grid_with_hole(4)
     obj = make_object("missing", V, F)
@@ -575,7 +601,8 @@ def main():
     try:
         for test in (test_registered_as_one_undo_step_in_the_face_menu, test_textured_torus,
                      test_partial_selection_and_undo, test_quad_dominant, test_grid_with_hole,
-                     test_closed_sphere_all_paired, test_missing_module_is_a_clear_error):
+                     test_closed_sphere_all_paired, test_all_quad_refused_leaves_the_mesh,
+                     test_missing_module_is_a_clear_error):
             test()
     except Exception:
         traceback.print_exc()
