@@ -1,6 +1,7 @@
 """The Tris to Quads (Petersen) add-on inside Blender, headless:
 
-    PETERSEN_PYTHONPATH=DIR[:DIR...] blender -b --factory-startup --python tests/blender/test_addon.py
+    PETERSEN_PYTHONPATH=DIR[:DIR...] blender -b --factory-startup \
+        --python tests/blender/test_addon.py
 
 PETERSEN_PYTHONPATH is put first on Blender's sys.path: where petersen's Python module is
 (scripts/test points it at the module it installed). The meshes are made here: a torus with UVs, a
@@ -111,7 +112,8 @@ def grid_with_hole(n=10):
     return V, F
 
 
-def make_object(name, V, F, uvs=None, normals=None, materials=None, colours=None, seams=()):
+def make_object(name, V, F, uvs=None, normals=None, materials=None, colours=None, seams=(),
+                sharps=()):
     """A new mesh object, active, in Object Mode. uvs and colours per corner (lists per face),
     normals per vertex (custom normals), materials per face (indices into two materials)."""
     if bpy.context.object and bpy.context.object.mode != 'OBJECT':
@@ -135,10 +137,9 @@ def make_object(name, V, F, uvs=None, normals=None, materials=None, colours=None
             me.materials.append(bpy.data.materials.new(f"{name}-{k}"))
         for p, m in zip(me.polygons, materials):
             p.material_index = m
-    if seams:
-        for e in me.edges:
-            if tuple(sorted(e.vertices)) in seams:
-                e.use_seam = True
+    for e in me.edges:
+        e.use_seam = tuple(sorted(e.vertices)) in seams
+        e.use_edge_sharp = tuple(sorted(e.vertices)) in sharps
     if normals is not None:
         me.use_auto_smooth = True
         me.auto_smooth_angle = math.pi
@@ -184,9 +185,10 @@ def _snapshot(me):
         faces.append({"corners": tuple(corners), "material": p.material_index,
                       "select": p.select, "verts": frozenset(p.vertices)})
     seams = {frozenset(e.vertices) for e in me.edges if e.use_seam}
+    sharps = {frozenset(e.vertices) for e in me.edges if e.use_edge_sharp}
     edges = {frozenset(e.vertices) for e in me.edges}
     positions = np.array([v.co for v in me.vertices])
-    return {"faces": faces, "seams": seams, "edges": edges, "V": positions}
+    return {"faces": faces, "seams": seams, "sharps": sharps, "edges": edges, "V": positions}
 
 
 def same_normal(a, b):
@@ -252,7 +254,7 @@ def carried(quad, parts):
     return True, None
 
 
-def delimiting_edges_bmesh(obj, seam=False, materials=False, uvs=False):
+def delimiting_edges_bmesh(obj, seam=False, sharp=False, materials=False, uvs=False):
     """The edges no quad may remove, found one edge at a time with bmesh: a second reckoning of
     what the add-on computes with numpy."""
     bm = bmesh.from_edit_mesh(obj.data)
@@ -263,7 +265,8 @@ def delimiting_edges_bmesh(obj, seam=False, materials=False, uvs=False):
         if len(faces) != 2 or len(e.link_faces) != 2:
             continue
         fa, fb = faces
-        cut = (seam and e.seam) or (materials and fa.material_index != fb.material_index)
+        cut = ((seam and e.seam) or (sharp and not e.smooth)
+               or (materials and fa.material_index != fb.material_index))
         if uvs and uv is not None:
             for v in e.verts:
                 la = next(lp for lp in fa.loops if lp.vert == v)
@@ -321,21 +324,24 @@ def test_textured_torus():
     # The UV seam: where u wraps (corners of the last column take u = 1, the first u = 0).
     seams = {tuple(sorted((j, (j + 1) % 8))) for j in range(8)}
     seams |= {tuple(sorted((F[k][0], F[k][2]))) for k in range(len(F)) if k // 2 // 8 == 3}
+    sharps = {tuple(sorted((F[k][0], F[k][2]))) for k in range(len(F)) if k // 2 // 8 == 7}
+    sharps |= {tuple(sorted((j, j + 1))) for j in range(5 * 8, 5 * 8 + 7)}
     obj = make_object("torus", V, F, uvs=UV, normals=normals, materials=materials,
-                      colours=colours, seams=seams)
+                      colours=colours, seams=seams, sharps=sharps)
     select_faces(obj, lambda i, c: True)
     before = snapshot(obj)
     for options in ({"face_threshold": NO_LIMIT, "shape_threshold": NO_LIMIT},
-                    {"seam": True, "materials": True, "uvs": True, "vcols": True,
-                     "face_threshold": NO_LIMIT, "shape_threshold": NO_LIMIT},
+                    {"seam": True, "sharp": True, "materials": True, "uvs": True,
+                     "vcols": True, "face_threshold": NO_LIMIT, "shape_threshold": NO_LIMIT},
                     {"objective": 'QUALITY', "seam": True, "materials": True},
                     {}):
         label = ", ".join(f"{k}={v if not isinstance(v, float) else round(math.degrees(v))}"
                           for k, v in options.items()) or "Blender's defaults"
         obj = make_object("torus", V, F, uvs=UV, normals=normals, materials=materials,
-                          colours=colours, seams=seams)
+                          colours=colours, seams=seams, sharps=sharps)
         select_faces(obj, lambda i, c: True)
         keep = delimiting_edges_bmesh(obj, seam=options.get("seam", False),
+                                      sharp=options.get("sharp", False),
                                       materials=options.get("materials", False),
                                       uvs=options.get("uvs", False))
         if options.get("vcols"):
@@ -360,8 +366,9 @@ def test_textured_torus():
               not bad, bad[:2])
         check(f"torus [{label}]: materials carried",
               all(q["material"] in {t["material"] for t in p} for q, p in made))
-        check(f"torus [{label}]: seams of the edges that stay are kept",
-              after["seams"] == {s for s in before["seams"] if s in after["edges"]})
+        check(f"torus [{label}]: seam and sharp marks of the edges that stay are kept",
+              after["seams"] == {s for s in before["seams"] if s in after["edges"]}
+              and after["sharps"] == {s for s in before["sharps"] if s in after["edges"]})
         if options.get("seam"):
             removed = [frozenset(p[0]["verts"] & p[1]["verts"]) for _, p in made]
 
@@ -369,15 +376,17 @@ def test_textured_torus():
                 return all(len({c[slot] for t in parts for c in t["corners"] if c[0] == v}) == 1
                            for v in edge)
 
-            check(f"torus [{label}]: no pair across a seam, a material, a UV or colour border",
+            check(f"torus [{label}]: no pair across a seam, a sharp edge, a material, a UV or "
+                  "colour border",
                   not any(r in before["seams"] for r in removed)
+                  and not (options.get("sharp") and any(r in before["sharps"] for r in removed))
                   and all(p[0]["material"] == p[1]["material"] for _, p in made)
                   and all(continuous(p, r, 1) and continuous(p, r, 2)
                           for (_, p), r in zip(made, removed)))
         compare_with_blenders_own(V, F, options, len(made),
                                   lambda: make_object("torus", V, F, uvs=UV, normals=normals,
                                                       materials=materials, colours=colours,
-                                                      seams=seams), label)
+                                                      seams=seams, sharps=sharps), label)
 
 
 def _colour_borders(obj):
