@@ -20,7 +20,7 @@ from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 import numpy as np
 import numpy.typing as npt
 
-from . import _petersen
+from . import _petersen, interop
 
 __all__ = [
     "ALGORITHMS",
@@ -97,6 +97,15 @@ class Mesh:
     attributes: Attributes = field(default_factory=dict)
     dropped: List[str] = field(default_factory=list)
 
+    def to_meshio(self) -> Any:
+        """This mesh as a ``meshio.Mesh`` (see ``QuadResult.to_meshio``)."""
+        return _to_meshio(self.V, list(self.F), self.attributes)
+
+    def padded_faces(self) -> np.ndarray:
+        """The faces as one padded int64 array ``[n, i0, ..., n, ...]``, as pyvista's
+        ``PolyData(V, faces)`` takes them."""
+        return interop.padded(self.F)
+
 
 @dataclass(frozen=True)
 class QuadResult:
@@ -135,6 +144,33 @@ class QuadResult:
         """Every output face in the order of ``sources``: quads, triangles, polygons."""
         return [*self.quads, *self.triangles, *self.polygons]
 
+    @property
+    def first_added_vertex(self) -> int:
+        """The index of the first vertex ``all_quad`` added (``len(V)`` when it added none)."""
+        return len(self.V) - int(self.stats.get("added_vertices", 0))
+
+    def to_meshio(self) -> Any:
+        """The result as a ``meshio.Mesh``: the quads, the triangles and the polygons as separate
+        cell blocks ("quad", "triangle", "polygon"; one block per run of faces with the same
+        number of corners), in the order of ``faces``; the per-vertex properties as point data,
+        the per-face ones (material, group, object, smoothing indices and face properties) as
+        cell data. What meshio has no place for (per-corner texture coordinates and normals,
+        material names) is warned as ``DroppedWarning``. Needs meshio."""
+        return _to_meshio(self.V, self.faces, self.attributes)
+
+    def padded_faces(self) -> np.ndarray:
+        """Every output face, in the order of ``faces``, as one padded int64 array
+        ``[n, i0, ..., n, ...]``, as pyvista's ``PolyData(r.V, r.padded_faces())`` takes them."""
+        return np.concatenate([interop.padded(self.quads), interop.padded(self.triangles),
+                               interop.padded(self.polygons)])
+
+
+def _to_meshio(V: np.ndarray, faces: List[Any], attributes: Attributes) -> Any:
+    mesh, dropped = interop.to_meshio(V, faces, attributes)
+    for line in dropped:
+        warnings.warn(f"to_meshio: not carried: {line}", DroppedWarning, stacklevel=3)
+    return mesh
+
 
 def quadrangulate(
     V: Union[npt.ArrayLike, Mesh],
@@ -172,7 +208,9 @@ def quadrangulate(
     answer does not depend on it. Same options, same seed: same answer as ``petersen quad``. The
     GIL is released while the library works.
 
-    ``V`` may be a ``Mesh`` (``F`` then omitted): its faces and attributes are used. With
+    ``V`` may be a mesh object (``F`` then omitted): a ``Mesh``, whose faces and attributes are
+    used, a ``meshio.Mesh``, trimesh's shape or pyvista's ``PolyData`` (see ``write_mesh``); ``F``
+    may be a padded face array ``[n, i0, ..., n, ...]`` (pyvista's ``faces``). With
     ``attributes`` (``Attributes``, as ``read_mesh`` gives them) no quad crosses a texture or
     normal seam or a border between materials, groups, objects, smoothing groups or face property
     values, unless ``cross`` names that cause (``CROSSABLE``, e.g. ``cross=["uv_seam"]``); the
@@ -205,28 +243,40 @@ def _threads(threads: int) -> int:
 def _mesh_parts(
     V: Any, F: Any, attributes: Optional[Attributes], what: str
 ) -> Tuple[Any, Any, Any]:
-    """V, F and attributes, from a Mesh in V (whose attributes an explicit ``attributes``
-    replaces) or as given."""
+    """V, F and attributes, from a mesh object in V (whose attributes an explicit
+    ``attributes`` replaces) or as given (a padded F unpadded)."""
+    if F is not None:
+        if isinstance(V, (Mesh, QuadResult)) or interop.mesh_parts(V) is not None:
+            raise TypeError(f"{what}: pass a mesh object or V and F, not both")
+        return V, interop.faces_from_padded(F) if interop.is_padded(F) else F, attributes
     if isinstance(V, Mesh):
-        if F is not None:
-            raise TypeError(f"{what}: pass a Mesh or V and F, not both")
         return V.V, V.F, V.attributes if attributes is None else attributes
-    if F is None:
-        raise TypeError(f"{what}: F is missing")
-    return V, F, attributes
+    if isinstance(V, QuadResult):
+        return V.V, V.faces, V.attributes if attributes is None else attributes
+    parts = interop.mesh_parts(V)
+    if parts is None:
+        raise TypeError(
+            f"{what}: F is missing (or V is no mesh: a petersen Mesh or QuadResult, a "
+            f"meshio.Mesh, an object with .vertices and .faces or .points and padded .faces; "
+            f"got {type(V).__name__})")
+    points, faces, own, dropped = parts
+    _warn_dropped(type(V).__name__, dropped, "left out")
+    return points, faces, own if attributes is None else attributes
 
 
-def read_mesh(path: str) -> Mesh:
+def read_mesh(path: str, as_meshio: bool = False) -> Any:
     """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity,
     with its attributes (``Mesh.attributes``).
 
     What the reader reads past (OBJ ``l`` lines, other PLY elements) is in ``Mesh.dropped`` and
     warned as ``DroppedWarning``. Raises ``ValueError`` naming the file and line (text) or element
-    (binary) for a bad file.
+    (binary) for a bad file. ``as_meshio=True`` returns a ``meshio.Mesh`` instead
+    (``Mesh.to_meshio``).
     """
     V, F, attributes, dropped = _petersen.read_mesh(str(path))
     _warn_dropped(path, dropped, "read past")
-    return Mesh(V, F, attributes, dropped)
+    mesh = Mesh(V, F, attributes, dropped)
+    return mesh.to_meshio() if as_meshio else mesh
 
 
 def write_mesh(
@@ -237,10 +287,15 @@ def write_mesh(
 ) -> List[str]:
     """Writes a mesh as OFF, OBJ or PLY by the extension of ``path`` (``.gz`` compresses).
 
-    ``V`` may be a ``Mesh`` (``F`` then omitted). ``attributes`` (``Attributes``, as ``read_mesh``
-    gives them) are written as the format can: returns one line per kind of thing it has no place
-    for (e.g. corner normals in a PLY), each also warned as ``DroppedWarning``; empty when
-    everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
+    ``V`` may be a mesh object (``F`` then omitted): a ``Mesh`` or a ``QuadResult`` (with their
+    attributes), a ``meshio.Mesh`` (its "triangle", "quad" and "polygon" blocks; point and cell
+    data of one value each as vertex and face properties), anything with ``.vertices`` and
+    ``.faces`` (trimesh's shape) or ``.points`` and padded ``.faces`` (pyvista's ``PolyData``);
+    ``F`` may be a padded array ``[n, i0, ..., n, ...]``. What of such an object is left out
+    (other cell blocks, data of several values per point) is warned as ``DroppedWarning``.
+    ``attributes`` (``Attributes``, as ``read_mesh`` gives them) are written as the format can:
+    returns one line per kind of thing it has no place for (e.g. corner normals in a PLY), each
+    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
     place. Reading it back gives the same positions, faces and written attributes. Raises
     ``ValueError`` for an unknown extension, an index out of range, attributes of the wrong size
     or a path that cannot be written.
@@ -354,8 +409,8 @@ def quad_quality(V: npt.ArrayLike, quads: npt.ArrayLike) -> np.ndarray:
 
 def render(
     path: str,
-    V: npt.ArrayLike,
-    F: Faces,
+    V: Any,
+    F: Optional[Faces] = None,
     *,
     first_added_vertex: Optional[int] = None,
     caption: Sequence[str] = (),
@@ -368,7 +423,14 @@ def render(
     A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
     coloured by ``quad_quality`` with a colour bar, triangles highlighted when the mesh has quads,
     vertices from ``first_added_vertex`` on drawn as dots, the ``caption`` lines underneath.
+    ``V`` may be a mesh object instead of positions (``F`` then omitted), as in ``write_mesh``;
+    for a ``QuadResult`` the vertices ``all_quad`` added are drawn as dots unless
+    ``first_added_vertex`` says otherwise.
     """
+    if F is None and isinstance(V, QuadResult) and first_added_vertex is None:
+        if V.first_added_vertex < len(V.V):
+            first_added_vertex = V.first_added_vertex
+    V, F, _ = _mesh_parts(V, F, None, "render")
     _petersen.render(
         str(path), V, F, first_added_vertex, list(caption),
         None if view is None else tuple(float(x) for x in view), int(width), int(height))
