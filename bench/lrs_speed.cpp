@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/io/read_mesh.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
@@ -26,7 +26,7 @@ using namespace petersen;
 LrsStats best_of(const TriangleMesh& mesh, int runs) {
   LrsStats best;
   for (int r = 0; r < runs; ++r) {
-    const LrsStats s = quadrangulate_lrs(mesh).stats;
+    const LrsStats s = pair_closed_component_by_lrs(to_polygon_mesh(mesh)).stats;
     if (r == 0 || s.matching_seconds() < best.matching_seconds()) best = s;
   }
   return best;

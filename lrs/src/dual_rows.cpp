@@ -1,4 +1,4 @@
-#include "petersen/lrs/dual_rows.hpp"
+#include "dual_rows.hpp"
 
 #include <stdexcept>
 #include <string>

@@ -1,9 +1,9 @@
-#include "petersen/lrs/expansion_step.hpp"
+#include "expansion_step.hpp"
 
 #include <stdexcept>
 #include <string>
 
-#include "petersen/lrs/edge_flip.hpp"
+#include "edge_flip.hpp"
 
 namespace petersen::lrs {
 namespace {

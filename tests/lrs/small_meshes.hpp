@@ -7,7 +7,7 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/mesh/mesh.hpp"
-#include "petersen/lrs/triangulation.hpp"
+#include "triangulation.hpp"
 
 namespace petersen::lrs::testing {
 
@@ -32,6 +32,13 @@ inline TriangleMesh octahedron() {
 /// and separates 2 from 4.
 inline TriangleMesh stacked_tetrahedron() {
   return mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}, {1, 3, 4}, {3, 0, 4}});
+}
+
+/// Triangulation::from_mesh on a triangle mesh (the generators' type).
+inline Triangulation from_triangles(
+    const TriangleMesh& mesh,
+    Triangulation::Numbering numbering = Triangulation::Numbering::as_given) {
+  return Triangulation::from_mesh(to_polygon_mesh(mesh), numbering);
 }
 
 /// The mesh's corners, three per triangle, as PolygonMesh keeps them.
@@ -59,6 +66,10 @@ inline std::vector<std::array<VertexId, 3>> oriented_faces(const TriangleMesh& m
   }
   std::sort(faces.begin(), faces.end());
   return faces;
+}
+
+inline std::vector<std::array<VertexId, 3>> oriented_faces(const PolygonMesh& mesh) {
+  return oriented_faces(to_triangle_mesh(mesh));
 }
 
 /// Identical arrays for every live element (ids, origins, next, faces, degrees, liveness).

@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "petersen/lrs/expansion_step.hpp"
+#include "expansion_step.hpp"
 
 namespace petersen::lrs {
 

@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "edge_contraction.hpp"
 #include "petersen/graph/huge_pages.hpp"
-#include "petersen/lrs/edge_contraction.hpp"
 #include "petersen/matching/matching.hpp"
 
 namespace petersen::lrs {

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::lrs {
 
@@ -58,11 +58,12 @@ class Triangulation {
     spatial,
   };
 
-  /// Builds the triangulation of `mesh`, edges numbered as the dual graph's (build_dual) of the
-  /// mesh as numbered. Throws MeshError naming the element (by the input's ids) if the mesh is
-  /// not a closed, connected, orientable manifold surface (pinched vertices and several components
-  /// are refused). Unreferenced vertices are dead from the start. O(F log d).
-  static Triangulation from_mesh(const TriangleMesh& mesh,
+  /// Builds the triangulation of `mesh` (every face a triangle), edges numbered as the pairable
+  /// graph's of the mesh as numbered, by (min, max) vertex, side 0 in the triangle with the smaller
+  /// corner slot. Throws MeshError naming the element (by the input's ids) if the mesh is not a
+  /// closed, connected, orientable manifold surface of triangles (pinched vertices and several
+  /// components are refused). Unreferenced vertices are dead from the start. O(F log d).
+  static Triangulation from_mesh(const PolygonMesh& mesh,
                                  Numbering numbering = Numbering::as_given);
 
   /// Builds the triangulation of a closed, connected, consistently oriented triangle mesh from its
@@ -138,11 +139,11 @@ class Triangulation {
         (2 - std::int64_t{live_vertices_} + live_edges_ - std::int64_t{live_faces_}) / 2);
   }
 
-  /// The live faces as a triangle mesh over `positions` (the input's), in order of their smallest
-  /// halfedge, with the input's vertex ids; each triangle starts at the smallest halfedge id of its
-  /// face, so edge k of the triangle is that halfedge's k-th successor. Dead vertices stay in
-  /// `positions`, unreferenced. O(V + F).
-  TriangleMesh to_mesh(const Positions& positions) const;
+  /// The live faces as a mesh of triangles over `positions` (the input's), in order of their
+  /// smallest halfedge, with the input's vertex ids; each triangle starts at the smallest halfedge
+  /// id of its face, so edge k of the triangle is that halfedge's k-th successor. Dead vertices
+  /// stay in `positions`, unreferenced. O(V + F).
+  PolygonMesh to_mesh(const Positions& positions) const;
 
   /// The dual graph when every face is alive (the triangulation K after expansion): node f is
   /// to_mesh's triangle f, dual edge e crosses edge e, and node f's k-th edge is edge k of
@@ -163,8 +164,13 @@ class Triangulation {
   friend void flip(Triangulation&, Halfedge);
   friend DualRows into_dual_rows(Triangulation&&, ExpansionResult&&);
 
+  // from_dual's last two steps: the links from each corner's halfedge (the slots, taken over) with
+  // `out`, then the vertices renumbered in the links with their degrees, and the live counts.
+  void link_halfedges(std::span<const VertexId> corners, HugeVector<Halfedge> halfedge_of_corner,
+                      const std::function<void()>& corners_read);
+  void count_from_links(std::uint32_t edges, std::uint32_t faces);
   // from_mesh after the surface check.
-  static Triangulation build(const TriangleMesh& mesh);
+  static Triangulation build(const PolygonMesh& mesh);
   // dual_graph once the faces are known to be alive.
   CubicGraph dual_graph_of_live() const;
 
