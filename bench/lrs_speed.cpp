@@ -1,4 +1,4 @@
-// LRS speed (paper §3.3–3.4), for issue 5: contraction and expansion are linear at genus 0.
+// LRS speed (paper §3.3–3.4): contraction and expansion are linear at genus 0.
 // Usage: petersen_lrs_speed [mesh files...]. Without files it runs a doubling series of genus-0
 // voxel plates with dents (the paper's family A) up to past 4M triangles, then the shared
 // armadillo-sub2 (1.38M triangles, genus 0) beside PS on the same dual when ../shared/meshes is

@@ -1,7 +1,7 @@
 #pragma once
 // K after the expansion step (paper §3.3.1) in the lean form a caller that only pairs its faces
 // needs: its dual as neighbour rows, M as partner faces and its triangles, the triangulation freed
-// on the way (quadrangulate's lrs, issue 15: at most 64 bytes per triangle).
+// on the way (at most 64 bytes per triangle at lrs's peak).
 
 #include <array>
 

@@ -35,8 +35,8 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 /// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
 /// origin and the next halfedge of its face (counter-clockwise); each vertex one outgoing halfedge
-/// and its degree. No per-halfedge face id (12 bytes per face, which held the peak of quad's lrs
-/// at the end of the expansion): nothing in contraction or expansion reads one. Dead elements
+/// and its degree. No per-halfedge face id (12 bytes per face at lrs's peak, the end of the
+/// expansion): nothing in contraction or expansion reads one. Dead elements
 /// (removed by contract) keep their last values, which is what split reads to revive them.
 class Triangulation {
  public:
@@ -181,7 +181,7 @@ class Triangulation {
   };
   // The links in an uninitialised array (copied whole with the triangulation): from_dual fills it
   // a half at a time, and into_dual_rows gives its second half back early, so that neither phase
-  // holds all of it beside its other arrays (quad's lrs, issue 15).
+  // holds all of it beside its other arrays.
   class Links {
    public:
     Links() = default;

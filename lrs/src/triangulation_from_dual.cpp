@@ -21,21 +21,18 @@ namespace {
 // corner at v, the side that enters v (from the corner before it) is an edge whose other triangle
 // leaves v along it, and the walk from corner to corner comes back to its start having visited
 // every corner at v. Checked before anything is built, so that from_dual refuses a mesh before
-// the caller's corners_read (a caller that falls back to another method reads the corners again:
-// the check at the end, over the links, let invalid/cow.obj.gz's pinched vertex through to a
-// fallback over freed corners). The arrays are not yet known to be a dual: every read is checked.
-// Each vertex is walked once, from its first corner; a corner that no walk reached is then on a
-// second fan. walk_fans walks the vertices of one parity, setting their corners' bits in
-// `visited` (a bit per corner and, its own, per vertex: 0.8 bytes per triangle for both parities).
+// the caller's corners_read: a caller that falls back to another method reads the corners again.
+// The arrays are not yet known to be a dual: every read is checked. Each vertex is walked once,
+// from its first corner; a corner that no walk reached is then on a second fan. walk_fans walks
+// the vertices of one parity, setting their corners' bits in `visited` (a bit per corner and, its
+// own, per vertex: 0.8 bytes per triangle for both parities).
 //
 // A walk is a chain of dependent random reads (the edge's ends, then the next triangle's corners
-// and slots) in the input's order, not yet the spatial one: walked one at a time, the check took
-// 0.33 s on armadillo-sub2, more than the rest of from_dual. So kLanes walks advance in turn, in
+// and slots) in the input's order, not yet the spatial one. So kLanes walks advance in turn, in
 // two rounds per step: each lane's edge ends are read and the next triangle fetched ahead, then
 // each lane turns, without a branch on which corner is v (taken at random, its mispredictions
-// threw the other lanes' reads away: 8 lanes with branches measured slower than one). Measured on
-// armadillo-sub2 at load 2 (dual phase, least of 7 runs): one walk at a time 0.33 s more than
-// without the check, 16 lanes 0.11-0.14 s more (about 100 instructions a corner, callgrind).
+// would throw the other lanes' reads away). Sixteen lanes cut the check's time to a third of one
+// walk at a time on large meshes (about 100 instructions a corner).
 void walk_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
                std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t parity,
                std::vector<std::uint64_t>& visited, std::vector<std::uint64_t>& has_fan) {
@@ -122,17 +119,14 @@ void walk_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_e
   }
 }
 
-// The even and the odd vertices' walks on up to two threads, each setting bits of its own. Quiet,
-// armadillo-sub2's lrs, three rounds alternated with 4b284b2 (whose check was over the links):
-// the dual phase 0.19-0.34 s there, 0.27-0.35 s on two threads, 0.37-0.52 s on one. Each
+// The even and the odd vertices' walks on up to two threads, each setting bits of its own. Each
 // parity's first error is kept and the even one's is reported first: the same error for any
 // number of threads.
 void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
                 std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t threads) {
   const std::size_t words = (corners.size() + 63) / 64;
-  // Made here, not on the walks' threads: the second thread's heap kept its blocks resident
-  // after the check (armadillo-sub2's lrs peak 88.7 MB so, 88.2-88.3 MB with the bits made here;
-  // 87.9-88.1 MB on one thread).
+  // Made here, not on the walks' threads: a second thread's heap would keep its blocks resident
+  // after the check.
   std::array<std::vector<std::uint64_t>, 2> visited = {std::vector<std::uint64_t>(words, 0),
                                                        std::vector<std::uint64_t>(words, 0)};
   std::array<std::vector<std::uint64_t>, 2> has_fan = {

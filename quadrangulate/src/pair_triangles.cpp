@@ -78,8 +78,8 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
   Subgraph sub;
   std::vector<NodeId> local(graph.node_count, kNoNode);
   for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
-  // Counted first, so that the arrays are made at their size: grown by doubling, they held up to
-  // twice that, and three times while moving (part of an open mesh's 149 bytes per triangle).
+  // Counted first, so that the arrays are made at their size: grown by doubling, they would hold
+  // up to twice that, and three times while moving.
   std::size_t edges = 0;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) edges += local[graph.edge_ends[2 * e]] != kNoNode;
   sub.edge_of.reserve(edges);
@@ -176,12 +176,11 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 // in place and the matching runs on them alone, so at its peak it holds the mesh (24 bytes per
 // triangle), the rows (12), the search state (16) and the partners (4). perfect_matching holds
 // the graph (24), its table (28) and the mate edges (4) at once, 80 bytes per triangle with the
-// mesh before PS's own sets: over the 64 the tool aims at (issue 15). The same pairs, checked
-// against the same adjacency.
+// mesh before PS's own sets: over the 64 the tool aims at. The same pairs, checked against the
+// same adjacency.
 // The components are counted on the edge list while the rows are written over the incidences,
-// not before: each is a single-threaded pass of random reads (on armadillo-sub2 about 0.03 s
-// together, one after the other), and the forest (4 bytes per node) is still gone before the
-// matching's peak.
+// not before: each is a single-threaded pass of random reads, and the forest (4 bytes per node) is
+// still gone before the matching's peak.
 void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePairing& pairing,
                       QuadStats& stats, LapClock& clock) {
   const std::uint32_t node_count = cubic.node_count();
@@ -214,9 +213,8 @@ void pair_closed_whole_mesh(PairableGraph& graph, std::span<const Cost> costs,
     return;
   }
   stats.dual_seconds += clock.lap();
-  // Only their number, without per-node ids (their two fresh arrays were most of the run's 4 KiB
-  // page faults on armadillo-sub2), counted while the matching is verified: each takes about
-  // 0.02 s there, as long as the rest of the dual phase.
+  // Only their number, without per-node ids (two fresh arrays, most of a run's 4 KiB page faults),
+  // counted while the matching is verified: a pass as long as the rest of the dual phase.
   pair_closed(cubic, {}, costs, options, algorithm, pairing, stats, clock, [&] {
     stats.components = stats.closed_components =
         ComponentForest(cubic.node_count(), cubic.edge_ends()).root_count();
