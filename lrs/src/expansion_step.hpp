@@ -37,8 +37,4 @@ struct ExpansionResult {
 /// degree-3 vertex whose side holds anything but the flip of [x, y]). O(E).
 ExpansionResult expand_and_match(Triangulation& tri, std::span<const ContractionRecord> stack);
 
-/// M as a matching of K's dual (`dual` = tri.dual_graph(), whose edge ids are K's). Throws
-/// std::logic_error if two edges of M share a face. O(E).
-Matching matching_of(const CubicGraph& dual, const ExpansionResult& expansion);
-
 }  // namespace petersen::lrs

@@ -106,43 +106,6 @@ PolygonMesh Triangulation::to_mesh(const Positions& positions) const {
   return mesh;
 }
 
-CubicGraph Triangulation::dual_graph() const& {
-  return dual_graph_of_live();
-}
-
-CubicGraph Triangulation::dual_graph() && {
-  // `= {}` would keep the buffers (assignment from an initializer list).
-  out_ = HugeVector<Halfedge>();
-  degree_ = HugeVector<std::uint32_t>();
-  edge_alive_ = HugeVector<std::uint8_t>();
-  return dual_graph_of_live();
-}
-
-CubicGraph Triangulation::dual_graph_of_live() const {
-  if (live_faces_ != face_capacity_) {
-    throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
-  }
-  // One pass in halfedge order: the f-th face met by its smallest halfedge is node f, and fills
-  // its three slots and its halfedges' edge ends. A face's pass touches only its own halfedges.
-  const auto halfedges = static_cast<Halfedge>(links_.size());
-  HugeVector<EdgeId> node_edges(3 * std::size_t{face_capacity_});
-  HugeVector<NodeId> edge_ends(halfedges);
-  FaceId f = 0;
-  for (Halfedge h = 0; h < halfedges; ++h) {
-    if (!smallest_of_face(h)) continue;
-    const Halfedge n = next(h), p = next(n);
-    EdgeId* slots = node_edges.data() + 3 * std::size_t{f};
-    slots[0] = edge(h);
-    slots[1] = edge(n);
-    slots[2] = edge(p);
-    edge_ends[h] = edge_ends[n] = edge_ends[p] = f;
-    ++f;
-  }
-  // Valid by construction: every live halfedge lies in one face cycle of length 3 (check()), so
-  // each slot of face f names an edge with an end f, once per end.
-  return CubicGraph::from_valid_incidence(std::move(node_edges), std::move(edge_ends));
-}
-
 std::string Triangulation::check() const {
   const auto at = [](const char* what, std::uint64_t id) {
     return std::string(what) + " " + std::to_string(id);

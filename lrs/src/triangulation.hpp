@@ -19,8 +19,8 @@ namespace petersen::lrs {
 
 /// Halfedge ids: edge e is halfedges 2e and 2e+1, so the twin of h is h ^ 1. Ids of vertices,
 /// edges and halfedges never change; contraction kills elements and a vertex split revives exactly
-/// those, an edge flip keeps every id. Faces are the next cycles and have no stored id: to_mesh,
-/// dual_graph and into_dual_rows number them in order of their smallest halfedge.
+/// those, an edge flip keeps every id. Faces are the next cycles and have no stored id: to_mesh
+/// and into_dual_rows number them in order of their smallest halfedge.
 using Halfedge = std::uint32_t;
 inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
 
@@ -145,14 +145,6 @@ class Triangulation {
   /// stay in `positions`, unreferenced. O(V + F).
   PolygonMesh to_mesh(const Positions& positions) const;
 
-  /// The dual graph when every face is alive (the triangulation K after expansion): node f is
-  /// to_mesh's triangle f, dual edge e crosses edge e, and node f's k-th edge is edge k of
-  /// to_mesh's triangle f. Throws std::logic_error if a face is dead. O(F).
-  CubicGraph dual_graph() const&;
-  /// The same, freeing the per-vertex and per-edge arrays first: the triangulation is left with
-  /// its links (origin, next, apex, rotate_cw) and input_vertex only.
-  CubicGraph dual_graph() &&;
-
   /// Checks the structure: next cycles of length 3, origins consistent with
   /// twins, out[] outgoing, degrees equal to rotation lengths, live counts, no vertex pair joined
   /// twice (simplicial). Returns the first problem or an empty string. O(V + E) with marks.
@@ -171,8 +163,6 @@ class Triangulation {
   void count_from_links(std::uint32_t edges, std::uint32_t faces);
   // from_mesh after the surface check.
   static Triangulation build(const PolygonMesh& mesh);
-  // dual_graph once the faces are known to be alive.
-  CubicGraph dual_graph_of_live() const;
 
   // Per halfedge, origin and next side by side: a twin pair fills 16 bytes of one cache line.
   struct Link {
