@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/lrs/edge_contraction.hpp"
+#include "edge_contraction.hpp"
 
 namespace petersen::bench {
 
@@ -26,7 +26,7 @@ double squared_length(const Positions& positions, VertexId a, VertexId b) {
 }  // namespace
 
 TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) {
-  Triangulation tri = Triangulation::from_mesh(mesh);
+  Triangulation tri = Triangulation::from_mesh(to_polygon_mesh(mesh));
   Positions positions = mesh.positions;
   lrs::VertexMarks marks(tri.vertex_capacity());
   // Min-heap of (squared length when pushed, edge); an entry whose length is stale is re-pushed.
@@ -65,7 +65,7 @@ TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) 
   }
 
   // Keep only the referenced vertices, numbered in order of first use.
-  TriangleMesh simplified = tri.to_mesh(positions);
+  TriangleMesh simplified = to_triangle_mesh(tri.to_mesh(positions));
   std::vector<VertexId> renumbered(simplified.positions.size(), kNoNode);
   TriangleMesh compact;
   for (auto& triangle : simplified.triangles) {

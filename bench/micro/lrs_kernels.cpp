@@ -3,15 +3,16 @@
 
 #include <benchmark/benchmark.h>
 
+#include "contraction_step.hpp"
 #include "micro_inputs.hpp"
-#include "petersen/lrs/contraction_step.hpp"
 
 namespace petersen::micro {
 
 namespace {
 
 void BM_LrsContraction(benchmark::State& state) {
-  const TriangleMesh& mesh = plate_input(static_cast<std::uint64_t>(state.range(0))).mesh;
+  const PolygonMesh mesh =
+      to_polygon_mesh(plate_input(static_cast<std::uint64_t>(state.range(0))).mesh);
   double contractions = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -28,7 +29,8 @@ BENCHMARK(BM_LrsContraction)
     ->Unit(benchmark::kMillisecond);
 
 void BM_LrsSplit(benchmark::State& state) {
-  const TriangleMesh& mesh = plate_input(static_cast<std::uint64_t>(state.range(0))).mesh;
+  const PolygonMesh mesh =
+      to_polygon_mesh(plate_input(static_cast<std::uint64_t>(state.range(0))).mesh);
   double splits = 0;
   for (auto _ : state) {
     state.PauseTiming();

@@ -1,4 +1,4 @@
-#include "petersen/lrs/contraction_step.hpp"
+#include "contraction_step.hpp"
 namespace petersen::lrs {
 namespace {
 

@@ -1,4 +1,4 @@
-#include "petersen/lrs/dual_rows.hpp"
+#include "dual_rows.hpp"
 
 #include <stdexcept>
 #include <string>
@@ -12,7 +12,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   const FaceId faces = tri.face_capacity_;
   const auto halfedges = static_cast<Halfedge>(tri.links_.size());
   // Faces numbered in order of their smallest halfedge (no per-halfedge face array and no first
-  // halfedge per face: 16 bytes per face at the peak before). The vertex and edge arrays go first
+  // halfedge per face: 16 bytes per face off the peak). The vertex and edge arrays go first
   // (`= {}` would keep the buffers).
   tri.out_ = HugeVector<Halfedge>();
   tri.degree_ = HugeVector<std::uint32_t>();
@@ -50,7 +50,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   // Only the slots are read from here on: each edge's two (its halfedges') are gathered into the
   // links' first half in place (link e is written after links 2e and 2e + 1 >= e are read), and
   // the second half is given back before the rows are made (12 bytes per triangle off this
-  // phase's peak, which was lrs's in quadrangulate). Each row entry comes from the twin's slot, in
+  // phase's peak). Each row entry comes from the twin's slot, in
   // one sweep in edge order; M's sides become partners once the links are freed.
   const std::size_t edges = halfedges / 2;
   for (std::size_t e = 0; e < edges; ++e) {

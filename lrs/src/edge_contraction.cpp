@@ -1,4 +1,4 @@
-#include "petersen/lrs/edge_contraction.hpp"
+#include "edge_contraction.hpp"
 
 namespace petersen::lrs {
 

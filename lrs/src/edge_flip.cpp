@@ -1,4 +1,4 @@
-#include "petersen/lrs/edge_flip.hpp"
+#include "edge_flip.hpp"
 
 namespace petersen::lrs {
 

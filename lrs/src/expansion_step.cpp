@@ -1,9 +1,9 @@
-#include "petersen/lrs/expansion_step.hpp"
+#include "expansion_step.hpp"
 
 #include <stdexcept>
 #include <string>
 
-#include "petersen/lrs/edge_flip.hpp"
+#include "edge_flip.hpp"
 
 namespace petersen::lrs {
 namespace {
@@ -113,20 +113,6 @@ ExpansionResult expand_and_match(Triangulation& tri, std::span<const Contraction
   }
   for (const std::uint8_t s : state) result.flipped_edges += (s & kFlipped) != 0;
   return result;
-}
-
-Matching matching_of(const CubicGraph& dual, const ExpansionResult& expansion) {
-  Matching matching(dual.node_count());
-  for (EdgeId e = 0; e < dual.edge_count(); ++e) {
-    if (!(expansion.edge_state[e] & kMatched)) continue;
-    const auto [a, b] = dual.endpoints(e);
-    if (matching.is_matched(a) || matching.is_matched(b)) {
-      throw std::logic_error("lrs expansion: two edges of M pair face " +
-                             std::to_string(matching.is_matched(a) ? a : b));
-    }
-    matching.match(dual, e);
-  }
-  return matching;
 }
 
 }  // namespace petersen::lrs

@@ -77,9 +77,10 @@ HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_
   return sorted_by_cell(vertex_cells(positions, bits), 1u << (3 * bits));
 }
 
-SpatialMesh spatially_ordered(const TriangleMesh& mesh) {
+SpatialMesh spatially_ordered(const PolygonMesh& mesh) {
   SpatialMesh out;
-  const int bits = bits_per_axis(mesh.triangles.size());
+  const std::size_t triangles = mesh.face_count();
+  const int bits = bits_per_axis(triangles);
   const std::uint32_t cells = 1u << (3 * bits);
   const HugeVector<std::uint32_t> cell = vertex_cells(mesh.positions, bits);
   out.input_vertex = sorted_by_cell(cell, cells);
@@ -89,13 +90,14 @@ SpatialMesh spatially_ordered(const TriangleMesh& mesh) {
     new_id[out.input_vertex[v]] = v;
     out.mesh.positions[v] = mesh.positions[out.input_vertex[v]];
   }
-  HugeVector<std::uint32_t> face_cell(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) face_cell[t] = cell[mesh.triangles[t][0]];
+  HugeVector<std::uint32_t> face_cell(triangles);
+  for (std::size_t t = 0; t < triangles; ++t) face_cell[t] = cell[mesh.corners[3 * t]];
   const HugeVector<std::uint32_t> faces = sorted_by_cell(face_cell, cells);
-  out.mesh.triangles.resize(mesh.triangles.size());
+  out.mesh.corners.resize(3 * triangles);
   for (std::size_t t = 0; t < faces.size(); ++t) {
-    const auto& corners = mesh.triangles[faces[t]];
-    out.mesh.triangles[t] = {new_id[corners[0]], new_id[corners[1]], new_id[corners[2]]};
+    for (std::size_t k = 0; k < 3; ++k) {
+      out.mesh.corners[3 * t + k] = new_id[mesh.corners[3 * std::size_t{faces[t]} + k]];
+    }
   }
   return out;
 }

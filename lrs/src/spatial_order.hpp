@@ -17,7 +17,7 @@
 namespace petersen::lrs {
 
 struct SpatialMesh {
-  TriangleMesh mesh;                  ///< the input renumbered: same surface, same orientation
+  PolygonMesh mesh;                   ///< the input renumbered: same surface, same orientation
   HugeVector<VertexId> input_vertex;  ///< vertex v of `mesh` is vertex input_vertex[v] of the input
 };
 
@@ -27,9 +27,9 @@ struct SpatialMesh {
 /// than from fresh memory.
 HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count);
 
-/// `mesh` with its vertices ordered by Morton cell (a few hundred faces per cell; ties in input
-/// order) and its triangles by the cell of their first corner; each triangle keeps its corners'
-/// cyclic order.
-SpatialMesh spatially_ordered(const TriangleMesh& mesh);
+/// `mesh` (every face a triangle) with its vertices ordered by Morton cell (a few hundred faces per
+/// cell; ties in input order) and its triangles by the cell of their first corner; each triangle
+/// keeps its corners' cyclic order.
+SpatialMesh spatially_ordered(const PolygonMesh& mesh);
 
 }  // namespace petersen::lrs

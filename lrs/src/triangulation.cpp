@@ -1,8 +1,8 @@
-#include "petersen/lrs/triangulation.hpp"
+#include "triangulation.hpp"
 
 #include <stdexcept>
 
-#include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/mesh/surface_check.hpp"
 #include "spatial_order.hpp"
 
@@ -13,29 +13,34 @@ namespace {
 constexpr SurfaceRequirements kSurface{.allow_pinched_vertices = false,
                                        .allow_several_components = false};
 
-bool corners_in_range(const TriangleMesh& mesh) {
-  for (const auto& corners : mesh.triangles)
-    for (VertexId v : corners)
-      if (v >= mesh.positions.size()) return false;
+// The surface check, on the mesh's triangles (require_closed_surface reads them as a triangle
+// list). Throws MeshError naming the first face that is not a triangle, or the surface's fault.
+void require_closed_triangle_surface(const PolygonMesh& mesh) {
+  require_closed_surface(to_triangle_mesh(mesh), kSurface);
+}
+
+bool corners_in_range(const PolygonMesh& mesh) {
+  for (VertexId v : mesh.corners)
+    if (v >= mesh.positions.size()) return false;
   return true;
 }
 
 }  // namespace
 
-Triangulation Triangulation::from_mesh(const TriangleMesh& mesh, Numbering numbering) {
+Triangulation Triangulation::from_mesh(const PolygonMesh& mesh, Numbering numbering) {
   if (numbering == Numbering::as_given) {
-    require_closed_surface(mesh, kSurface);
+    require_closed_triangle_surface(mesh);
     return build(mesh);
   }
   // The check, too, runs faster on the ordered copy. Renumbering changes no property it tests,
   // so when the copy fails, the input fails as well: it is checked then, for an error that names
   // the input's elements. Corners out of range cannot be ordered: the input's check names them.
-  if (!corners_in_range(mesh)) require_closed_surface(mesh, kSurface);
+  if (!mesh.all_triangles() || !corners_in_range(mesh)) require_closed_triangle_surface(mesh);
   SpatialMesh ordered = spatially_ordered(mesh);
   try {
-    require_closed_surface(ordered.mesh, kSurface);
+    require_closed_triangle_surface(ordered.mesh);
   } catch (const MeshError&) {
-    require_closed_surface(mesh, kSurface);
+    require_closed_triangle_surface(mesh);
     throw;
   }
   Triangulation tri = build(ordered.mesh);
@@ -43,10 +48,15 @@ Triangulation Triangulation::from_mesh(const TriangleMesh& mesh, Numbering numbe
   return tri;
 }
 
-Triangulation Triangulation::build(const TriangleMesh& mesh) {
-  const Dual dual = build_dual(mesh);
-  const std::uint32_t edges = dual.graph.edge_count();
-  const auto faces = static_cast<std::uint32_t>(mesh.triangles.size());
+Triangulation Triangulation::build(const PolygonMesh& mesh) {
+  // On a closed, consistently oriented simplicial surface every side is pairable: the pairable
+  // graph is the dual, its edges numbered by (min, max) vertex.
+  const PairableGraph dual = build_pairable_graph(mesh);
+  if (!dual.cubic) {
+    throw MeshError("two triangles with the same three vertices (not a simplicial surface)");
+  }
+  const std::uint32_t edges = dual.edge_count();
+  const auto faces = static_cast<std::uint32_t>(mesh.face_count());
 
   Triangulation tri;
   tri.links_ = Links(2 * std::size_t{edges});  // every halfedge is written below
@@ -55,15 +65,23 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
   tri.degree_.assign(mesh.positions.size(), 0);
   tri.face_capacity_ = faces;
 
-  // Halfedge 3t+k of the mesh (edge k of triangle t) becomes 2e+s when it is side s of dual edge e.
+  // Halfedge 3t+k of the mesh (edge k of triangle t) becomes 2e+s when it is side s of edge e,
+  // side 0 the smaller of the two halfedge ids.
   std::vector<Halfedge> ours(3 * std::size_t{faces});
-  for (EdgeId e = 0; e < edges; ++e) {
-    for (int s = 0; s < 2; ++s) ours[dual.side(e, s)] = 2 * e + static_cast<Halfedge>(s);
+  for (std::size_t slot = 0; slot < ours.size(); ++slot) {
+    const EdgeId e = dual.node_edges[slot];
+    const NodeId t = static_cast<NodeId>(slot / 3);
+    const NodeId other =
+        dual.edge_ends[2 * std::size_t{e}] ^ dual.edge_ends[2 * std::size_t{e} + 1] ^ t;
+    std::size_t other_slot = 3 * std::size_t{other};
+    while (dual.node_edges[other_slot] != e) ++other_slot;
+    ours[slot] = 2 * e + (slot < other_slot ? 0u : 1u);
   }
   for (FaceId t = 0; t < faces; ++t) {
+    const auto corners = mesh.face(t);
     for (std::uint32_t k = 0; k < 3; ++k) {
       const Halfedge h = ours[3 * std::size_t{t} + k];
-      const VertexId v = mesh.triangles[t][k];
+      const VertexId v = corners[k];
       tri.links_[h] = {v, ours[3 * std::size_t{t} + (k + 1) % 3]};
       tri.out_[v] = h;
       ++tri.degree_[v];
@@ -75,53 +93,17 @@ Triangulation Triangulation::build(const TriangleMesh& mesh) {
   return tri;
 }
 
-TriangleMesh Triangulation::to_mesh(const Positions& positions) const {
-  TriangleMesh mesh;
+PolygonMesh Triangulation::to_mesh(const Positions& positions) const {
+  PolygonMesh mesh;
   mesh.positions = positions;
-  mesh.triangles.reserve(live_faces_);
+  mesh.corners.reserve(3 * std::size_t{live_faces_});
   for (Halfedge h = 0; h < 2 * edge_capacity(); ++h) {
     if (!edge_alive(edge(h)) || !smallest_of_face(h)) continue;
-    mesh.triangles.push_back(
-        {input_vertex(origin(h)), input_vertex(origin(next(h))), input_vertex(origin(prev(h)))});
+    for (const Halfedge corner : {h, next(h), prev(h)}) {
+      mesh.corners.push_back(input_vertex(origin(corner)));
+    }
   }
   return mesh;
-}
-
-CubicGraph Triangulation::dual_graph() const& {
-  return dual_graph_of_live();
-}
-
-CubicGraph Triangulation::dual_graph() && {
-  // `= {}` would keep the buffers (assignment from an initializer list).
-  out_ = HugeVector<Halfedge>();
-  degree_ = HugeVector<std::uint32_t>();
-  edge_alive_ = HugeVector<std::uint8_t>();
-  return dual_graph_of_live();
-}
-
-CubicGraph Triangulation::dual_graph_of_live() const {
-  if (live_faces_ != face_capacity_) {
-    throw std::logic_error("lrs::Triangulation::dual_graph: some faces are contracted away");
-  }
-  // One pass in halfedge order: the f-th face met by its smallest halfedge is node f, and fills
-  // its three slots and its halfedges' edge ends. A face's pass touches only its own halfedges.
-  const auto halfedges = static_cast<Halfedge>(links_.size());
-  HugeVector<EdgeId> node_edges(3 * std::size_t{face_capacity_});
-  HugeVector<NodeId> edge_ends(halfedges);
-  FaceId f = 0;
-  for (Halfedge h = 0; h < halfedges; ++h) {
-    if (!smallest_of_face(h)) continue;
-    const Halfedge n = next(h), p = next(n);
-    EdgeId* slots = node_edges.data() + 3 * std::size_t{f};
-    slots[0] = edge(h);
-    slots[1] = edge(n);
-    slots[2] = edge(p);
-    edge_ends[h] = edge_ends[n] = edge_ends[p] = f;
-    ++f;
-  }
-  // Valid by construction: every live halfedge lies in one face cycle of length 3 (check()), so
-  // each slot of face f names an edge with an end f, once per end.
-  return CubicGraph::from_valid_incidence(std::move(node_edges), std::move(edge_ends));
 }
 
 std::string Triangulation::check() const {

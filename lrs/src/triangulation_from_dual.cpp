@@ -10,8 +10,8 @@
 
 #include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/parallel.hpp"
-#include "petersen/lrs/triangulation.hpp"
 #include "spatial_order.hpp"
+#include "triangulation.hpp"
 
 namespace petersen::lrs {
 
@@ -21,21 +21,18 @@ namespace {
 // corner at v, the side that enters v (from the corner before it) is an edge whose other triangle
 // leaves v along it, and the walk from corner to corner comes back to its start having visited
 // every corner at v. Checked before anything is built, so that from_dual refuses a mesh before
-// the caller's corners_read (a caller that falls back to another method reads the corners again:
-// the check at the end, over the links, let invalid/cow.obj.gz's pinched vertex through to a
-// fallback over freed corners). The arrays are not yet known to be a dual: every read is checked.
-// Each vertex is walked once, from its first corner; a corner that no walk reached is then on a
-// second fan. walk_fans walks the vertices of one parity, setting their corners' bits in
-// `visited` (a bit per corner and, its own, per vertex: 0.8 bytes per triangle for both parities).
+// the caller's corners_read: a caller that falls back to another method reads the corners again.
+// The arrays are not yet known to be a dual: every read is checked. Each vertex is walked once,
+// from its first corner; a corner that no walk reached is then on a second fan. walk_fans walks
+// the vertices of one parity, setting their corners' bits in `visited` (a bit per corner and, its
+// own, per vertex: 0.8 bytes per triangle for both parities).
 //
 // A walk is a chain of dependent random reads (the edge's ends, then the next triangle's corners
-// and slots) in the input's order, not yet the spatial one: walked one at a time, the check took
-// 0.33 s on armadillo-sub2, more than the rest of from_dual. So kLanes walks advance in turn, in
+// and slots) in the input's order, not yet the spatial one. So kLanes walks advance in turn, in
 // two rounds per step: each lane's edge ends are read and the next triangle fetched ahead, then
 // each lane turns, without a branch on which corner is v (taken at random, its mispredictions
-// threw the other lanes' reads away: 8 lanes with branches measured slower than one). Measured on
-// armadillo-sub2 at load 2 (dual phase, least of 7 runs): one walk at a time 0.33 s more than
-// without the check, 16 lanes 0.11-0.14 s more (about 100 instructions a corner, callgrind).
+// would throw the other lanes' reads away). Sixteen lanes cut the check's time to a third of one
+// walk at a time on large meshes (about 100 instructions a corner).
 void walk_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
                std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t parity,
                std::vector<std::uint64_t>& visited, std::vector<std::uint64_t>& has_fan) {
@@ -122,17 +119,14 @@ void walk_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_e
   }
 }
 
-// The even and the odd vertices' walks on up to two threads, each setting bits of its own. Quiet,
-// armadillo-sub2's lrs, three rounds alternated with 4b284b2 (whose check was over the links):
-// the dual phase 0.19-0.34 s there, 0.27-0.35 s on two threads, 0.37-0.52 s on one. Each
+// The even and the odd vertices' walks on up to two threads, each setting bits of its own. Each
 // parity's first error is kept and the even one's is reported first: the same error for any
 // number of threads.
 void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
                 std::span<const NodeId> edge_ends, std::uint32_t vertices, std::uint32_t threads) {
   const std::size_t words = (corners.size() + 63) / 64;
-  // Made here, not on the walks' threads: the second thread's heap kept its blocks resident
-  // after the check (armadillo-sub2's lrs peak 88.7 MB so, 88.2-88.3 MB with the bits made here;
-  // 87.9-88.1 MB on one thread).
+  // Made here, not on the walks' threads: a second thread's heap would keep its blocks resident
+  // after the check.
   std::array<std::vector<std::uint64_t>, 2> visited = {std::vector<std::uint64_t>(words, 0),
                                                        std::vector<std::uint64_t>(words, 0)};
   std::array<std::vector<std::uint64_t>, 2> has_fan = {
@@ -162,6 +156,70 @@ void check_fans(std::span<const VertexId> corners, std::span<const EdgeId> node_
   }
 }
 
+// Edges by their smaller vertex (new ids), a stable counting sort: the edges around a vertex get
+// neighbouring ids, as build_dual's (min, max) order gives them on the spatial copy. Each edge's
+// key, then its new id, is written over its second end, which nothing reads after it is checked:
+// a triangle is the edge's first or its second end (no array of new edge ids, 6 bytes per
+// triangle at this pass's peak). The components are counted here too, once the arrays are known
+// to be a dual (every end in range), unless the caller has counted them.
+void renumber_edges(std::span<const VertexId> corners, std::span<const EdgeId> node_edges,
+                    std::span<NodeId> edge_ends, std::span<const VertexId> new_id,
+                    Triangulation::Connectivity connectivity) {
+  const auto faces = static_cast<std::uint32_t>(corners.size() / 3);
+  const auto edges = static_cast<std::uint32_t>(edge_ends.size() / 2);
+  const auto vertices = static_cast<std::uint32_t>(new_id.size());
+  std::optional<ComponentForest> forest;
+  if (connectivity == Triangulation::Connectivity::unknown) {
+    forest.emplace(faces, std::span<const NodeId>());
+  }
+  HugeVector<std::uint32_t> start(std::size_t{vertices} + 1, 0);
+  const auto names = [&](NodeId t, EdgeId e) {
+    const std::size_t c = 3 * std::size_t{t};
+    return node_edges[c] == e || node_edges[c + 1] == e || node_edges[c + 2] == e;
+  };
+  for (EdgeId e = 0; e < edges; ++e) {
+    const NodeId t = edge_ends[2 * e], u = edge_ends[2 * e + 1];
+    // The first end names the edge among its sides. check_fans has seen every side's edge end
+    // at the side's triangle and be named by its other end too, so an edge named by three sides
+    // or more would leave another edge named by none, whose first end fails here: every edge is
+    // then named by its two ends once (u's sides are not read again: a random read per edge).
+    if (t >= faces || u >= faces || u == t || !names(t, e)) {
+      throw std::invalid_argument("lrs::Triangulation::from_dual: edge " + std::to_string(e) +
+                                  " is not a side of its triangles");
+    }
+    if (forest) forest->join(edge_ends.subspan(2 * std::size_t{e}, 2));
+    const std::size_t c = 3 * std::size_t{t};
+    const std::size_t k = node_edges[c] == e ? 0 : node_edges[c + 1] == e ? 1 : 2;
+    const VertexId a = corners[c + k], b = corners[c + (k + 1) % 3];
+    if (a >= vertices || b >= vertices) {
+      throw std::invalid_argument("lrs::Triangulation::from_dual: triangle " + std::to_string(t) +
+                                  " has a corner out of range");
+    }
+    edge_ends[2 * e + 1] = std::min(new_id[a], new_id[b]);
+    ++start[edge_ends[2 * e + 1] + 1];
+  }
+  if (forest) {
+    if (const std::uint32_t components = forest->root_count(); components > 1) {
+      throw MeshError(std::to_string(components) + " components (triangles joined through edges)");
+    }
+    forest.reset();
+  }
+  for (VertexId v = 0; v < vertices; ++v) start[v + 1] += start[v];
+  for (EdgeId e = 0; e < edges; ++e) edge_ends[2 * e + 1] = start[edge_ends[2 * e + 1]]++;
+}
+
+// Side k of triangle t becomes halfedge 2e' + s, written over its slot: s = 0 in the edge's first
+// triangle, e' the new id renumber_edges left in the edge's second end.
+void halfedges_over_slots(std::span<EdgeId> node_edges, std::span<const NodeId> edge_ends) {
+  const auto faces = static_cast<FaceId>(node_edges.size() / 3);
+  for (FaceId t = 0; t < faces; ++t) {
+    for (std::size_t k = 0; k < 3; ++k) {
+      EdgeId& slot = node_edges[3 * std::size_t{t} + k];
+      slot = 2 * edge_ends[2 * slot + 1] + (edge_ends[2 * slot] == t ? 0u : 1u);
+    }
+  }
+}
+
 }  // namespace
 
 Triangulation Triangulation::from_dual(const Positions& positions,
@@ -181,132 +239,77 @@ Triangulation Triangulation::from_dual(const Positions& positions,
                                 " edges are not a closed mesh's dual");
   }
   check_fans(corners, node_edges, edge_ends, vertices, threads);
-  const std::size_t kept = huge_pages::retained_bytes();
   Triangulation tri;
+  tri.input_vertex_ = spatial_vertex_order(positions, faces);
   {
-    tri.input_vertex_ = spatial_vertex_order(positions, faces);
     HugeVector<VertexId> new_id(vertices);
     for (VertexId v = 0; v < vertices; ++v) new_id[tri.input_vertex_[v]] = v;
-
-    // Edges by their smaller vertex (new ids), a stable counting sort: the edges around a vertex
-    // get neighbouring ids, as build_dual's (min, max) order gives them on the spatial copy. Each
-    // edge's key, then its new id, is written over its second end, which nothing reads after it
-    // is checked: a triangle is the edge's first or its second end (no array of new edge ids,
-    // 6 bytes per triangle at this pass's peak).
-    std::optional<ComponentForest> forest;
-    if (connectivity == Connectivity::unknown) forest.emplace(faces, std::span<const NodeId>());
-    HugeVector<std::uint32_t> start(std::size_t{vertices} + 1, 0);
-    const auto names = [&](NodeId t, EdgeId e) {
-      const std::size_t c = 3 * std::size_t{t};
-      return node_edges[c] == e || node_edges[c + 1] == e || node_edges[c + 2] == e;
-    };
-    for (EdgeId e = 0; e < edges; ++e) {
-      const NodeId t = edge_ends[2 * e], u = edge_ends[2 * e + 1];
-      // The first end names the edge among its sides. check_fans has seen every side's edge end
-      // at the side's triangle and be named by its other end too, so an edge named by three sides
-      // or more would leave another edge named by none, whose first end fails here: every edge is
-      // then named by its two ends once (u's sides are not read again: a random read per edge).
-      if (t >= faces || u >= faces || u == t || !names(t, e)) {
-        throw std::invalid_argument("lrs::Triangulation::from_dual: edge " + std::to_string(e) +
-                                    " is not a side of its triangles");
-      }
-      if (forest) forest->join(std::span<const NodeId>(edge_ends.data() + 2 * e, 2));
-      const std::size_t c = 3 * std::size_t{t};
-      const std::size_t k = node_edges[c] == e ? 0 : node_edges[c + 1] == e ? 1 : 2;
-      const VertexId a = corners[c + k], b = corners[c + (k + 1) % 3];
-      if (a >= vertices || b >= vertices) {
-        throw std::invalid_argument("lrs::Triangulation::from_dual: triangle " + std::to_string(t) +
-                                    " has a corner out of range");
-      }
-      edge_ends[2 * e + 1] = std::min(new_id[a], new_id[b]);
-      ++start[edge_ends[2 * e + 1] + 1];
-    }
-    // Counted once the arrays are known to be a dual (every end in range), unless the caller has.
-    if (forest) {
-      if (const std::uint32_t components = forest->root_count(); components > 1) {
-        throw MeshError(std::to_string(components) +
-                        " components (triangles joined through edges)");
-      }
-      forest.reset();
-    }
-    for (VertexId v = 0; v < vertices; ++v) start[v + 1] += start[v];
-    for (EdgeId e = 0; e < edges; ++e) edge_ends[2 * e + 1] = start[edge_ends[2 * e + 1]]++;
+    renumber_edges(corners, node_edges, edge_ends, new_id, connectivity);
   }
-  // Side k of triangle t becomes halfedge 2e' + s, written over its slot: s = 0 in the edge's
-  // first triangle.
-  for (FaceId t = 0; t < faces; ++t) {
-    for (std::size_t k = 0; k < 3; ++k) {
-      EdgeId& slot = node_edges[3 * std::size_t{t} + k];
-      slot = 2 * edge_ends[2 * slot + 1] + (edge_ends[2 * slot] == t ? 0u : 1u);
-    }
-  }
+  halfedges_over_slots(node_edges, edge_ends);
   edge_ends = HugeVector<NodeId>();
+  tri.link_halfedges(corners, std::move(node_edges), corners_read);
+  tri.count_from_links(edges, faces);
+  return tri;
+}
 
+void Triangulation::link_halfedges(std::span<const VertexId> corners,
+                                   HugeVector<Halfedge> halfedge_of_corner,
+                                   const std::function<void()>& corners_read) {
   // The links with the input's vertex ids, and each input vertex's halfedge in the last triangle
-  // that has it (what `out` was before, so the contraction walks as it did). Made in three steps
-  // so that the slots, the input's corners and all of the links are never alive at once (the
-  // peak of lrs in quadrangulate, issue 15: 62 bytes per triangle with the positions, 52 so):
-  // each halfedge's origin into the links' first half (halfedge h's word is field h & 1 of link
-  // h / 2; the second half's pages are not touched yet), after which the corners are done with;
-  // each halfedge's next into an array of its own, after which the slots are; then the pairs
-  // spread out in place from the back (link h is written after link h / 2 < h is read). The
-  // vertex order (2 bytes per triangle) is held through these passes, whose peak is now below
-  // the augmentation's: it was made again from the positions when the links were made in one
-  // pass beside the slots and corners (its cells' pass: 3.1 -> 1.4 % of the run's samples on the
-  // 8M plate, about 0.1 s).
-  const std::size_t halfedges = 2 * std::size_t{edges};
-  tri.links_ = Links(halfedges);
-  const auto half_word = [&tri](std::size_t h) -> std::uint32_t& {
-    Link& link = tri.links_[h / 2];
+  // that has it (so that the contraction walks from the same halfedge as on from_mesh's input
+  // order). Made in three steps so that the slots, the input's corners and all of the links are
+  // never alive at once (at most 52 bytes per triangle with the positions, against 62 in one
+  // pass): each halfedge's origin into the links' first half (halfedge h's word is field h & 1 of
+  // link h / 2; the second half's pages are not touched yet), after which the corners are done
+  // with; each halfedge's next into an array of its own, after which the slots are; then the
+  // pairs spread out in place from the back (link h is written after link h / 2 < h is read). The
+  // vertex order (2 bytes per triangle) is held through these passes, below the augmentation's
+  // peak, rather than made again from the positions.
+  const auto faces = static_cast<FaceId>(corners.size() / 3);
+  const auto vertices = static_cast<std::uint32_t>(input_vertex_.size());
+  const std::size_t halfedges = corners.size();
+  links_ = Links(halfedges);
+  const auto half_word = [this](std::size_t h) -> std::uint32_t& {
+    Link& link = links_[h / 2];
     return h % 2 == 0 ? link.origin : link.next;
   };
-  {
-    HugeVector<Halfedge> last_out(vertices, kNoHalfedge);
-    for (std::size_t c = 0; c < corners.size(); ++c) {
-      const VertexId v = corners[c];
-      half_word(node_edges[c]) = v;
-      last_out[v] = node_edges[c];
-    }
-    if (corners_read) corners_read();
-    {
-      const HugeArray<Halfedge> next = make_huge_array<Halfedge>(halfedges);
-      for (FaceId t = 0; t < faces; ++t) {
-        const Halfedge* h = node_edges.data() + 3 * std::size_t{t};
-        for (std::size_t k = 0; k < 3; ++k) next[h[k]] = h[(k + 1) % 3];
-      }
-      // The slots, then the nexts (12 bytes per triangle each), go back to the kernel: kept by the
-      // huge-page pool, they stayed resident while the links' second half is filled and beside
-      // the arrays made after them, none of which takes them again whole (armadillo-sub2: peak
-      // 94-95 MB against 89 MB with the pool off; since the pool assembles ranges from kept ones,
-      // 101 MB without these two trims against 88 MB, the 4M plate 270 MB against 236 MB).
-      node_edges = HugeVector<EdgeId>();
-      huge_pages::trim_retained(kept);
-      for (std::size_t h = halfedges; h-- > 0;) tri.links_[h] = {half_word(h), next[h]};
-    }
-    huge_pages::trim_retained(kept);
-
-    tri.out_.resize(vertices);
-    for (VertexId v = 0; v < vertices; ++v) tri.out_[v] = last_out[tri.input_vertex_[v]];
+  HugeVector<Halfedge> last_out(vertices, kNoHalfedge);
+  for (std::size_t c = 0; c < corners.size(); ++c) {
+    const VertexId v = corners[c];
+    half_word(halfedge_of_corner[c]) = v;
+    last_out[v] = halfedge_of_corner[c];
   }
+  if (corners_read) corners_read();
   {
-    HugeVector<VertexId> new_id(vertices);
-    for (VertexId v = 0; v < vertices; ++v) new_id[tri.input_vertex_[v]] = v;
-    tri.degree_.assign(vertices, 0);
-    for (std::size_t h = 0; h < halfedges; ++h) {
-      Link& link = tri.links_[h];
-      link.origin = new_id[link.origin];
-      ++tri.degree_[link.origin];
+    const HugeArray<Halfedge> next = make_huge_array<Halfedge>(halfedges);
+    for (FaceId t = 0; t < faces; ++t) {
+      const Halfedge* h = halfedge_of_corner.data() + 3 * std::size_t{t};
+      for (std::size_t k = 0; k < 3; ++k) next[h[k]] = h[(k + 1) % 3];
     }
+    halfedge_of_corner = HugeVector<Halfedge>();  // `= {}` would keep the buffer
+    for (std::size_t h = halfedges; h-- > 0;) links_[h] = {half_word(h), next[h]};
   }
+  out_.resize(vertices);
+  for (VertexId v = 0; v < vertices; ++v) out_[v] = last_out[input_vertex_[v]];
+}
 
-  tri.edge_alive_.assign(edges, 1);
-  tri.face_capacity_ = faces;
-  tri.live_edges_ = edges;
-  tri.live_faces_ = faces;
-
+void Triangulation::count_from_links(std::uint32_t edges, std::uint32_t faces) {
+  const auto vertices = static_cast<std::uint32_t>(input_vertex_.size());
+  HugeVector<VertexId> new_id(vertices);
+  for (VertexId v = 0; v < vertices; ++v) new_id[input_vertex_[v]] = v;
+  degree_.assign(vertices, 0);
+  for (std::size_t h = 0; h < links_.size(); ++h) {
+    Link& link = links_[h];
+    link.origin = new_id[link.origin];
+    ++degree_[link.origin];
+  }
+  edge_alive_.assign(edges, 1);
+  face_capacity_ = faces;
+  live_edges_ = edges;
+  live_faces_ = faces;
   // Each vertex with a corner is alive (check_fans has walked its one fan).
-  for (VertexId v = 0; v < vertices; ++v) tri.live_vertices_ += tri.out_[v] != kNoHalfedge;
-  return tri;
+  for (VertexId v = 0; v < vertices; ++v) live_vertices_ += out_[v] != kNoHalfedge;
 }
 
 }  // namespace petersen::lrs

@@ -7,15 +7,13 @@
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/lrs/lrs.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
 namespace petersen::quad_detail {
 
 /// A quad lrs made, with the input triangles behind it (kNoFace where its flips made a new one).
-struct LrsQuad {
-  std::array<VertexId, 4> corners;
-  std::array<FaceId, 2> sources;
-};
+using LrsQuad = petersen::LrsQuad;
 
 struct TrianglePairing {
   /// Per node: its partner node, kNoNode when unpaired, kLrsNode when lrs paired it (lrs_quads).
@@ -29,7 +27,7 @@ inline constexpr NodeId kLrsNode = kNoNode - 1;
 /// Pairs the nodes of `graph` (the pairable graph of `mesh`; its edge arrays may be taken over, its
 /// node_face stays) and checks the answer; Objective::quality needs `degrees`, the cost of each
 /// edge (pairable_edge_quality). `releasable_corners`, when not null, is mesh.corners, which
-/// lrs on a whole closed mesh frees without options.sources (pair_whole_mesh_by_lrs); the mesh
+/// lrs on a whole closed mesh frees without options.sources (pair_component_by_lrs); the mesh
 /// then has no corners when this returns.
 /// throws std::logic_error if a matching fails the verifier or its witness. Fills the matching,
 /// lrs, component and time fields of `stats`, and maximum_certified.

@@ -1,7 +1,7 @@
 // The contraction step (paper §3.3) on generated closed surfaces of genus 0 to 30: T′ is
 // irreducible (brute force), of the right size, and the recorded stack undoes exactly.
 
-#include "petersen/lrs/contraction_step.hpp"
+#include "contraction_step.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -14,7 +14,7 @@ namespace petersen::lrs {
 namespace {
 
 void check_contraction(const TriangleMesh& mesh, std::uint32_t genus) {
-  const Triangulation original = Triangulation::from_mesh(mesh);
+  const Triangulation original = testing::from_triangles(mesh);
   RC_ASSERT(original.genus() == genus);
   Triangulation tri = original;
   const ContractionResult result = contract_to_irreducible(tri);
@@ -56,14 +56,14 @@ RC_GTEST_PROP(ContractionStep, VoxelPlates, ()) {
 }
 
 TEST(ContractionStep, TetrahedronIsAlreadyIrreducible) {
-  Triangulation tri = Triangulation::from_mesh(testing::tetrahedron());
+  Triangulation tri = testing::from_triangles(testing::tetrahedron());
   const ContractionResult result = contract_to_irreducible(tri);
   EXPECT_TRUE(result.stack.empty());
   EXPECT_EQ(result.processed, (HugeVector<VertexId>{0, 1, 2, 3}));
 }
 
 TEST(ContractionStep, OctahedronShrinksToTheTetrahedron) {
-  Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  Triangulation tri = testing::from_triangles(testing::octahedron());
   const ContractionResult result = contract_to_irreducible(tri);
   EXPECT_EQ(result.stack.size(), 2u);
   EXPECT_EQ(tri.live_vertices(), 4u);

@@ -3,7 +3,7 @@
 // the faces of T′, the flips are exactly the edges K does not share with T, and augmenting M gives
 // a perfect matching whose quads pass the quad check.
 
-#include "petersen/lrs/expansion_step.hpp"
+#include "expansion_step.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -12,13 +12,13 @@
 #include <span>
 #include <utility>
 
+#include "contraction_step.hpp"
+#include "dual_rows.hpp"
 #include "petersen/dualize/quads.hpp"
-#include "petersen/mesh/surface_check.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/lrs/contraction_step.hpp"
-#include "petersen/lrs/dual_rows.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/perfect_partners.hpp"
+#include "petersen/mesh/surface_check.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
@@ -48,7 +48,7 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
   RC_ASSERT(tri.live_vertices() == vertices);
   RC_ASSERT(tri.live_faces() == faces);
   RC_ASSERT(tri.genus() == genus);
-  const TriangleMesh k = tri.to_mesh(mesh.positions);
+  const TriangleMesh k = to_triangle_mesh(tri.to_mesh(mesh.positions));
   const SurfaceReport report = inspect_surface(k);
   RC_ASSERT(report.closed());
   RC_ASSERT(report.pinched_vertices.empty());
@@ -63,13 +63,9 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
                       std::back_inserter(new_edges));
   RC_ASSERT(new_edges.size() == std::size_t{expansion.flipped_edges});
 
-  const CubicGraph dual = tri.dual_graph();
-  // dual_graph skips from_incidence's checks (valid by construction): run them here.
-  const std::span<const EdgeId> slots = dual.node_edges();
-  const std::span<const NodeId> ends = dual.edge_ends();
-  RC_ASSERT(CubicGraph::from_incidence({slots.begin(), slots.end()}, {ends.begin(), ends.end()})
-                .edge_count() == dual.edge_count());
-  Matching matching = matching_of(dual, expansion);
+  // from_incidence checks the dual; M may not pair a face twice.
+  const CubicGraph dual = testing::dual_graph_of(tri);
+  Matching matching = testing::matching_of(dual, expansion);
   RC_ASSERT(verify_matching(dual, matching).ok());
   RC_ASSERT(matching.unmatched_count() == irreducible_faces);
   if (genus == 0) RC_ASSERT(matching.unmatched_count() == 4u);
@@ -99,7 +95,7 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
   const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
-  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+  check_expansion(mesh, testing::from_triangles(mesh), genus);
 }
 
 // The same steps on the triangulation built from the dual (numbered spatially, as the quad front
@@ -118,17 +114,17 @@ RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
   spec.dents = *rc::gen::arbitrary<bool>();
   const TriangleMesh mesh = voxel_plate(spec);
   const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
-  check_expansion(mesh, Triangulation::from_mesh(mesh), genus);
+  check_expansion(mesh, testing::from_triangles(mesh), genus);
   check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
 TEST(ExpansionStep, OctahedronLeavesTheFourTetrahedronFaces) {
-  Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  Triangulation tri = testing::from_triangles(testing::octahedron());
   const ContractionResult contraction = contract_to_irreducible(tri);
   const ExpansionResult expansion = expand_and_match(tri, contraction.stack);
   EXPECT_EQ(tri.check(), "");
   EXPECT_EQ(expansion.matched_edges, 2u);
-  EXPECT_EQ(matching_of(tri.dual_graph(), expansion).unmatched_count(), 4u);
+  EXPECT_EQ(testing::matching_of(testing::dual_graph_of(tri), expansion).unmatched_count(), 4u);
 }
 
 }  // namespace

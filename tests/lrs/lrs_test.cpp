@@ -1,17 +1,20 @@
-// The LRS front door: quads on generated and shared surfaces, statistics in the paper's terms, and
-// clear refusals of inputs that are not closed orientable manifold surfaces.
+// The LRS entry: quads on generated and shared surfaces, from a mesh and from its dual's arrays,
+// statistics in the paper's terms, and clear refusals of inputs that are not closed orientable
+// manifold surfaces.
 
 #include "petersen/lrs/lrs.hpp"
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 
-#include "petersen/dualize/quads.hpp"
-#include "petersen/io/read_mesh.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/generators/surface_generators.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/testing/arbitrary.hpp"
+#include "quad_check.hpp"
 #include "shared_meshes.hpp"
 #include "small_meshes.hpp"
 
@@ -24,12 +27,10 @@ constexpr std::uint32_t kMaxTriangles = 200000;
 constexpr std::uint32_t kMaxTriangles = 0xFFFFFFFFu;
 #endif
 
-void check_result(const TriangleMesh& mesh, const LrsResult& result, std::uint32_t genus) {
+void check_result(const PolygonMesh& mesh, const LrsPairing& result, std::uint32_t genus) {
   const LrsStats& s = result.stats;
-  RC_ASSERT(verify_perfect_matching(result.dual, result.matching).ok());
-  const QuadCheck quads = check_quad_mesh(mesh, result.quads);
-  RC_ASSERT(quads.ok());
-  RC_ASSERT(result.quads.quads.size() == mesh.triangles.size() / 2);
+  const std::string problem = lrs::testing::quad_problem(mesh, result);
+  RC_ASSERT(problem == "");
   RC_ASSERT(s.genus == genus);
   RC_ASSERT(s.unpaired_after_expansion == s.irreducible_faces);
   RC_ASSERT(s.augmenting_paths == s.unpaired_after_expansion / 2);
@@ -47,11 +48,22 @@ void check_result(const TriangleMesh& mesh, const LrsResult& result, std::uint32
   RC_ASSERT(s.total_seconds >= s.matching_seconds());
 }
 
+// The dual-arrays entry on the mesh's pairable graph (its dual: the mesh is closed and oriented).
+LrsPairing pair_from_dual(const PolygonMesh& mesh, const LrsOptions& options = {}) {
+  PairableGraph graph = build_pairable_graph(mesh);
+  return pair_closed_component_by_lrs(LrsDualInput{.positions = mesh.positions,
+                                                   .corners = mesh.corners,
+                                                   .node_edges = std::move(graph.node_edges),
+                                                   .edge_ends = std::move(graph.edge_ends)},
+                                      options);
+}
+
 RC_GTEST_PROP(Lrs, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  const PolygonMesh mesh = to_polygon_mesh(*petersen::testing::closed_triangulations(genus));
   const auto augment = *rc::gen::element(Augment::local, Augment::faithful);
-  check_result(mesh, quadrangulate_lrs(mesh, {.augment = augment}), genus);
+  check_result(mesh, pair_closed_component_by_lrs(mesh, {.augment = augment}), genus);
+  check_result(mesh, pair_from_dual(mesh, {.augment = augment}), genus);
 }
 
 RC_GTEST_PROP(Lrs, VoxelPlates, ()) {
@@ -60,22 +72,47 @@ RC_GTEST_PROP(Lrs, VoxelPlates, ()) {
   spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.dents = *rc::gen::arbitrary<bool>();
-  const TriangleMesh mesh = voxel_plate(spec);
-  check_result(mesh, quadrangulate_lrs(mesh), spec.dents ? 0 : spec.holes_x * spec.holes_y);
+  const PolygonMesh mesh = to_polygon_mesh(voxel_plate(spec));
+  const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
+  check_result(mesh, pair_closed_component_by_lrs(mesh), genus);
+  check_result(mesh, pair_from_dual(mesh), genus);
+}
+
+// Without sources every quad names no input triangle, and the caller's corners_read runs once.
+TEST(Lrs, WithoutSourcesTheCornersAreReleasedOnce) {
+  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 400, 400, 3));
+  PairableGraph graph = build_pairable_graph(mesh);
+  int calls = 0;
+  const LrsPairing result =
+      pair_closed_component_by_lrs(LrsDualInput{.positions = mesh.positions,
+                                                .corners = mesh.corners,
+                                                .node_edges = std::move(graph.node_edges),
+                                                .edge_ends = std::move(graph.edge_ends),
+                                                .corners_read = [&] { ++calls; }},
+                                   {.sources = false});
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(2 * result.quads.size(), mesh.face_count());
+  for (const LrsQuad& quad : result.quads) {
+    EXPECT_EQ(quad.sources, (std::array<FaceId, 2>{kNoSourceFace, kNoSourceFace}));
+  }
 }
 
 TEST(Lrs, EveryExpansionCaseRunsOnAnIrregularSphere) {
-  const TriangleMesh mesh = random_closed_surface(0, 3000, 3000, 7);
-  const LrsResult result = quadrangulate_lrs(mesh);
+  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(0, 3000, 3000, 7));
+  const LrsPairing result = pair_closed_component_by_lrs(mesh);
   for (int c = 0; c < 4; ++c) EXPECT_GT(result.stats.expansion_cases[c], 0u) << "case " << c;
   EXPECT_GT(result.stats.flipped_edges, 0u);
-  EXPECT_TRUE(check_quad_mesh(mesh, result.quads).ok());
+  EXPECT_EQ(lrs::testing::quad_problem(mesh, result), "");
+  // A flipped triangle is no input triangle: some quads name fewer than two sources.
+  EXPECT_TRUE(std::any_of(result.quads.begin(), result.quads.end(), [](const LrsQuad& quad) {
+    return quad.sources[0] == kNoSourceFace || quad.sources[1] == kNoSourceFace;
+  }));
 }
 
 TEST(Lrs, RefusesWhatIsNotAClosedOrientableManifold) {
   const auto refuses = [](const TriangleMesh& mesh, const std::string& names) {
     try {
-      quadrangulate_lrs(mesh);
+      pair_closed_component_by_lrs(to_polygon_mesh(mesh));
       ADD_FAILURE() << "accepted a mesh that should name " << names;
     } catch (const MeshError& error) {
       EXPECT_NE(std::string(error.what()).find(names), std::string::npos) << error.what();
@@ -106,12 +143,10 @@ TEST(Lrs, SharedMeshesConvert) {
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   for (const auto& expected : testing::shared_meshes_up_to(kMaxTriangles)) {
     SCOPED_TRACE(expected.file);
-    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
-    const LrsResult result = quadrangulate_lrs(mesh);
+    const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/" + expected.file));
+    const LrsPairing result = pair_closed_component_by_lrs(mesh);
     const LrsStats& s = result.stats;
-    ASSERT_TRUE(verify_perfect_matching(result.dual, result.matching).ok());
-    const QuadCheck quads = check_quad_mesh(mesh, result.quads);
-    EXPECT_TRUE(quads.ok()) << quads.problem;
+    EXPECT_EQ(lrs::testing::quad_problem(mesh, result), "");
     EXPECT_EQ(s.genus, expected.genus);
     if (expected.genus == 0) {
       EXPECT_EQ(s.unpaired_after_expansion, 4u);

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "edge_contraction.hpp"
+#include "edge_flip.hpp"
 #include "petersen/generators/polygon_generators.hpp"
-#include "petersen/mesh/surface_check.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/lrs/edge_contraction.hpp"
-#include "petersen/lrs/edge_flip.hpp"
+#include "petersen/mesh/surface_check.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
@@ -36,14 +36,14 @@ Halfedge find_halfedge(const Triangulation& tri, VertexId a, VertexId b) {
 
 TEST(Triangulation, BuildsFromMeshWithMeshIds) {
   const TriangleMesh mesh = testing::octahedron();
-  const Triangulation tri = Triangulation::from_mesh(mesh);
+  const Triangulation tri = testing::from_triangles(mesh);
   EXPECT_EQ(tri.check(), "");
   EXPECT_EQ(tri.live_vertices(), 6u);
   EXPECT_EQ(tri.live_edges(), 12u);
   EXPECT_EQ(tri.live_faces(), 8u);
   EXPECT_EQ(tri.genus(), 0u);
   for (VertexId v = 0; v < 6; ++v) EXPECT_EQ(tri.degree(v), 4u);
-  EXPECT_EQ(tri.to_mesh(mesh.positions).triangles.size(), 8u);
+  EXPECT_EQ(tri.to_mesh(mesh.positions).face_count(), 8u);
   EXPECT_EQ(oriented_faces(tri.to_mesh(mesh.positions)), oriented_faces(mesh));
 }
 
@@ -54,7 +54,7 @@ RC_GTEST_PROP(Triangulation, SpatialNumberingKeepsTheSurface, ()) {
   const TriangleMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
                                                   *rc::gen::inRange<std::uint32_t>(0, 300),
                                                   *rc::gen::arbitrary<std::uint64_t>());
-  const Triangulation tri = Triangulation::from_mesh(mesh, Triangulation::Numbering::spatial);
+  const Triangulation tri = testing::from_triangles(mesh, Triangulation::Numbering::spatial);
   RC_ASSERT(tri.check() == "");
   RC_ASSERT(tri.genus() == genus);
   RC_ASSERT(oriented_faces(tri.to_mesh(mesh.positions)) == oriented_faces(mesh));
@@ -69,12 +69,12 @@ TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
   open.triangles.erase(open.triangles.begin() + 3);
   std::string as_given, spatial;
   try {
-    Triangulation::from_mesh(open);
+    testing::from_triangles(open);
   } catch (const MeshError& e) {
     as_given = e.what();
   }
   try {
-    Triangulation::from_mesh(open, Triangulation::Numbering::spatial);
+    testing::from_triangles(open, Triangulation::Numbering::spatial);
   } catch (const MeshError& e) {
     spatial = e.what();
   }
@@ -82,8 +82,7 @@ TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
   EXPECT_EQ(spatial, as_given);
   TriangleMesh out_of_range = testing::tetrahedron();
   out_of_range.triangles[2][1] = 99;
-  EXPECT_THROW(Triangulation::from_mesh(out_of_range, Triangulation::Numbering::spatial),
-               MeshError);
+  EXPECT_THROW(testing::from_triangles(out_of_range, Triangulation::Numbering::spatial), MeshError);
 }
 
 // From the dual: the same surface as from_mesh, numbered spatially, every vertex once.
@@ -93,7 +92,7 @@ RC_GTEST_PROP(Triangulation, FromDualKeepsTheSurface, ()) {
                                                   *rc::gen::inRange<std::uint32_t>(0, 300),
                                                   *rc::gen::arbitrary<std::uint64_t>());
   const Triangulation tri = testing::from_dual_of(mesh);
-  const Triangulation reference = Triangulation::from_mesh(mesh);
+  const Triangulation reference = testing::from_triangles(mesh);
   RC_ASSERT(tri.check() == "");
   RC_ASSERT(tri.genus() == genus);
   RC_ASSERT(tri.live_vertices() == reference.live_vertices());
@@ -272,14 +271,14 @@ TEST(Triangulation, RefusesPinchedVertexAndOpenSurface) {
   // Two tetrahedra sharing vertex 0: closed, but 0's link is two cycles.
   TriangleMesh pinched = testing::mesh_of(
       7, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}});
-  EXPECT_THROW(Triangulation::from_mesh(pinched), MeshError);
+  EXPECT_THROW(testing::from_triangles(pinched), MeshError);
   TriangleMesh open = testing::tetrahedron();
   open.triangles.pop_back();
-  EXPECT_THROW(Triangulation::from_mesh(open), MeshError);
+  EXPECT_THROW(testing::from_triangles(open), MeshError);
 }
 
 TEST(LinkCondition, TetrahedronHasNoContractibleEdge) {
-  const Triangulation tri = Triangulation::from_mesh(testing::tetrahedron());
+  const Triangulation tri = testing::from_triangles(testing::tetrahedron());
   VertexMarks marks(tri.vertex_capacity());
   for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
     EXPECT_FALSE(is_contractible(tri, h, marks)) << "halfedge " << h;
@@ -287,7 +286,7 @@ TEST(LinkCondition, TetrahedronHasNoContractibleEdge) {
 }
 
 TEST(LinkCondition, OctahedronEdgesAreAllContractible) {
-  const Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  const Triangulation tri = testing::from_triangles(testing::octahedron());
   VertexMarks marks(tri.vertex_capacity());
   for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
     EXPECT_TRUE(is_contractible(tri, h, marks)) << "halfedge " << h;
@@ -300,7 +299,7 @@ TEST(LinkCondition, OctahedronEdgesAreAllContractible) {
 }
 
 TEST(LinkCondition, SeparatingThreeCycleBlocksItsEdges) {
-  const Triangulation tri = Triangulation::from_mesh(testing::stacked_tetrahedron());
+  const Triangulation tri = testing::from_triangles(testing::stacked_tetrahedron());
   VertexMarks marks(tri.vertex_capacity());
   const auto on_cycle = [](VertexId v) { return v == 0 || v == 1 || v == 3; };
   for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
@@ -317,10 +316,10 @@ TEST(LinkCondition, SeparatingThreeCycleBlocksItsEdges) {
 }
 
 TEST(LinkCondition, FlippabilityOnTheOctahedron) {
-  const Triangulation tri = Triangulation::from_mesh(testing::octahedron());
+  const Triangulation tri = testing::from_triangles(testing::octahedron());
   // Flipping [0, 2] (faces 0-2-4 and 2-0-5) would join 4 and 5: not yet an edge, degrees 4.
   EXPECT_TRUE(is_flippable(tri, find_halfedge(tri, 0, 2)));
-  const Triangulation tet = Triangulation::from_mesh(testing::tetrahedron());
+  const Triangulation tet = testing::from_triangles(testing::tetrahedron());
   EXPECT_FALSE(is_flippable(tet, 0));  // the apexes are adjacent already
 }
 
@@ -328,7 +327,7 @@ RC_GTEST_PROP(Operators, ContractThenSplitRestoresTheExactTriangulation, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   const Triangulation original =
-      Triangulation::from_mesh(random_closed_surface(genus, 60, 60, seed));
+      testing::from_triangles(random_closed_surface(genus, 60, 60, seed));
   Triangulation tri = original;
   VertexMarks marks(tri.vertex_capacity());
   std::mt19937_64 random(seed);
@@ -354,7 +353,7 @@ RC_GTEST_PROP(Operators, FlipTwiceRestoresTheTriangulation, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   const TriangleMesh mesh = random_closed_surface(genus, 40, 40, seed);
-  const Triangulation original = Triangulation::from_mesh(mesh);
+  const Triangulation original = testing::from_triangles(mesh);
   std::uint32_t flipped = 0;
   for (Halfedge h = 0; h < 2 * original.edge_capacity(); h += 7) {
     if (!is_flippable(original, h)) continue;

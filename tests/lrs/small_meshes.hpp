@@ -3,11 +3,15 @@
 
 #include <algorithm>
 #include <array>
+#include <stdexcept>
+#include <utility>
 #include <vector>
 
+#include "expansion_step.hpp"
 #include "petersen/dualize/dual.hpp"
+#include "petersen/matching/matching.hpp"
 #include "petersen/mesh/mesh.hpp"
-#include "petersen/lrs/triangulation.hpp"
+#include "triangulation.hpp"
 
 namespace petersen::lrs::testing {
 
@@ -32,6 +36,13 @@ inline TriangleMesh octahedron() {
 /// and separates 2 from 4.
 inline TriangleMesh stacked_tetrahedron() {
   return mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}, {1, 3, 4}, {3, 0, 4}});
+}
+
+/// Triangulation::from_mesh on a triangle mesh (the generators' type).
+inline Triangulation from_triangles(
+    const TriangleMesh& mesh,
+    Triangulation::Numbering numbering = Triangulation::Numbering::as_given) {
+  return Triangulation::from_mesh(to_polygon_mesh(mesh), numbering);
 }
 
 /// The mesh's corners, three per triangle, as PolygonMesh keeps them.
@@ -59,6 +70,43 @@ inline std::vector<std::array<VertexId, 3>> oriented_faces(const TriangleMesh& m
   }
   std::sort(faces.begin(), faces.end());
   return faces;
+}
+
+inline std::vector<std::array<VertexId, 3>> oriented_faces(const PolygonMesh& mesh) {
+  return oriented_faces(to_triangle_mesh(mesh));
+}
+
+/// K's dual as a CubicGraph, an oracle for into_dual_rows: node f is to_mesh's triangle f, dual
+/// edge e crosses edge e, and node f's k-th edge is edge k of to_mesh's triangle f. Every face
+/// alive.
+inline CubicGraph dual_graph_of(const Triangulation& tri) {
+  HugeVector<EdgeId> node_edges(3 * std::size_t{tri.live_faces()});
+  HugeVector<NodeId> edge_ends(2 * std::size_t{tri.edge_capacity()});
+  FaceId f = 0;
+  for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
+    if (!tri.smallest_of_face(h)) continue;
+    const Halfedge n = tri.next(h), p = tri.next(n);
+    for (const auto [k, side] : {std::pair{0, h}, std::pair{1, n}, std::pair{2, p}}) {
+      node_edges[3 * std::size_t{f} + k] = Triangulation::edge(side);
+      edge_ends[side] = f;
+    }
+    ++f;
+  }
+  return CubicGraph::from_incidence(std::move(node_edges), std::move(edge_ends));
+}
+
+/// M (the expansion's matched edges) as a matching of dual_graph_of(K), whose edge ids are K's.
+inline Matching matching_of(const CubicGraph& dual, const ExpansionResult& expansion) {
+  Matching matching(dual.node_count());
+  for (EdgeId e = 0; e < dual.edge_count(); ++e) {
+    if (!(expansion.edge_state[e] & kMatched)) continue;
+    const auto [a, b] = dual.endpoints(e);
+    if (matching.is_matched(a) || matching.is_matched(b)) {
+      throw std::logic_error("two edges of M pair one face");
+    }
+    matching.match(dual, e);
+  }
+  return matching;
 }
 
 /// Identical arrays for every live element (ids, origins, next, faces, degrees, liveness).

@@ -11,16 +11,16 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen::lrs {
 
 /// Halfedge ids: edge e is halfedges 2e and 2e+1, so the twin of h is h ^ 1. Ids of vertices,
 /// edges and halfedges never change; contraction kills elements and a vertex split revives exactly
-/// those, an edge flip keeps every id. Faces are the next cycles and have no stored id: to_mesh,
-/// dual_graph and into_dual_rows number them in order of their smallest halfedge.
+/// those, an edge flip keeps every id. Faces are the next cycles and have no stored id: to_mesh
+/// and into_dual_rows number them in order of their smallest halfedge.
 using Halfedge = std::uint32_t;
 inline constexpr Halfedge kNoHalfedge = 0xFFFFFFFFu;
 
@@ -35,8 +35,8 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion);
 
 /// A simplicial triangulation of a closed, connected, orientable surface. Each halfedge stores its
 /// origin and the next halfedge of its face (counter-clockwise); each vertex one outgoing halfedge
-/// and its degree. No per-halfedge face id (12 bytes per face, which held the peak of quad's lrs
-/// at the end of the expansion): nothing in contraction or expansion reads one. Dead elements
+/// and its degree. No per-halfedge face id (12 bytes per face at lrs's peak, the end of the
+/// expansion): nothing in contraction or expansion reads one. Dead elements
 /// (removed by contract) keep their last values, which is what split reads to revive them.
 class Triangulation {
  public:
@@ -58,11 +58,12 @@ class Triangulation {
     spatial,
   };
 
-  /// Builds the triangulation of `mesh`, edges numbered as the dual graph's (build_dual) of the
-  /// mesh as numbered. Throws MeshError naming the element (by the input's ids) if the mesh is
-  /// not a closed, connected, orientable manifold surface (pinched vertices and several components
-  /// are refused). Unreferenced vertices are dead from the start. O(F log d).
-  static Triangulation from_mesh(const TriangleMesh& mesh,
+  /// Builds the triangulation of `mesh` (every face a triangle), edges numbered as the pairable
+  /// graph's of the mesh as numbered, by (min, max) vertex, side 0 in the triangle with the smaller
+  /// corner slot. Throws MeshError naming the element (by the input's ids) if the mesh is not a
+  /// closed, connected, orientable manifold surface of triangles (pinched vertices and several
+  /// components are refused). Unreferenced vertices are dead from the start. O(F log d).
+  static Triangulation from_mesh(const PolygonMesh& mesh,
                                  Numbering numbering = Numbering::as_given);
 
   /// Builds the triangulation of a closed, connected, consistently oriented triangle mesh from its
@@ -138,19 +139,11 @@ class Triangulation {
         (2 - std::int64_t{live_vertices_} + live_edges_ - std::int64_t{live_faces_}) / 2);
   }
 
-  /// The live faces as a triangle mesh over `positions` (the input's), in order of their smallest
-  /// halfedge, with the input's vertex ids; each triangle starts at the smallest halfedge id of its
-  /// face, so edge k of the triangle is that halfedge's k-th successor. Dead vertices stay in
-  /// `positions`, unreferenced. O(V + F).
-  TriangleMesh to_mesh(const Positions& positions) const;
-
-  /// The dual graph when every face is alive (the triangulation K after expansion): node f is
-  /// to_mesh's triangle f, dual edge e crosses edge e, and node f's k-th edge is edge k of
-  /// to_mesh's triangle f. Throws std::logic_error if a face is dead. O(F).
-  CubicGraph dual_graph() const&;
-  /// The same, freeing the per-vertex and per-edge arrays first: the triangulation is left with
-  /// its links (origin, next, apex, rotate_cw) and input_vertex only.
-  CubicGraph dual_graph() &&;
+  /// The live faces as a mesh of triangles over `positions` (the input's), in order of their
+  /// smallest halfedge, with the input's vertex ids; each triangle starts at the smallest halfedge
+  /// id of its face, so edge k of the triangle is that halfedge's k-th successor. Dead vertices
+  /// stay in `positions`, unreferenced. O(V + F).
+  PolygonMesh to_mesh(const Positions& positions) const;
 
   /// Checks the structure: next cycles of length 3, origins consistent with
   /// twins, out[] outgoing, degrees equal to rotation lengths, live counts, no vertex pair joined
@@ -163,10 +156,13 @@ class Triangulation {
   friend void flip(Triangulation&, Halfedge);
   friend DualRows into_dual_rows(Triangulation&&, ExpansionResult&&);
 
+  // from_dual's last two steps: the links from each corner's halfedge (the slots, taken over) with
+  // `out`, then the vertices renumbered in the links with their degrees, and the live counts.
+  void link_halfedges(std::span<const VertexId> corners, HugeVector<Halfedge> halfedge_of_corner,
+                      const std::function<void()>& corners_read);
+  void count_from_links(std::uint32_t edges, std::uint32_t faces);
   // from_mesh after the surface check.
-  static Triangulation build(const TriangleMesh& mesh);
-  // dual_graph once the faces are known to be alive.
-  CubicGraph dual_graph_of_live() const;
+  static Triangulation build(const PolygonMesh& mesh);
 
   // Per halfedge, origin and next side by side: a twin pair fills 16 bytes of one cache line.
   struct Link {
@@ -175,7 +171,7 @@ class Triangulation {
   };
   // The links in an uninitialised array (copied whole with the triangulation): from_dual fills it
   // a half at a time, and into_dual_rows gives its second half back early, so that neither phase
-  // holds all of it beside its other arrays (quad's lrs, issue 15).
+  // holds all of it beside its other arrays.
   class Links {
    public:
     Links() = default;

@@ -4,8 +4,8 @@
 
 #include <vector>
 
+#include "edge_contraction.hpp"
 #include "petersen/graph/huge_pages.hpp"
-#include "petersen/lrs/edge_contraction.hpp"
 
 namespace petersen::lrs {
 

@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "edge_contraction.hpp"
 #include "petersen/graph/huge_pages.hpp"
-#include "petersen/lrs/edge_contraction.hpp"
 #include "petersen/matching/matching.hpp"
 
 namespace petersen::lrs {
@@ -36,9 +36,5 @@ struct ExpansionResult {
 /// 3.3). Throws std::logic_error if the paper's invariant fails (a split edge flipped, or a
 /// degree-3 vertex whose side holds anything but the flip of [x, y]). O(E).
 ExpansionResult expand_and_match(Triangulation& tri, std::span<const ContractionRecord> stack);
-
-/// M as a matching of K's dual (`dual` = tri.dual_graph(), whose edge ids are K's). Throws
-/// std::logic_error if two edges of M share a face. O(E).
-Matching matching_of(const CubicGraph& dual, const ExpansionResult& expansion);
 
 }  // namespace petersen::lrs

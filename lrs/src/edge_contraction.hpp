@@ -3,7 +3,7 @@
 
 #include <cstdint>
 
-#include "petersen/lrs/triangulation.hpp"
+#include "triangulation.hpp"
 
 namespace petersen::lrs {
 

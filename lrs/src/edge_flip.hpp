@@ -1,7 +1,7 @@
 #pragma once
 // Edge flip (paper Definition 3.3) and its validity test.
 
-#include "petersen/lrs/triangulation.hpp"
+#include "triangulation.hpp"
 
 namespace petersen::lrs {
 
