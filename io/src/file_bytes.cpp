@@ -15,14 +15,14 @@
 #include <random>
 #include <system_error>
 
-#include "petersen/mesh/mesh.hpp"
+#include "petersen/io/file_error.hpp"
 
 namespace petersen {
 
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int error) {
-  throw MeshError(path + ": " + what + ": " + std::generic_category().message(error));
+  throw FileError(path, 0, what + ": " + std::generic_category().message(error));
 }
 
 // Closes the descriptor on every way out.
@@ -40,7 +40,7 @@ FileBytes allocate(const std::string& path, std::size_t size) {
   try {
     return {make_huge_array<char>(size), 0, {}};
   } catch (const std::bad_alloc&) {
-    throw MeshError(path + ": cannot allocate " + std::to_string(size) + " bytes to read it");
+    throw FileError(path, 0, "cannot allocate " + std::to_string(size) + " bytes to read it");
   }
 }
 
@@ -130,14 +130,15 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
   FileBytes out = allocate(path, capacity);
   std::unique_ptr<libdeflate_decompressor, DecompressorFree> decompressor(
       libdeflate_alloc_decompressor());
-  if (!decompressor) throw MeshError(path + ": cannot allocate a gzip decompressor");
+  if (!decompressor) throw FileError(path, 0, "cannot allocate a gzip decompressor");
   std::size_t pos = 0;
   while (pos < in.size()) {
     if (pos > 0 && !is_gzip(in.substr(pos))) {
       // gzip and zlib accept zero padding after the last member; anything else is damage.
       if (std::all_of(in.begin() + pos, in.end(), [](char c) { return c == 0; })) break;
-      throw MeshError(path + ": " + std::to_string(in.size() - pos) +
-                      " bytes after the gzip data, from byte " + std::to_string(pos));
+      throw FileError(path, 0,
+                      std::to_string(in.size() - pos) + " bytes after the gzip data, from byte " +
+                          std::to_string(pos));
     }
     std::size_t used = 0, written = 0;
     const libdeflate_result result = libdeflate_gzip_decompress_ex(
@@ -146,18 +147,19 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
     if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
       // The member is decompressed again into a larger buffer: doubling bounds the waste.
       if (capacity == limit) {
-        throw MeshError(path + ": decompresses to more than " + std::to_string(limit) + " bytes (" +
-                        (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
-                                                               : "the machine's memory") +
-                        "): corrupt or not a mesh");
+        throw FileError(path, 0,
+                        "decompresses to more than " + std::to_string(limit) + " bytes (" +
+                            (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
+                                                                   : "the machine's memory") +
+                            "): corrupt or not a mesh");
       }
       capacity = std::min(std::max<std::size_t>(2 * capacity, 1 << 16), limit);
       out = grown(path, out, capacity);
       continue;
     }
     if (result != LIBDEFLATE_SUCCESS) {
-      throw MeshError(path + ": corrupt gzip data in the member starting at byte " +
-                      std::to_string(pos));
+      throw FileError(path, 0,
+                      "corrupt gzip data in the member starting at byte " + std::to_string(pos));
     }
     pos += used;
     out.size += written;
@@ -293,7 +295,7 @@ constexpr int kGzipLevel = 6;
 void write_gzip(TemporaryFile& file, const std::string& path, std::string_view bytes) {
   std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(
       libdeflate_alloc_compressor(kGzipLevel));
-  if (!compressor) throw MeshError(path + ": cannot allocate a gzip compressor");
+  if (!compressor) throw FileError(path, 0, "cannot allocate a gzip compressor");
   const std::size_t chunk = std::min(bytes.size(), kGzipMemberBytes);
   const std::size_t bound = libdeflate_gzip_compress_bound(compressor.get(), chunk);
   const HugeArray<char> out = make_huge_array<char>(bound);
@@ -301,7 +303,7 @@ void write_gzip(TemporaryFile& file, const std::string& path, std::string_view b
     const std::string_view member = bytes.substr(0, chunk);
     const std::size_t size =
         libdeflate_gzip_compress(compressor.get(), member.data(), member.size(), out.get(), bound);
-    if (size == 0) throw MeshError(path + ": gzip compression failed");
+    if (size == 0) throw FileError(path, 0, "gzip compression failed");
     file.write({out.get(), size});
     bytes.remove_prefix(member.size());
   } while (!bytes.empty());

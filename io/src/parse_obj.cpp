@@ -273,7 +273,7 @@ PolygonMesh parse_obj(std::string_view bytes, const std::string& source, FaceKin
       statement(token, tokens);
     }
   }
-  if (!any_content) throw MeshError(source + ": empty file");
+  if (!any_content) throw FileError(source, 0, "empty file");
   tally.report(dropped);
   if (!attributes.vertex_properties.empty() && uncoloured_vertices > 0) {
     dropped.push_back(std::to_string(uncoloured_vertices) +

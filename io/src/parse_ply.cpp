@@ -195,7 +195,7 @@ class PlyParser {
  private:
   void read_header() {
     std::string_view line, token;
-    if (!lines_.next(line)) throw MeshError(source_ + ": empty file");
+    if (!lines_.next(line)) throw FileError(source_, 0, "empty file");
     if (line != "ply") at_.fail("not a PLY file: the first line is not 'ply'");
     bool have_format = false;
     for (;;) {
@@ -331,7 +331,7 @@ class PlyParser {
   }
 
   [[noreturn]] void fail_header(const Element& element, const std::string& what) const {
-    throw MeshError(source_ + ":" + std::to_string(element.line) + ": " + what);
+    throw FileError(source_, element.line, what);
   }
 
   // Refuses counts the rest of the file cannot hold before anything is reserved: a binary record
@@ -616,7 +616,7 @@ class PlyParser {
     BinaryCursor in{bytes_, lines_.pos, encoding_ == Encoding::big};
     std::uint64_t i = 0;
     auto fail = [&](const std::string& what) {
-      throw MeshError(source_ + ": " + what + " (byte " + std::to_string(in.pos) + ")");
+      throw FileError(source_, 0, what + " (byte " + std::to_string(in.pos) + ")");
     };
     auto need = [&](std::size_t n) {
       if (!in.has(n)) {

@@ -129,15 +129,16 @@ std::vector<PropertyColumn> vertex_columns_of(const PolygonMesh& mesh,
 // A property value in text: a whole number for an integer type, a real one otherwise (see
 // Buffer::real), as the OFF reader tells them apart.
 // A binary PLY may hold NaN or infinity in a property; no text reader takes it back.
-void check_finite(const PropertyColumn& column, double value) {
+void check_finite(const std::string& path, const PropertyColumn& column, double value) {
   if (!std::isfinite(value)) {
-    throw MeshError("property '" + column.name + "' has a value that is not finite (" +
-                    std::to_string(value) + "); a text format cannot hold it");
+    throw FileError(path, 0,
+                    "property '" + column.name + "' has a value that is not finite (" +
+                        std::to_string(value) + "); a text format cannot hold it");
   }
 }
 
-void put_value(Buffer& out, const PropertyColumn& column, double value) {
-  check_finite(column, value);
+void put_value(Buffer& out, const std::string& path, const PropertyColumn& column, double value) {
+  check_finite(path, column, value);
   if (column.type == ScalarType::float32 || column.type == ScalarType::float64) {
     out.real(value);
   } else {
@@ -147,7 +148,8 @@ void put_value(Buffer& out, const PropertyColumn& column, double value) {
 
 }  // namespace
 
-Buffer off_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped) {
+Buffer off_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped) {
   const MeshAttributes& a = mesh.attributes;
   const std::vector<PropertyColumn> corner_normal =
       vertex_columns_of(mesh, a.corner_normal, a.normals, {"nx", "ny", "nz"});
@@ -193,7 +195,7 @@ Buffer off_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     }
     for (const PropertyColumn* column : vertex_columns) {
       out.put(' ');
-      put_value(out, *column, column->values[v]);
+      put_value(out, path, *column, column->values[v]);
     }
     out.put('\n');
   }
@@ -205,7 +207,7 @@ Buffer off_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     }
     for (const PropertyColumn* column : face_colour) {
       out.put(' ');
-      put_value(out, *column, column->values[f]);
+      put_value(out, path, *column, column->values[f]);
     }
     out.put('\n');
   }
@@ -216,18 +218,21 @@ namespace {
 
 // A name as an OBJ statement's argument: the reader trims the line and cuts it at '#', and reads
 // a bare statement as no name, so only names it reads back whole can be written.
-void check_obj_name(const std::string& name, const char* what) {
+void check_obj_name(const std::string& path, const std::string& name, const char* what) {
   const bool ok = !name.empty() && !text::is_space(name.front()) && !text::is_space(name.back()) &&
                   name.find_first_of("#\n\r") == std::string::npos;
   if (!ok) {
-    throw MeshError(std::string(what) + " name '" + name.substr(0, 40) +
-                    "' cannot be written in OBJ (empty, '#', a line break, or spaces at its ends)");
+    throw FileError(
+        path, 0,
+        std::string(what) + " name '" + name.substr(0, 40) +
+            "' cannot be written in OBJ (empty, '#', a line break, or spaces at its ends)");
   }
 }
 
 }  // namespace
 
-Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped) {
+Buffer obj_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped) {
   const MeshAttributes& a = mesh.attributes;
   // OBJ colours are reals from 0 to 1; a byte colour (PLY's usual uchar) is scaled to that.
   const std::vector<const PropertyColumn*> colour = colour_of(a.vertex_properties, false);
@@ -254,7 +259,7 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
                                     {&a.object_names, "object"},
                                     {&a.material_libraries, "material library"}}) {
     for (const std::string& name : *names) {
-      check_obj_name(name, what);
+      check_obj_name(path, name, what);
       longest_name = std::max(longest_name, name.size());
     }
   }
@@ -277,7 +282,7 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     for (const PropertyColumn* column : colour) {
       out.put(' ');
       const double value = column->values[v];
-      check_finite(*column, value);
+      check_finite(path, *column, value);
       out.number(column->type == ScalarType::uint8 ? value / 255 : value);
     }
     out.put('\n');
@@ -288,8 +293,9 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     for (int k = 0; k < components; ++k) {
       if (k > 0) out.put(' ');
       if (!std::isfinite(value[k])) {
-        throw MeshError(std::string("a texture coordinate or normal is not finite (") +
-                        std::to_string(value[k]) + "); OBJ cannot hold it");
+        throw FileError(path, 0,
+                        "a texture coordinate or normal is not finite (" +
+                            std::to_string(value[k]) + "); OBJ cannot hold it");
       }
       out.number(value[k]);
     }
@@ -383,52 +389,56 @@ std::size_t ply_size_of(ScalarType type) {
 }
 
 template <typename T>
-void put_as(Buffer& out, double value, const PropertyColumn& column, std::size_t index) {
+void put_as(Buffer& out, const std::string& path, double value, const PropertyColumn& column,
+            std::size_t index) {
   if constexpr (std::is_integral_v<T>) {
     if (!(value >= double(std::numeric_limits<T>::min()) &&
           value <= double(std::numeric_limits<T>::max()) && value == std::trunc(value))) {
-      throw MeshError("property '" + column.name + "' of element " + std::to_string(index) + ": " +
-                      std::to_string(value) + " does not fit its type " +
-                      ply_type_name(column.type));
+      throw FileError(path, 0,
+                      "property '" + column.name + "' of element " + std::to_string(index) + ": " +
+                          std::to_string(value) + " does not fit its type " +
+                          ply_type_name(column.type));
     }
   }
   const T typed = static_cast<T>(value);
   out.binary(&typed, 1);
 }
 
-// A value of the column in its declared type; throws MeshError for a value the type cannot hold.
-void put_typed(Buffer& out, const PropertyColumn& column, std::size_t index) {
+// A value of the column in its declared type; throws FileError for a value the type cannot hold.
+void put_typed(Buffer& out, const std::string& path, const PropertyColumn& column,
+               std::size_t index) {
   const double value = column.values[index];
   switch (column.type) {
     case ScalarType::int8:
-      return put_as<std::int8_t>(out, value, column, index);
+      return put_as<std::int8_t>(out, path, value, column, index);
     case ScalarType::uint8:
-      return put_as<std::uint8_t>(out, value, column, index);
+      return put_as<std::uint8_t>(out, path, value, column, index);
     case ScalarType::int16:
-      return put_as<std::int16_t>(out, value, column, index);
+      return put_as<std::int16_t>(out, path, value, column, index);
     case ScalarType::uint16:
-      return put_as<std::uint16_t>(out, value, column, index);
+      return put_as<std::uint16_t>(out, path, value, column, index);
     case ScalarType::int32:
-      return put_as<std::int32_t>(out, value, column, index);
+      return put_as<std::int32_t>(out, path, value, column, index);
     case ScalarType::uint32:
-      return put_as<std::uint32_t>(out, value, column, index);
+      return put_as<std::uint32_t>(out, path, value, column, index);
     case ScalarType::float32:
-      return put_as<float>(out, value, column, index);
+      return put_as<float>(out, path, value, column, index);
     case ScalarType::float64:
-      return put_as<double>(out, value, column, index);
+      return put_as<double>(out, path, value, column, index);
   }
 }
 
 // A property name in a PLY header: one token.
-void check_ply_name(const std::string& name) {
+void check_ply_name(const std::string& path, const std::string& name) {
   if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos) {
-    throw MeshError("property name '" + name.substr(0, 40) + "' cannot be written in PLY");
+    throw FileError(path, 0, "property name '" + name.substr(0, 40) + "' cannot be written in PLY");
   }
 }
 
 }  // namespace
 
-Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped) {
+Buffer ply_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped) {
   const MeshAttributes& a = mesh.attributes;
   const std::vector<PropertyColumn> corner_normal =
       vertex_columns_of(mesh, a.corner_normal, a.normals, {"nx", "ny", "nz"});
@@ -478,7 +488,7 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
   }
   if (any_w) dropped.push_back("third texture coordinates (w): PLY's texcoord list holds u v");
   for (const auto* columns : {&a.vertex_properties, &a.face_properties}) {
-    for (const PropertyColumn& column : *columns) check_ply_name(column.name);
+    for (const PropertyColumn& column : *columns) check_ply_name(path, column.name);
   }
 
   const bool wide = max_arity > 255, wide_texcoords = 2 * max_arity > 255;
@@ -524,7 +534,7 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     } else {
       out.binary(mesh.positions[v].data(), 3);
     }
-    for (const PropertyColumn* column : vertex_columns) put_typed(out, *column, v);
+    for (const PropertyColumn* column : vertex_columns) put_typed(out, path, *column, v);
   }
   auto put_count = [&](std::uint32_t count, bool wide_count) {
     if (wide_count) {
@@ -537,7 +547,7 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dr
     const std::span<const VertexId> corners = mesh.face(f);
     put_count(static_cast<std::uint32_t>(corners.size()), wide);
     out.binary(corners.data(), corners.size());
-    for (const PropertyColumn& column : a.face_properties) put_typed(out, column, f);
+    for (const PropertyColumn& column : a.face_properties) put_typed(out, path, column, f);
     if (!texcoords) continue;
     if (!face_texcoords(f)) {
       put_count(0, wide_texcoords);
