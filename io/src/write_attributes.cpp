@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "ply_types.hpp"
 #include "text_scan.hpp"
 #include "write_buffer.hpp"
 
@@ -377,17 +378,6 @@ Buffer obj_with_attributes(const PolygonMesh& mesh, const std::string& path,
 
 namespace {
 
-const char* ply_type_name(ScalarType type) {
-  static constexpr const char* names[] = {"char", "uchar", "short", "ushort",
-                                          "int",  "uint",  "float", "double"};
-  return names[static_cast<int>(type)];
-}
-
-std::size_t ply_size_of(ScalarType type) {
-  static constexpr std::size_t sizes[] = {1, 1, 2, 2, 4, 4, 4, 8};
-  return sizes[static_cast<int>(type)];
-}
-
 template <typename T>
 void put_as(Buffer& out, const std::string& path, double value, const PropertyColumn& column,
             std::size_t index) {
@@ -397,7 +387,7 @@ void put_as(Buffer& out, const std::string& path, double value, const PropertyCo
       throw FileError(path, 0,
                       "property '" + column.name + "' of element " + std::to_string(index) + ": " +
                           std::to_string(value) + " does not fit its type " +
-                          ply_type_name(column.type));
+                          ply::type_name(column.type));
     }
   }
   const T typed = static_cast<T>(value);
@@ -497,31 +487,31 @@ Buffer ply_with_attributes(const PolygonMesh& mesh, const std::string& path,
   const ScalarType texcoord_type = all_float ? ScalarType::float32 : ScalarType::float64;
   std::string header = "ply\nformat binary_little_endian 1.0\ncomment written by petersen\n";
   header += "element vertex " + std::to_string(mesh.positions.size()) + "\n";
-  std::size_t vertex_bytes = 3 * ply_size_of(position_type);
+  std::size_t vertex_bytes = 3 * ply::size_of(position_type);
   for (const char* axis : {"x", "y", "z"}) {
-    header += std::string("property ") + ply_type_name(position_type) + " " + axis + "\n";
+    header += std::string("property ") + ply::type_name(position_type) + " " + axis + "\n";
   }
   for (const PropertyColumn* column : vertex_columns) {
-    header += std::string("property ") + ply_type_name(column->type) + " " + column->name + "\n";
-    vertex_bytes += ply_size_of(column->type);
+    header += std::string("property ") + ply::type_name(column->type) + " " + column->name + "\n";
+    vertex_bytes += ply::size_of(column->type);
   }
   header += "element face " + std::to_string(faces) + "\nproperty list " +
             (wide ? "uint" : "uchar") + " uint vertex_indices\n";
   std::size_t face_bytes = 0;
   for (const PropertyColumn& column : a.face_properties) {
-    header += std::string("property ") + ply_type_name(column.type) + " " + column.name + "\n";
-    face_bytes += ply_size_of(column.type);
+    header += std::string("property ") + ply::type_name(column.type) + " " + column.name + "\n";
+    face_bytes += ply::size_of(column.type);
   }
   if (texcoords) {
     header += std::string("property list ") + (wide_texcoords ? "uint " : "uchar ") +
-              ply_type_name(texcoord_type) + " texcoord\n";
+              ply::type_name(texcoord_type) + " texcoord\n";
   }
   header += "end_header\n";
   const std::size_t count_bytes = wide ? 4 : 1, texcoord_count_bytes = wide_texcoords ? 4 : 1;
   std::size_t texcoord_bytes = 0;
   if (texcoords) {
     texcoord_bytes =
-        faces * texcoord_count_bytes + 2 * mesh.corners.size() * ply_size_of(texcoord_type);
+        faces * texcoord_count_bytes + 2 * mesh.corners.size() * ply::size_of(texcoord_type);
   }
   Buffer out(header.size() + mesh.positions.size() * vertex_bytes +
              faces * (count_bytes + face_bytes) + mesh.corners.size() * 4 + texcoord_bytes);
