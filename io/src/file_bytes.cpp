@@ -53,11 +53,10 @@ FileBytes grown(const std::string& path, const FileBytes& bytes, std::size_t cap
 }
 
 // The bytes as they are on disk. A regular file's pages are mapped from the page cache rather
-// than read into a buffer: a fresh buffer costs a page fault per page, and on this development VM
-// (Firecracker, free page reporting) fresh memory is filled at 0.2-0.3 GB/s, so reading the
-// 2.5 GB 10^8-triangle plate took 5.7-6.5 s against 0.4-1.0 s to map and scan it (a standalone
-// test, page cache warm; bench/RESULTS.md, stop 16). Read ahead in full (MAP_POPULATE): the
-// parsers read every byte once, in order.
+// than read into a buffer: a fresh buffer costs a page fault per page, and where the host fills
+// fresh memory slowly (a virtual machine with free page reporting: 0.2-0.3 GB/s) reading a
+// 2.5 GB file into one takes several times as long as mapping and scanning it. Read ahead in
+// full (MAP_POPULATE): the parsers read every byte once, in order.
 FileBytes read_raw(const std::string& path) {
   Descriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) fail(path, "cannot open for reading", errno);
@@ -111,8 +110,8 @@ struct CompressorFree {
 // byte; more output than that from a stream means a corrupt or hostile file.
 constexpr std::size_t kDeflateMaxRatio = 1032;
 
-// libdeflate decompresses whole members into a buffer of known size; measured on armadillo-sub2
-// (20 MB gzip, 26 MB PLY) it takes 0.10 s against zlib's gzread 0.21 s.
+// libdeflate decompresses whole members into a buffer of known size, in about half the time of
+// zlib's gzread (armadillo-sub2: 20 MB gzip, 26 MB PLY).
 FileBytes gunzip(const std::string& path, std::string_view in) {
   const std::size_t limit = std::min(in.size() * kDeflateMaxRatio, physical_memory());
   // The last member's trailer holds its size mod 2^32 (exact for the usual single member); below
@@ -201,10 +200,10 @@ class TemporaryFile {
 
   // A large write whose bytes start on a block boundary in memory and in the file goes past the
   // page cache (O_DIRECT), all but its last partial block: through the cache, each page of the
-  // file is a fresh page of memory, and on this development VM (free page reporting) those are
-  // filled at 0.2-0.3 GB/s. 2 GB written and flushed: 5.3-8.0 s through the cache, 1.3-2.0 s
-  // direct (a standalone test; bench/RESULTS.md, stop 16). Where the file system refuses direct
-  // writes, or the device wants larger blocks, the bytes go through the cache as before.
+  // file is a fresh page of memory, which a host with free page reporting fills at 0.2-0.3 GB/s,
+  // so that 2 GB written and flushed through the cache take about four times as long as direct.
+  // Where the file system refuses direct writes, or the device wants larger blocks, the bytes go
+  // through the cache.
   void write(std::string_view bytes) {
     if (bytes.size() >= kDirectMinBytes && offset_ % kDirectBlock == 0 &&
         reinterpret_cast<std::uintptr_t>(bytes.data()) % kDirectBlock == 0) {
@@ -288,8 +287,8 @@ class TemporaryFile {
 // small and the file stays one standard gzip stream for every reader (RFC 1952 members).
 constexpr std::size_t kGzipMemberBytes = std::size_t{64} << 20;
 
-// Level 6, zlib's default: libdeflate at 6 took 0.67-0.86 s on armadillo-sub2's 26 MB PLY
-// against 4.7 s for zlib at 6, and its output was smaller.
+// Level 6, zlib's default: libdeflate at 6 compresses a large PLY several times faster than zlib
+// at 6, and smaller.
 constexpr int kGzipLevel = 6;
 
 void write_gzip(TemporaryFile& file, const std::string& path, std::string_view bytes) {
