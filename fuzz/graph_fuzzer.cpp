@@ -1,5 +1,5 @@
 // libFuzzer target for one graph-file reader (PETERSEN_FUZZ_GRAPH_FORMAT: dimacs or edges). Bad
-// bytes must give a GraphError; any other exception, a crash, a sanitizer report, a hang or a
+// bytes must give a FileError; any other exception, a crash, a sanitizer report, a hang or a
 // huge allocation is a finding. What parses must be a graph its users can index: every end below
 // the node count, a cost per edge or none, each within the bound, and no more isolated nodes than
 // the reader allows.
@@ -23,7 +23,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GraphFile graph;
   try {
     graph = parse_graph(bytes, kFormat, "fuzz");
-  } catch (const GraphError&) {
+  } catch (const FileError&) {
     return 0;
   }
   for (const auto& [a, b] : graph.edges) REQUIRE(a < graph.node_count && b < graph.node_count);

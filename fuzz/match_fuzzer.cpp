@@ -50,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   GraphFile graph;
   try {
     graph = parse_graph(bytes, GraphFormat::edges, "fuzz");
-  } catch (const GraphError&) {
+  } catch (const FileError&) {
     return 0;
   }
   // The reader allows 2^24 isolated nodes past what the edges touch; a matching of those is

@@ -1,5 +1,5 @@
 // libFuzzer target for one mesh reader (PETERSEN_FUZZ_FORMAT: obj, off or ply). Bad bytes must
-// give a MeshError; any other exception, a crash, a sanitizer report, a hang or a huge
+// give a FileError; any other exception, a crash, a sanitizer report, a hang or a huge
 // allocation is a finding. What parses must be a well-formed polygon mesh with consistent
 // attributes, and the triangle reader must agree with the polygon reader on the same bytes.
 
@@ -37,7 +37,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     mesh = parse_mesh(bytes, kFormat, "fuzz");
     parsed = true;
-  } catch (const MeshError&) {
+  } catch (const FileError&) {
   }
   if (parsed) {
     REQUIRE(mesh.face_count() > 0);
@@ -63,7 +63,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     const TriangleMesh triangles = parse_triangle_mesh(bytes, kFormat, "fuzz");
     REQUIRE(parsed && all_triangles && same_triangles(mesh, triangles));
-  } catch (const MeshError&) {
+  } catch (const FileError&) {
     REQUIRE(!parsed || !all_triangles);
   }
   return 0;

@@ -70,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   PolygonMesh mesh;
   try {
     mesh = parse_mesh(bytes, kFormat, "fuzz");
-  } catch (const MeshError&) {
+  } catch (const FileError&) {
     return 0;
   }
   const QuadOptions options = options_from(data[size - 1]);
@@ -124,7 +124,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   std::vector<std::string> dropped;
   try {
     dropped = write_mesh(path, result.mesh);
-  } catch (const MeshError&) {
+  } catch (const FileError&) {
     return 0;
   }
   REQUIRE(!path.ends_with(kOwnExtension) || dropped.empty());

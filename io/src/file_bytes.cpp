@@ -15,14 +15,14 @@
 #include <random>
 #include <system_error>
 
-#include "petersen/mesh/mesh.hpp"
+#include "petersen/io/file_error.hpp"
 
 namespace petersen {
 
 namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what, int error) {
-  throw MeshError(path + ": " + what + ": " + std::generic_category().message(error));
+  throw FileError(path, 0, what + ": " + std::generic_category().message(error));
 }
 
 // Closes the descriptor on every way out.
@@ -40,7 +40,7 @@ FileBytes allocate(const std::string& path, std::size_t size) {
   try {
     return {make_huge_array<char>(size), 0, {}};
   } catch (const std::bad_alloc&) {
-    throw MeshError(path + ": cannot allocate " + std::to_string(size) + " bytes to read it");
+    throw FileError(path, 0, "cannot allocate " + std::to_string(size) + " bytes to read it");
   }
 }
 
@@ -53,11 +53,10 @@ FileBytes grown(const std::string& path, const FileBytes& bytes, std::size_t cap
 }
 
 // The bytes as they are on disk. A regular file's pages are mapped from the page cache rather
-// than read into a buffer: a fresh buffer costs a page fault per page, and on this development VM
-// (Firecracker, free page reporting) fresh memory is filled at 0.2-0.3 GB/s, so reading the
-// 2.5 GB 10^8-triangle plate took 5.7-6.5 s against 0.4-1.0 s to map and scan it (a standalone
-// test, page cache warm; bench/RESULTS.md, stop 16). Read ahead in full (MAP_POPULATE): the
-// parsers read every byte once, in order.
+// than read into a buffer: a fresh buffer costs a page fault per page, and where the host fills
+// fresh memory slowly (a virtual machine with free page reporting: 0.2-0.3 GB/s) reading a
+// 2.5 GB file into one takes several times as long as mapping and scanning it. Read ahead in
+// full (MAP_POPULATE): the parsers read every byte once, in order.
 FileBytes read_raw(const std::string& path) {
   Descriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) fail(path, "cannot open for reading", errno);
@@ -111,8 +110,8 @@ struct CompressorFree {
 // byte; more output than that from a stream means a corrupt or hostile file.
 constexpr std::size_t kDeflateMaxRatio = 1032;
 
-// libdeflate decompresses whole members into a buffer of known size; measured on armadillo-sub2
-// (20 MB gzip, 26 MB PLY) it takes 0.10 s against zlib's gzread 0.21 s.
+// libdeflate decompresses whole members into a buffer of known size, in about half the time of
+// zlib's gzread (armadillo-sub2: 20 MB gzip, 26 MB PLY).
 FileBytes gunzip(const std::string& path, std::string_view in) {
   const std::size_t limit = std::min(in.size() * kDeflateMaxRatio, physical_memory());
   // The last member's trailer holds its size mod 2^32 (exact for the usual single member); below
@@ -130,14 +129,15 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
   FileBytes out = allocate(path, capacity);
   std::unique_ptr<libdeflate_decompressor, DecompressorFree> decompressor(
       libdeflate_alloc_decompressor());
-  if (!decompressor) throw MeshError(path + ": cannot allocate a gzip decompressor");
+  if (!decompressor) throw FileError(path, 0, "cannot allocate a gzip decompressor");
   std::size_t pos = 0;
   while (pos < in.size()) {
     if (pos > 0 && !is_gzip(in.substr(pos))) {
       // gzip and zlib accept zero padding after the last member; anything else is damage.
       if (std::all_of(in.begin() + pos, in.end(), [](char c) { return c == 0; })) break;
-      throw MeshError(path + ": " + std::to_string(in.size() - pos) +
-                      " bytes after the gzip data, from byte " + std::to_string(pos));
+      throw FileError(path, 0,
+                      std::to_string(in.size() - pos) + " bytes after the gzip data, from byte " +
+                          std::to_string(pos));
     }
     std::size_t used = 0, written = 0;
     const libdeflate_result result = libdeflate_gzip_decompress_ex(
@@ -146,18 +146,19 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
     if (result == LIBDEFLATE_INSUFFICIENT_SPACE) {
       // The member is decompressed again into a larger buffer: doubling bounds the waste.
       if (capacity == limit) {
-        throw MeshError(path + ": decompresses to more than " + std::to_string(limit) + " bytes (" +
-                        (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
-                                                               : "the machine's memory") +
-                        "): corrupt or not a mesh");
+        throw FileError(path, 0,
+                        "decompresses to more than " + std::to_string(limit) + " bytes (" +
+                            (limit == in.size() * kDeflateMaxRatio ? "deflate's largest ratio"
+                                                                   : "the machine's memory") +
+                            "): corrupt or not a mesh");
       }
       capacity = std::min(std::max<std::size_t>(2 * capacity, 1 << 16), limit);
       out = grown(path, out, capacity);
       continue;
     }
     if (result != LIBDEFLATE_SUCCESS) {
-      throw MeshError(path + ": corrupt gzip data in the member starting at byte " +
-                      std::to_string(pos));
+      throw FileError(path, 0,
+                      "corrupt gzip data in the member starting at byte " + std::to_string(pos));
     }
     pos += used;
     out.size += written;
@@ -199,10 +200,10 @@ class TemporaryFile {
 
   // A large write whose bytes start on a block boundary in memory and in the file goes past the
   // page cache (O_DIRECT), all but its last partial block: through the cache, each page of the
-  // file is a fresh page of memory, and on this development VM (free page reporting) those are
-  // filled at 0.2-0.3 GB/s. 2 GB written and flushed: 5.3-8.0 s through the cache, 1.3-2.0 s
-  // direct (a standalone test; bench/RESULTS.md, stop 16). Where the file system refuses direct
-  // writes, or the device wants larger blocks, the bytes go through the cache as before.
+  // file is a fresh page of memory, which a host with free page reporting fills at 0.2-0.3 GB/s,
+  // so that 2 GB written and flushed through the cache take about four times as long as direct.
+  // Where the file system refuses direct writes, or the device wants larger blocks, the bytes go
+  // through the cache.
   void write(std::string_view bytes) {
     if (bytes.size() >= kDirectMinBytes && offset_ % kDirectBlock == 0 &&
         reinterpret_cast<std::uintptr_t>(bytes.data()) % kDirectBlock == 0) {
@@ -286,14 +287,14 @@ class TemporaryFile {
 // small and the file stays one standard gzip stream for every reader (RFC 1952 members).
 constexpr std::size_t kGzipMemberBytes = std::size_t{64} << 20;
 
-// Level 6, zlib's default: libdeflate at 6 took 0.67-0.86 s on armadillo-sub2's 26 MB PLY
-// against 4.7 s for zlib at 6, and its output was smaller.
+// Level 6, zlib's default: libdeflate at 6 compresses a large PLY several times faster than zlib
+// at 6, and smaller.
 constexpr int kGzipLevel = 6;
 
 void write_gzip(TemporaryFile& file, const std::string& path, std::string_view bytes) {
   std::unique_ptr<libdeflate_compressor, CompressorFree> compressor(
       libdeflate_alloc_compressor(kGzipLevel));
-  if (!compressor) throw MeshError(path + ": cannot allocate a gzip compressor");
+  if (!compressor) throw FileError(path, 0, "cannot allocate a gzip compressor");
   const std::size_t chunk = std::min(bytes.size(), kGzipMemberBytes);
   const std::size_t bound = libdeflate_gzip_compress_bound(compressor.get(), chunk);
   const HugeArray<char> out = make_huge_array<char>(bound);
@@ -301,7 +302,7 @@ void write_gzip(TemporaryFile& file, const std::string& path, std::string_view b
     const std::string_view member = bytes.substr(0, chunk);
     const std::size_t size =
         libdeflate_gzip_compress(compressor.get(), member.data(), member.size(), out.get(), bound);
-    if (size == 0) throw MeshError(path + ": gzip compression failed");
+    if (size == 0) throw FileError(path, 0, "gzip compression failed");
     file.write({out.get(), size});
     bytes.remove_prefix(member.size());
   } while (!bytes.empty());

@@ -1,5 +1,5 @@
 #pragma once
-// The per-format parsers behind parse_mesh; each throws located MeshErrors.
+// The per-format parsers behind parse_mesh; each throws located FileErrors.
 
 #include <cstdint>
 #include <string>

@@ -6,7 +6,6 @@
 #include <utility>
 
 #include "petersen/io/file_bytes.hpp"
-#include "petersen/mesh/mesh.hpp"
 #include "text_scan.hpp"
 
 namespace petersen {
@@ -20,13 +19,12 @@ constexpr std::pair<GraphFormat, std::string_view> kFormatNames[] = {
 // id of an edge list): 2^24 of them cost 64 MiB per per-node array of the matching.
 constexpr std::uint64_t kMostIsolatedNodes = std::uint64_t{1} << 24;
 
-// "source:line: what" as GraphError; the tokenizer's own Located raises MeshError.
+// Errors at "source:line"; the line is set as the parse goes, or to an earlier line whose
+// content a later check refuses.
 struct At {
   const std::string& source;
   std::size_t line = 0;
-  [[noreturn]] void fail(const std::string& what) const {
-    throw GraphError(source + ":" + std::to_string(line) + ": " + what);
-  }
+  [[noreturn]] void fail(const std::string& what) const { throw FileError(source, line, what); }
 };
 
 // A node id: a whole non-negative integer below 2^32 - 1 (kNoNode is reserved).
@@ -234,9 +232,9 @@ GraphFormat graph_format_of(const std::string& path) {
     return GraphFormat::dimacs;
   }
   if (ends_with_nocase(name, ".txt") || ends_with_nocase(name, ".edges")) return GraphFormat::edges;
-  throw GraphError(path +
-                   ": unknown graph format (expected .dimacs, .col, .txt or .edges, optionally "
-                   ".gz, or a format named by --format)");
+  throw FileError(path, 0,
+                  "unknown graph format (expected .dimacs, .col, .txt or .edges, optionally .gz, "
+                  "or a format named by --format)");
 }
 
 GraphFile parse_graph(std::string_view bytes, GraphFormat format, const std::string& source) {
@@ -246,13 +244,7 @@ GraphFile parse_graph(std::string_view bytes, GraphFormat format, const std::str
 
 GraphFile read_graph(const std::string& path, std::optional<GraphFormat> format) {
   const GraphFormat chosen = format ? *format : graph_format_of(path);
-  FileBytes bytes;
-  try {
-    bytes = read_file_bytes(path);
-  } catch (const MeshError& e) {
-    throw GraphError(e.what());  // it names the path already
-  }
-  return parse_graph(bytes.view(), chosen, path);
+  return parse_graph(read_file_bytes(path).view(), chosen, path);
 }
 
 }  // namespace petersen

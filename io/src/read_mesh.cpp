@@ -1,7 +1,7 @@
 #include "petersen/io/read_mesh.hpp"
 
-#include "petersen/io/file_bytes.hpp"
 #include "parsers.hpp"
+#include "petersen/io/file_bytes.hpp"
 
 namespace petersen {
 
@@ -9,7 +9,7 @@ namespace {
 
 PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& source,
                   FaceKinds kinds, std::vector<std::string>* dropped) {
-  if (bytes.empty()) throw MeshError(source + ": empty file");
+  if (bytes.empty()) throw FileError(source, 0, "empty file");
   std::vector<std::string> ignored;
   std::vector<std::string>& out = dropped ? *dropped : ignored;
   PolygonMesh mesh;
@@ -26,7 +26,7 @@ PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& 
   }
   // A file with no faces is not a mesh the library can do anything with; say so here rather
   // than let an empty surface pass as closed.
-  if (mesh.face_count() == 0) throw MeshError(source + ": no faces");
+  if (mesh.face_count() == 0) throw FileError(source, 0, "no faces");
   return mesh;
 }
 
@@ -51,7 +51,7 @@ MeshFormat mesh_format_of(const std::string& path) {
   if (ends_with_nocase(name, ".off")) return MeshFormat::off;
   if (ends_with_nocase(name, ".obj")) return MeshFormat::obj;
   if (ends_with_nocase(name, ".ply")) return MeshFormat::ply;
-  throw MeshError(path + ": unknown mesh format (expected .off, .obj or .ply, optionally .gz)");
+  throw FileError(path, 0, "unknown mesh format (expected .off, .obj or .ply, optionally .gz)");
 }
 
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,

@@ -2,6 +2,7 @@
 // The hand-written tokenizer the text readers share: lines, whitespace-separated tokens, numbers
 // by std::from_chars, and errors located at "source:line".
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -9,7 +10,7 @@
 #include <string>
 #include <string_view>
 
-#include "petersen/mesh/mesh.hpp"
+#include "petersen/io/file_error.hpp"
 
 namespace petersen::text {
 
@@ -79,7 +80,7 @@ struct Located {
   const Lines& lines;
 
   [[noreturn]] void fail(const std::string& what) const {
-    throw MeshError(source + ":" + std::to_string(lines.line) + ": " + what);
+    throw FileError(source, lines.line, what);
   }
   /// Quotes a token for an error message, cut short if long.
   static std::string quote(std::string_view token) {

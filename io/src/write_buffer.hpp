@@ -9,8 +9,9 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/file_error.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -75,9 +76,13 @@ class Buffer {
 
 /// The writers of meshes with attributes (write_attributes.cpp): the file's bytes, and one line
 /// per kind of thing the format has no place for appended to `dropped`. Each expects a mesh that
-/// passed check_attributes.
-Buffer off_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped);
-Buffer obj_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped);
-Buffer ply_with_attributes(const PolygonMesh& mesh, std::vector<std::string>& dropped);
+/// passed check_attributes, and throws FileError naming `path` for a value or name the format
+/// cannot spell.
+Buffer off_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped);
+Buffer obj_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped);
+Buffer ply_with_attributes(const PolygonMesh& mesh, const std::string& path,
+                           std::vector<std::string>& dropped);
 
 }  // namespace petersen

@@ -5,9 +5,9 @@
 #include <cstring>
 #include <span>
 
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/read_mesh.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "write_buffer.hpp"
 
 namespace petersen {
@@ -139,9 +139,9 @@ std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& 
   const bool float_positions =
       format == MeshFormat::ply && mesh.attributes.position_type == ScalarType::float32;
   if (!mesh.attributes.empty() || float_positions) {
-    const Buffer bytes = format == MeshFormat::off   ? off_with_attributes(mesh, dropped)
-                         : format == MeshFormat::obj ? obj_with_attributes(mesh, dropped)
-                                                     : ply_with_attributes(mesh, dropped);
+    const Buffer bytes = format == MeshFormat::off   ? off_with_attributes(mesh, path, dropped)
+                         : format == MeshFormat::obj ? obj_with_attributes(mesh, path, dropped)
+                                                     : ply_with_attributes(mesh, path, dropped);
     write_file_bytes(path, bytes.view());
     return dropped;
   }

@@ -323,6 +323,8 @@ PYBIND11_MODULE(_petersen, m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const FileError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const MeshError& e) {
       PyErr_SetString(PyExc_ValueError, e.what());
     } catch (const GraphError& e) {

@@ -40,7 +40,7 @@ std::string slurp(const fs::path& path) {
 std::string error_of(std::string_view bytes, MeshFormat format) {
   try {
     parse_mesh(bytes, format, "in");
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     return e.what();
   }
   return "no error";
@@ -544,13 +544,13 @@ TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
   PolygonMesh mesh = parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", MeshFormat::obj, "in");
   mesh.attributes.material_names = {"a#b"};
   mesh.attributes.face_material = {0};
-  EXPECT_THROW(write_mesh((dir / "m.obj").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "m.obj").string(), mesh), FileError);
   mesh.attributes.material_names = {};
   mesh.attributes.face_material = {};
   mesh.attributes.face_properties.push_back({"two words", ScalarType::uint8, {1}});
-  EXPECT_THROW(write_mesh((dir / "m.ply").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "m.ply").string(), mesh), FileError);
   mesh.attributes.face_properties[0] = {"big", ScalarType::uint8, {256}};
-  EXPECT_THROW(write_mesh((dir / "m.ply").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "m.ply").string(), mesh), FileError);
   EXPECT_FALSE(fs::exists(dir / "m.ply"));
   // A binary PLY holds a NaN colour; the text formats cannot.
   mesh.attributes.face_properties.clear();
@@ -560,8 +560,20 @@ TEST(AttributeConversions, NamesAFormatCannotSpellAreRefused) {
   EXPECT_TRUE(write_mesh((dir / "nan.ply").string(), mesh).empty());
   EXPECT_TRUE(
       std::isnan(read_mesh((dir / "nan.ply").string()).attributes.vertex_properties[1].values[1]));
-  EXPECT_THROW(write_mesh((dir / "nan.off").string(), mesh), MeshError);
-  EXPECT_THROW(write_mesh((dir / "nan.obj").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "nan.off").string(), mesh), FileError);
+  EXPECT_THROW(write_mesh((dir / "nan.obj").string(), mesh), FileError);
+  // The refusal names the file it would have written.
+  const std::string path = (dir / "nan.obj").string();
+  try {
+    write_mesh(path, mesh);
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.file(), path);
+    EXPECT_EQ(e.line(), 0u);
+    EXPECT_EQ(std::string(e.what()),
+              path +
+                  ": property 'red' has a value that is not finite (nan); a text format "
+                  "cannot hold it");
+  }
 }
 
 // ---------------------------------------------------------------------------------------------

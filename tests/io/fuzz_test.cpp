@@ -1,5 +1,5 @@
 // RapidCheck fuzzing of the parsers: small valid files with random bytes changed, cuts, and
-// duplicated lines must parse or throw MeshError; never crash, never allocate beyond what the
+// duplicated lines must parse or throw FileError; never crash, never allocate beyond what the
 // input could describe. The sanitizer build runs this too.
 
 #include <gtest/gtest.h>
@@ -116,7 +116,7 @@ TEST(ParserFuzz, SeedsParseAsTetrahedra) {
   }
 }
 
-RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowMeshError, ()) {
+RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowFileError, ()) {
   const Seed& seed = *rc::gen::elementOf(seeds());
   const std::string bytes = damaged(seed.bytes);
   try {
@@ -130,12 +130,12 @@ RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowMeshError, ()) {
     } catch (const MeshError&) {
       RC_ASSERT(!report.closed());
     }
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     RC_ASSERT(std::string(e.what()).rfind("fuzz", 0) == 0);  // every message names its source
   }
 }
 
-// The polygon reader on the same damaged files and on polygon seeds: MeshError or a well-formed
+// The polygon reader on the same damaged files and on polygon seeds: FileError or a well-formed
 // mesh (every face of 3 or more corners, every corner a vertex), and the triangle reader accepts
 // exactly the all-triangle ones.
 const std::vector<Seed>& polygon_seeds() {
@@ -157,7 +157,7 @@ const std::vector<Seed>& polygon_seeds() {
   return all;
 }
 
-RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowMeshError, ()) {
+RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowFileError, ()) {
   const Seed& seed = *rc::gen::elementOf(polygon_seeds());
   const std::string bytes = damaged(seed.bytes);
   bool all_triangles = false;
@@ -169,13 +169,13 @@ RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowMeshError, ()) {
       RC_ASSERT(mesh.face(f).size() >= 3u);
       for (VertexId v : mesh.face(f)) RC_ASSERT(v < mesh.positions.size());
     }
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     RC_ASSERT(std::string(e.what()).rfind("fuzz", 0) == 0);
   }
   try {
     parse_triangle_mesh(bytes, seed.format, "fuzz");
     RC_ASSERT(all_triangles);
-  } catch (const MeshError&) {
+  } catch (const FileError&) {
     RC_ASSERT(!all_triangles);
   }
 }

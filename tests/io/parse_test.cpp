@@ -16,7 +16,7 @@ namespace {
 std::string error_of(std::string_view bytes, MeshFormat format) {
   try {
     parse_triangle_mesh(bytes, format, "in");
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     return e.what();
   }
   return "no error";
@@ -25,7 +25,7 @@ std::string error_of(std::string_view bytes, MeshFormat format) {
 std::string polygon_error_of(std::string_view bytes, MeshFormat format) {
   try {
     parse_mesh(bytes, format, "in");
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     return e.what();
   }
   return "no error";
@@ -201,6 +201,34 @@ TEST(ParsePly, BinaryErrorsNameTheElement) {
                "in: vertex 2: non-finite y");
   EXPECT_ERROR(le + binary_body(false, 2, 1, 4), MeshFormat::ply,
                "in: face 0 has 4 corners; only triangles are supported");
+}
+
+// The error's file and line are the message's: the line of a text file, none (0) in a binary
+// PLY's records, whose message names the element and the byte.
+TEST(ParseErrors, CarryTheFileAndTheLine) {
+  auto error = [](std::string_view bytes, MeshFormat format) {
+    try {
+      parse_mesh(bytes, format, "in.x");
+    } catch (const FileError& e) {
+      return e;
+    }
+    return FileError("", 0, "no error");
+  };
+  const FileError obj = error("v 0 0 0\nv 1 0 0\n\nf 1 2 x\n", MeshFormat::obj);
+  EXPECT_EQ(obj.file(), "in.x");
+  EXPECT_EQ(obj.line(), 4u);
+  EXPECT_STREQ(obj.what(), "in.x:4: face 0: bad vertex index 'x'");
+  const FileError ply =
+      error(ply_header("binary_little_endian", 3, 1) + binary_body(false, 3), MeshFormat::ply);
+  EXPECT_EQ(ply.file(), "in.x");
+  EXPECT_EQ(ply.line(), 0u);
+  EXPECT_EQ(std::string(ply.what()).rfind("in.x: face 0: vertex index 3 out of range", 0), 0u);
+  const FileError header =
+      error(ply_header("ascii", 3, 1, "list uchar float vertex_indices"), MeshFormat::ply);
+  EXPECT_EQ(header.line(), 11u);
+  const FileError empty = error("", MeshFormat::off);
+  EXPECT_EQ(empty.line(), 0u);
+  EXPECT_STREQ(empty.what(), "in.x: empty file");
 }
 
 TEST(ParsePly, HeaderAndAsciiErrors) {

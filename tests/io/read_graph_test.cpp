@@ -14,11 +14,11 @@ namespace {
 
 using Edges = std::vector<std::array<NodeId, 2>>;
 
-// The message of the GraphError that parsing `text` raises, or "" when it parses.
+// The message of the FileError that parsing `text` raises, or "" when it parses.
 std::string error_of(const std::string& text, GraphFormat format) {
   try {
     parse_graph(text, format, "g");
-  } catch (const GraphError& e) {
+  } catch (const FileError& e) {
     return e.what();
   }
   return "";
@@ -118,8 +118,26 @@ TEST(ReadGraph, FormatFromTheExtension) {
   EXPECT_EQ(graph_format_of("a.COL.gz"), GraphFormat::dimacs);
   EXPECT_EQ(graph_format_of("a.edges"), GraphFormat::edges);
   EXPECT_EQ(graph_format_of("a.txt"), GraphFormat::edges);
-  EXPECT_THROW(graph_format_of("a.graph"), GraphError);
-  EXPECT_THROW(read_graph("/nonexistent/a.txt"), GraphError);
+  EXPECT_THROW(graph_format_of("a.graph"), FileError);
+  EXPECT_THROW(read_graph("/nonexistent/a.txt"), FileError);
+}
+
+TEST(ReadGraph, ErrorsCarryTheFileAndTheLine) {
+  try {
+    parse_graph("p edge 2 1\ne 1 2 3 4\n", GraphFormat::dimacs, "g.dimacs");
+    FAIL() << "parsed";
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.file(), "g.dimacs");
+    EXPECT_EQ(e.line(), 2u);
+  }
+  try {
+    read_graph("/nonexistent/a.txt");
+    FAIL() << "read";
+  } catch (const FileError& e) {
+    EXPECT_EQ(e.file(), "/nonexistent/a.txt");
+    EXPECT_EQ(e.line(), 0u);
+    EXPECT_EQ(std::string(e.what()).rfind("/nonexistent/a.txt: cannot open for reading: ", 0), 0u);
+  }
 }
 
 }  // namespace

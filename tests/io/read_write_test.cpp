@@ -11,8 +11,8 @@
 #include <fstream>
 #include <string>
 
-#include "petersen/io/read_mesh.hpp"
 #include "petersen/generators/surface_generators.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
 
 namespace petersen {
@@ -89,7 +89,7 @@ TEST(ReadWrite, QuadFilesHaveTheirFacesInEachFormat) {
   try {
     read_triangle_mesh((dir / "q.obj").string());
     FAIL() << "quads read as triangles";
-  } catch (const MeshError& e) {
+  } catch (const FileError& e) {
     EXPECT_NE(std::string(e.what()).find(":5: face 0 has 4 corners"), std::string::npos)
         << e.what();
   }
@@ -99,13 +99,13 @@ TEST(ReadWrite, FormatFollowsTheExtension) {
   EXPECT_EQ(mesh_format_of("a/b.Off"), MeshFormat::off);
   EXPECT_EQ(mesh_format_of("b.obj.gz"), MeshFormat::obj);
   EXPECT_EQ(mesh_format_of("c.PLY"), MeshFormat::ply);
-  EXPECT_THROW(mesh_format_of("d.stl"), MeshError);
-  EXPECT_THROW(mesh_format_of("e.gz"), MeshError);
-  EXPECT_THROW(read_triangle_mesh("/nonexistent/f.off"), MeshError);
+  EXPECT_THROW(mesh_format_of("d.stl"), FileError);
+  EXPECT_THROW(mesh_format_of("e.gz"), FileError);
+  EXPECT_THROW(read_triangle_mesh("/nonexistent/f.off"), FileError);
 }
 
 TEST(ReadWrite, UnwritablePathIsAnError) {
-  EXPECT_THROW(write_quad_mesh("/nonexistent/q.off", QuadMesh{}), MeshError);
+  EXPECT_THROW(write_quad_mesh("/nonexistent/q.off", QuadMesh{}), FileError);
 }
 
 void spit(const fs::path& path, const std::string& bytes) {
@@ -188,7 +188,7 @@ TEST(ReadWrite, FailedWritesLeaveTheOldFileAndNoTemporary) {
   spit(dir / "m.off", old_bytes);
   // The rename fails: the target is a folder.
   fs::create_directory(dir / "d.off");
-  EXPECT_THROW(write_mesh((dir / "d.off").string(), mesh), MeshError);
+  EXPECT_THROW(write_mesh((dir / "d.off").string(), mesh), FileError);
   // The write fails half-way: a child process limited to 1000-byte files writes a larger mesh
   // over m.off (SIGXFSZ ignored, so write() reports EFBIG).
   const pid_t child = fork();
@@ -200,7 +200,7 @@ TEST(ReadWrite, FailedWritesLeaveTheOldFileAndNoTemporary) {
     int code = 1;
     try {
       write_mesh((dir / "m.off").string(), mesh);
-    } catch (const MeshError& e) {
+    } catch (const FileError& e) {
       code = std::string(e.what()).find("m.off: write failed") != std::string::npos ? 0 : 2;
     }
     _exit(code);
@@ -268,7 +268,7 @@ TEST(ReadWrite, GzipMembersPaddingAndDamage) {
     spit(dir / "bad.obj.gz", bytes);
     try {
       read_mesh((dir / "bad.obj.gz").string());
-    } catch (const MeshError& e) {
+    } catch (const FileError& e) {
       return std::string(e.what());
     }
     return std::string("no error");

@@ -6,6 +6,7 @@
 #include <string_view>
 
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/file_error.hpp"
 
 namespace petersen {
 
@@ -29,7 +30,7 @@ struct FileBytes {
 
 /// The file's bytes, decompressed when they start with the gzip magic (any name; concatenated
 /// gzip members are decompressed one after the other, trailing zero bytes ignored). Throws
-/// MeshError naming the path when the file cannot be opened or read, when the gzip data is
+/// FileError naming the path when the file cannot be opened or read, when the gzip data is
 /// corrupt, or when it would decompress beyond deflate's largest ratio (1032:1) or the machine's
 /// physical memory. A regular file is mapped, not copied: like any reader of a mapped file, the
 /// process is killed (SIGBUS) if another truncates the file while it is being read.
@@ -38,7 +39,7 @@ FileBytes read_file_bytes(const std::string& path);
 
 /// Writes the bytes to `path` atomically, gzip-compressed when the path ends in .gz: into a new
 /// temporary file in the same folder, flushed to disk, then renamed over `path`. On any failure
-/// the temporary file is removed, an existing file at `path` is left untouched, and MeshError
+/// the temporary file is removed, an existing file at `path` is left untouched, and FileError
 /// names the path. A new file gets the usual permissions (0666 less the umask), a replaced file
 /// keeps its own.
 void write_file_bytes(const std::string& path, std::string_view bytes);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/io/file_error.hpp"
 
 namespace petersen {
 
@@ -29,7 +30,7 @@ std::string_view to_string(GraphFormat format);
 std::optional<GraphFormat> parse_graph_format(std::string_view name);
 
 /// The format by extension: .dimacs or .col is DIMACS, .txt or .edges an edge list, each
-/// optionally followed by .gz. Throws GraphError naming the path for any other name.
+/// optionally followed by .gz. Throws FileError naming the path for any other name.
 GraphFormat graph_format_of(const std::string& path);
 
 /// A graph as its file gave it.
@@ -43,7 +44,7 @@ struct GraphFile {
   std::vector<std::int64_t> costs;
 };
 
-/// Parses a graph file's bytes; `source` names it in errors. Throws GraphError
+/// Parses a graph file's bytes; `source` names it in errors. Throws FileError
 /// "source:line: what" for a line that does not parse, an id out of range, a cost that is not
 /// an integer within kMaxFileCost, an edge line without a cost in a file whose other edge lines
 /// have one (or the reverse), a missing or repeated DIMACS header, an edge count that differs
@@ -51,8 +52,8 @@ struct GraphFile {
 /// (so that a forged count allocates nothing absurd). O(bytes).
 GraphFile parse_graph(std::string_view bytes, GraphFormat format, const std::string& source);
 
-/// Reads and parses a graph file (zlib when it is compressed), in the given format or the one
-/// its extension names. Throws GraphError naming the path when it cannot be read.
+/// Reads and parses a graph file (decompressed first when it is gzip), in the given format or the
+/// one its extension names. Throws FileError naming the path when it cannot be read.
 GraphFile read_graph(const std::string& path, std::optional<GraphFormat> format = std::nullopt);
 
 }  // namespace petersen

@@ -5,6 +5,7 @@
 #include <string_view>
 #include <vector>
 
+#include "petersen/io/file_error.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -12,7 +13,7 @@ namespace petersen {
 enum class MeshFormat { off, obj, ply };
 
 /// The format named by the path's extension (.off, .obj, .ply, case-insensitive), looking past a
-/// trailing .gz. Throws MeshError naming the path for any other extension.
+/// trailing .gz. Throws FileError naming the path for any other extension.
 MeshFormat mesh_format_of(const std::string& path);
 
 /// Reads a polygon mesh, choosing the format by extension; a gzip-compressed file (recognised by
@@ -33,7 +34,7 @@ MeshFormat mesh_format_of(const std::string& path);
 /// Everything else (OBJ `l`, `p`, `curv` lines; other PLY elements and lists; values an OFF
 /// keyword does not declare) is read past, and when `dropped` is given, one line per kind of thing
 /// is appended to it ("3 'l' lines, the first at line 12").
-/// Throws MeshError with the file name and the line (text) or element index (binary) on: an
+/// Throws FileError with the file name and the line (text) or element index (binary) on: an
 /// empty file, no faces, an unknown format, truncation, wrong counts, NaN or infinite
 /// coordinates, negative or out-of-range indices, faces of fewer than 3 corners, counts the file
 /// cannot hold (checked before anything is allocated), a corrupt or absurdly large gzip stream.
@@ -41,7 +42,7 @@ MeshFormat mesh_format_of(const std::string& path);
 PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped = nullptr);
 
 /// Parses a mesh already in memory (as read_mesh does after decompression); `source` names it in
-/// error messages.
+/// error messages and is the FileError's file().
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
                        std::vector<std::string>* dropped = nullptr);
 
