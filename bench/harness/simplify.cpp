@@ -25,7 +25,7 @@ double squared_length(const Positions& positions, VertexId a, VertexId b) {
 
 }  // namespace
 
-TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) {
+PolygonMesh simplify(const PolygonMesh& mesh, std::uint64_t target_triangles) {
   Triangulation tri = Triangulation::from_mesh(mesh);
   Positions positions = mesh.positions;
   lrs::VertexMarks marks(tri.vertex_capacity());
@@ -65,19 +65,19 @@ TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) 
   }
 
   // Keep only the referenced vertices, numbered in order of first use.
-  TriangleMesh simplified = tri.to_mesh(positions);
+  const TriangleMesh simplified = tri.to_mesh(positions);
   std::vector<VertexId> renumbered(simplified.positions.size(), kNoNode);
-  TriangleMesh compact;
-  for (auto& triangle : simplified.triangles) {
-    for (VertexId& corner : triangle) {
+  PolygonMesh compact;
+  compact.corners.reserve(3 * simplified.triangles.size());
+  for (const auto& triangle : simplified.triangles) {
+    for (const VertexId corner : triangle) {
       if (renumbered[corner] == kNoNode) {
         renumbered[corner] = static_cast<VertexId>(compact.positions.size());
         compact.positions.push_back(simplified.positions[corner]);
       }
-      corner = renumbered[corner];
+      compact.corners.push_back(renumbered[corner]);
     }
   }
-  compact.triangles = std::move(simplified.triangles);
   return compact;
 }
 

@@ -546,7 +546,7 @@ PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size) {
         const std::uint32_t genus = rng() % (1 + std::min<std::uint32_t>(3, target / 64));
         const std::uint32_t base = genus == 0 ? 12 : 64 + 36 * (genus - 1);
         const std::uint32_t splits = target > base ? (target - base) / 2 : 0;
-        mesh = to_polygon_mesh(random_closed_surface(genus, splits, splits, rng()));
+        mesh = random_closed_surface(genus, splits, splits, rng());
         break;
       }
       case 1: {

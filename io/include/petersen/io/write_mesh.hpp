@@ -1,6 +1,5 @@
 #pragma once
-// Writing polygon, triangle and quad meshes as OFF, OBJ or PLY (binary little endian), by
-// extension, atomically.
+// Writing polygon meshes as OFF, OBJ or PLY (binary little endian), by extension, atomically.
 
 #include <string>
 #include <vector>
@@ -28,11 +27,5 @@ namespace petersen {
 /// when everything was written. Throws MeshError for a value its PLY type cannot hold or a name
 /// the format cannot spell.
 std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& mesh);
-
-/// Writes the quad mesh like write_mesh.
-void write_quad_mesh(const std::string& path, const QuadMesh& mesh);
-
-/// Writes the triangle mesh like write_mesh.
-void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh);
 
 }  // namespace petersen
