@@ -171,31 +171,52 @@ bool orientable(std::size_t face_count, const std::vector<Join>& joins) {
 }
 
 // Components, boundary loops and pinched vertices from the forests; returns how many vertices
-// splitting every pinched vertex into its fans would add.
+// splitting every pinched vertex into its fans would add. Two faces sharing a vertex lie in one
+// fan there (joined through edges) or in two fans of a pinched vertex, so joining the faces around
+// each pinched vertex turns the edge components into the vertex components. O(C α(C)).
 std::uint64_t count_pieces(const PolygonMesh& mesh, const PolygonHalfedges& half,
                            const std::vector<std::uint8_t>& usable, EdgeScan& scan,
                            MeshReport& report) {
-  std::vector<std::uint32_t> fans(mesh.positions.size(), 0);
-  // Vertices joined through faces: the vertex components.
-  ComponentForest pieces(static_cast<std::uint32_t>(mesh.positions.size()), {});
-  for (FaceId f = 0; f < mesh.face_count(); ++f) {
-    if (!usable.empty() && !usable[f]) continue;
-    report.components += scan.faces.find(f) == f;
-    const std::uint32_t first = half.first(f);
-    for (std::uint32_t c = first; c < first + mesh.arity(f); ++c) {
-      fans[mesh.corners[c]] += scan.corners.find(c) == c;
-      join(pieces, mesh.corners[first], mesh.corners[c]);
+  const auto for_each_corner = [&](auto visit) {
+    for (FaceId f = 0; f < mesh.face_count(); ++f) {
+      if (!usable.empty() && !usable[f]) continue;
+      const std::uint32_t first = half.first(f);
+      for (std::uint32_t c = first; c < first + mesh.arity(f); ++c) visit(f, c);
     }
-  }
+  };
+  const auto face_roots = [&] {
+    std::uint64_t roots = 0;
+    for (FaceId f = 0; f < mesh.face_count(); ++f) {
+      roots += (usable.empty() || usable[f]) && scan.faces.find(f) == f;
+    }
+    return roots;
+  };
+  std::vector<std::uint32_t> fans(mesh.positions.size(), 0);
+  for_each_corner(
+      [&](FaceId, std::uint32_t c) { fans[mesh.corners[c]] += scan.corners.find(c) == c; });
   std::uint64_t extra_fans = 0;
   for (VertexId v = 0; v < mesh.positions.size(); ++v) {
     report.boundary_loops += scan.on_boundary[v] && scan.boundary.find(v) == v;
-    report.vertex_components += fans[v] > 0 && pieces.find(v) == v;
     if (fans[v] > 1) {
       report.pinched_vertices.add(v);
       extra_fans += fans[v] - 1;
     }
   }
+  report.components = face_roots();
+  report.vertex_components = report.components;
+  if (report.pinched_vertices.empty()) return extra_fans;
+  constexpr FaceId kNoFace = 0xFFFFFFFFu;
+  std::vector<FaceId> face_at(mesh.positions.size(), kNoFace);
+  for_each_corner([&](FaceId f, std::uint32_t c) {
+    const VertexId v = mesh.corners[c];
+    if (fans[v] < 2) return;
+    if (face_at[v] == kNoFace) {
+      face_at[v] = f;
+    } else {
+      join(scan.faces, face_at[v], f);
+    }
+  });
+  report.vertex_components = face_roots();
   return extra_fans;
 }
 
