@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <random>
 #include <unordered_map>
 #include <vector>
 
+#include "petersen/graph/seeded_random.hpp"
 #include "petersen/mesh/edge_groups.hpp"
 
 namespace petersen {
@@ -122,12 +122,12 @@ namespace {
 
 // 1-to-3 splits of random triangles, the new vertex at the centroid: triangle t = (a, b, c)
 // becomes (a, b, m) and (b, c, m), (c, a, m) are appended.
-void split_triangles(PolygonMesh& mesh, std::uint32_t splits, std::mt19937_64& rng) {
+void split_triangles(PolygonMesh& mesh, std::uint32_t splits, SeededRandom& rng) {
   auto& corners = mesh.corners;
   corners.reserve(corners.size() + 6 * std::size_t{splits});
   mesh.positions.reserve(mesh.positions.size() + splits);
   for (std::uint32_t k = 0; k < splits; ++k) {
-    const FaceId t = static_cast<FaceId>(rng() % mesh.face_count());
+    const FaceId t = static_cast<FaceId>(rng.below64(mesh.face_count()));
     const VertexId a = corners[3 * t], b = corners[3 * t + 1], c = corners[3 * t + 2];
     std::array<double, 3> centroid{};
     for (int d = 0; d < 3; ++d) {
@@ -156,7 +156,7 @@ HugeVector<std::uint32_t> twins(const PolygonMesh& mesh) {
 
 // About `flips` random edge flips on the halfedges of a closed triangulation, each kept only when
 // the triangulation stays simplicial.
-void flip_edges(PolygonMesh& mesh, std::uint32_t flips, std::mt19937_64& rng) {
+void flip_edges(PolygonMesh& mesh, std::uint32_t flips, SeededRandom& rng) {
   auto& corners = mesh.corners;
   HugeVector<std::uint32_t> twin = twins(mesh);
   auto from = [&](std::uint32_t h) { return corners[h]; };
@@ -176,8 +176,8 @@ void flip_edges(PolygonMesh& mesh, std::uint32_t flips, std::mt19937_64& rng) {
   for (VertexId v : corners) ++degree[v];
   const std::size_t face_count = mesh.face_count();
   for (std::uint32_t k = 0; k < flips; ++k) {
-    const FaceId t = static_cast<FaceId>(rng() % face_count);
-    const int corner = static_cast<int>(rng() % 3);
+    const FaceId t = static_cast<FaceId>(rng.below64(face_count));
+    const int corner = static_cast<int>(rng.below64(3));
     const std::uint32_t h = 3 * t + corner, g = twin[h];
     const FaceId t2 = g / 3;
     const VertexId u = from(h), v = to(h), w = from(prev(h)), z = from(prev(g));
@@ -214,10 +214,9 @@ PolygonMesh randomize_triangulation(PolygonMesh mesh, std::uint32_t splits, std:
   if (!mesh.all_triangles()) {
     throw MeshError("randomize_triangulation: every face must be a triangle");
   }
-  // Draws are the engine's raw output modulo a size: mt19937_64's output is fixed by the
-  // standard, so a seed gives the same mesh on every library (the example's regeneration command
-  // in README.md relies on it); no std distribution, whose results differ between libraries.
-  std::mt19937_64 rng(seed);
+  // SeededRandom's draws are fixed by its code, so a seed gives the same mesh on every platform
+  // and library (the example's regeneration command in README.md relies on it).
+  SeededRandom rng(seed);
   split_triangles(mesh, splits, rng);
   flip_edges(mesh, flips, rng);
   return mesh;
