@@ -1,4 +1,4 @@
-// Meshes with boundary, polygons and non-manifold edges through the front door (issue 12): pairs,
+// Meshes with boundary, polygons and non-manifold edges through the front door: pairs,
 // triangles left by the certified maximum against a plain greedy pass over the same pairable
 // graph, and what --all-quad adds. Usage: petersen_boundary_bench [mesh files...]; without files,
 // the shared invalid/ meshes (when ../shared/meshes is present) and generated ones.
@@ -11,8 +11,8 @@
 
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/generators/polygon_generators.hpp"
-#include "petersen/io/read_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
 namespace {

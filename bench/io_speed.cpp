@@ -1,4 +1,4 @@
-// IO speed (issue 15, fast IO): reading the shared meshes and writing armadillo-sub2, in seconds,
+// IO speed: reading the shared meshes and writing armadillo-sub2, in seconds,
 // beside `gzip -dc FILE > /dev/null` of the same file measured in the same run.
 // Usage: petersen_io_speed [mesh files...] (default: armadillo-sub2.ply.gz, nefertiti.obj.gz and
 // armadillo.obj.gz from the shared meshes). Each time is the best of 5 runs, in CPU seconds
@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
-#include "petersen/graph/huge_pages.hpp"
 
 namespace {
 

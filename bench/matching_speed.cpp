@@ -1,5 +1,5 @@
 // Matching speed of SG and PS (paper §3.1) with both augmentation variants, beside one plain BFS
-// over the same graph (the floor) and LEMON's MaxMatching (the peer), for issue 3.
+// over the same graph (the floor) and LEMON's MaxMatching (the peer).
 // Usage: petersen_matching_speed [mesh files...]; without files it measures the dual of
 // armadillo-sub2 from ../shared/meshes (when present), of a voxel plate with 30×30 holes, and a
 // random cubic bridgeless graph of 1.4M nodes.
@@ -14,10 +14,10 @@
 
 #include "bfs_floor.hpp"
 #include "petersen/dualize/dual.hpp"
-#include "petersen/io/read_mesh.hpp"
-#include "petersen/generators/surface_generators.hpp"
 #include "petersen/generators/graph_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 
@@ -138,7 +138,7 @@ int main(int argc, char** argv) {
     if (std::filesystem::exists(armadillo)) files.push_back(armadillo);
   }
   for (const std::string& file : files) {
-    measure(std::filesystem::path(file).filename().string(), dual_graph(read_triangle_mesh(file)));
+    measure(std::filesystem::path(file).filename().string(), dual_graph(read_mesh(file)));
   }
   if (defaults) {
     measure("voxel_plate 30x30 holes, subdivision 13",

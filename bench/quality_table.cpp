@@ -1,4 +1,4 @@
-// Issue 14's quality table: for one mesh, every way of pairing its triangles judged by the same
+// The quality table: for one mesh, every way of pairing its triangles judged by the same
 // measure (quad_corner_deviation): sg, ps and lrs (shape-blind), --objective quality, the threshold
 // mode at 40 degrees, LEMON's MaxWeightedPerfectMatching on the same costs (closed meshes), and
 // any outside result (Blender's Tris to Quads) read back from its file.
@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "dual_costs.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/io/read_mesh.hpp"
@@ -84,10 +85,9 @@ Row by_petersen(const PolygonMesh& mesh, std::string method, const QuadOptions& 
 
 // LEMON's minimum-cost perfect matching of the dual, on the costs --objective quality uses.
 Row by_lemon(const PolygonMesh& mesh) {
-  const TriangleMesh triangles = to_triangle_mesh(mesh);
-  const Dual dual = build_dual(triangles);
+  const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
-  const HugeVector<double> degrees = dual_edge_quality(triangles, dual);
+  const HugeVector<double> degrees = bench::dual_edge_costs(mesh, dual);
   const HugeVector<Cost> costs = scale_costs(degrees);
   std::vector<std::uint32_t> mate(g.node_count());
   std::int64_t total = 0;

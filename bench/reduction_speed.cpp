@@ -15,10 +15,10 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/io/read_mesh.hpp"
-#include "petersen/generators/surface_generators.hpp"
 #include "petersen/generators/graph_generators.hpp"
+#include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/matching/avoiding.hpp"
 
 namespace {
@@ -46,7 +46,7 @@ void measure(const std::string& family, const CubicGraph& g, ReductionChooser ch
 // The dual of a square voxel plate with about n triangles (genus = holes², the paper's family B).
 CubicGraph plate_dual_near(std::uint32_t n) {
   const double per_hole =
-      voxel_plate({.holes_x = 8, .holes_y = 8}).triangles.size() / 64.0;  // triangles per hole
+      voxel_plate({.holes_x = 8, .holes_y = 8}).face_count() / 64.0;  // triangles per hole
   const auto holes = static_cast<std::uint32_t>(std::max(1.0, std::sqrt(n / per_hole)));
   return dual_graph(voxel_plate({.holes_x = holes, .holes_y = holes}));
 }
@@ -94,7 +94,7 @@ int main(int argc, char** argv) {
       if (chooser != ReductionChooser::ds || n <= ds_max) measure("random", graph, chooser);
   }
   for (std::size_t i = 2; i < positional.size(); ++i) {
-    const CubicGraph g = dual_graph(read_triangle_mesh(positional[i]));
+    const CubicGraph g = dual_graph(read_mesh(positional[i]));
     for (ReductionChooser chooser : choosers) measure(positional[i], g, chooser);
   }
 }

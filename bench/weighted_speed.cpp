@@ -1,9 +1,9 @@
-// Exact minimum-cost perfect matching under issue 14's quad measure: petersen's certified solver
+// Exact minimum-cost perfect matching under the quad measure: petersen's certified solver
 // against LEMON's MaxWeightedPerfectMatching on the same integer costs, beside PS with local
 // augmentation (shape-blind, the cardinality floor), on the dual of each mesh.
 // Usage: petersen_weighted_speed [--no-lemon] [--rounds N] [--threads N] [mesh files...]; without
 // files it measures every shared mesh of at least 80k triangles from ../shared/meshes (when
-// present). --rounds 1 runs the solver once per mesh (for callgrind; the default is 3);
+// present). --rounds 1 runs the solver once per mesh (for a profiler; the default is 3);
 // --threads is MinCostOptions::threads (default 0: every core, as the CLI).
 // Columns: ours_s and ps_s are wall-time medians of the rounds, cpu_s that of the process's CPU
 // time (cpu_min the least; every thread's, the short searches' helper included); xfaster =
@@ -24,10 +24,11 @@
 #include <string>
 #include <vector>
 
+#include "dual_costs.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/io/read_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -61,11 +62,11 @@ double median(std::vector<double> values) {
 
 // The machine is shared: ours and PS run `rounds` times alternately and report medians; LEMON,
 // far slower, runs once.
-void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon, int rounds,
+void measure(const std::string& name, const PolygonMesh& mesh, bool with_lemon, int rounds,
              std::uint32_t threads) {
   const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
-  const HugeVector<double> degrees = dual_edge_quality(mesh, dual);
+  const HugeVector<double> degrees = bench::dual_edge_costs(mesh, dual);
   const HugeVector<Cost> costs = scale_costs(degrees);
   std::vector<double> ours, ours_cpu, ps, ps_cpu;
   MinCostResult result;
@@ -170,7 +171,7 @@ int main(int argc, char** argv) {
       "xfaster", "xcpu", "ps_s", "x_ps", "xcpu_ps", "mean_deg", "free0", "blossoms", "pushes",
       "labels", "even_scan", "rel_scan", "short_lab", "short_aug", "half_cyc");
   for (const std::string& file : files) {
-    measure(std::filesystem::path(file).filename().string(), read_triangle_mesh(file), with_lemon,
-            rounds, threads);
+    measure(std::filesystem::path(file).filename().string(), read_mesh(file), with_lemon, rounds,
+            threads);
   }
 }

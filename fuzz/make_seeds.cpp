@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/io/write_mesh.hpp"
-#include "petersen/generators/graph_generators.hpp"
 
 namespace {
 
@@ -199,9 +199,9 @@ int main(int argc, char** argv) {
     fs::create_directories(dir / format);
   }
   const std::vector<std::pair<std::string, PolygonMesh>> meshes = {
-      {"cube", to_polygon_mesh(random_closed_surface(0, 0, 0, 1))},
-      {"irregular", to_polygon_mesh(random_closed_surface(0, 6, 12, 2))},
-      {"torus", to_polygon_mesh(random_closed_surface(1, 2, 4, 3))},
+      {"cube", random_closed_surface(0, 0, 0, 1)},
+      {"irregular", random_closed_surface(0, 6, 12, 2)},
+      {"torus", random_closed_surface(1, 2, 4, 3)},
       {"polygons", mixed_polygons()},
   };
   for (const auto& [name, mesh] : meshes) {

@@ -211,8 +211,8 @@ struct GenerateArgs {
   std::uint64_t seed = 1;
 };
 
-TriangleMesh randomized_plate(const GenerateArgs& args) {
-  TriangleMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
+PolygonMesh randomized_plate(const GenerateArgs& args) {
+  PolygonMesh mesh = voxel_plate({args.holes_x, args.holes_y, args.subdivision, args.dents});
   if (args.splits > 0 || args.flips > 0) {
     mesh = randomize_triangulation(std::move(mesh), args.splits, args.flips, args.seed);
   }
@@ -231,29 +231,23 @@ PolygonMesh generated_surface(const GenerateArgs& args) {
                           .torus = args.kind == "jittered-torus",
                           .seed = args.seed});
   }
-  return to_polygon_mesh(randomized_plate(args));
+  return randomized_plate(args);
 }
 
-TriangleMesh generated_mesh(const GenerateArgs& args) {
-  // A closed plate needs no polygon steps: no copy into a polygon mesh and back, which at 10^8
-  // triangles is gigabytes.
-  if (args.kind == "plate" && args.holes == 0 && args.fins == 0 && args.pinches == 0 &&
-      args.flip_faces == 0) {
-    return randomized_plate(args);
-  }
+PolygonMesh generated_mesh(const GenerateArgs& args) {
   PolygonMesh surface = generated_surface(args);
   // Each step with its own seed, so that asking for one does not change what another does.
   if (args.holes > 0) surface = punch_holes(surface, args.holes, args.seed + 1);
   if (args.fins > 0) surface = add_fins(surface, args.fins, args.seed + 2);
   if (args.pinches > 0) surface = pinch_vertices(surface, args.pinches, args.seed + 3);
   if (args.flip_faces > 0) surface = flip_faces(surface, args.flip_faces, args.seed + 4);
-  return to_triangle_mesh(surface);
+  return surface;
 }
 
 int generate(const GenerateArgs& args) {
-  const TriangleMesh mesh = generated_mesh(args);
-  write_triangle_mesh(args.output, mesh);
-  std::printf("%zu triangles, %zu vertices written to %s\n", mesh.triangles.size(),
+  const PolygonMesh mesh = generated_mesh(args);
+  write_mesh(args.output, mesh);
+  std::printf("%zu triangles, %zu vertices written to %s\n", mesh.face_count(),
               mesh.positions.size(), args.output.c_str());
   return 0;
 }

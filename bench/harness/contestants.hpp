@@ -14,7 +14,7 @@ namespace petersen::bench {
 
 /// What every contestant runs on: a closed triangle mesh and its dual graph.
 struct BenchInput {
-  const TriangleMesh& mesh;
+  const PolygonMesh& mesh;
   const Dual& dual;
 };
 

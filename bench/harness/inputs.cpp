@@ -38,6 +38,14 @@ std::string describe(const PlateShape& shape) {
   return text.str();
 }
 
+// A mesh file's triangles: every face must be one (build_dual names the first that is not), and
+// what else the file carries is not needed.
+PolygonMesh read_triangles(const std::string& path) {
+  PolygonMesh mesh = read_mesh(path);
+  mesh.attributes = {};
+  return mesh;
+}
+
 InputSpec plate_input(std::string name, std::string group, const std::string& how,
                       const PlateShape& shape) {
   return {std::move(name),        std::move(group), how + "; plate " + describe(shape),
@@ -57,7 +65,7 @@ std::vector<InputSpec> shared_mesh_inputs(const std::string& directory) {
   std::vector<InputSpec> inputs;
   for (const auto& path : files) {
     inputs.push_back({stem_of(path), "mesh", "shared mesh " + path.filename().string(), 0,
-                      std::nullopt, [path] { return read_triangle_mesh(path.string()); }});
+                      std::nullopt, [path] { return read_triangles(path.string()); }});
   }
   return inputs;
 }
@@ -105,13 +113,12 @@ std::vector<InputSpec> doubling_inputs(std::uint32_t steps) {
   return inputs;
 }
 
-MeshFacts mesh_facts(const TriangleMesh& mesh, std::uint32_t components) {
+MeshFacts mesh_facts(const PolygonMesh& mesh, std::uint32_t components) {
   std::vector<std::uint8_t> used(mesh.positions.size(), 0);
-  for (const auto& t : mesh.triangles)
-    for (VertexId v : t) used[v] = 1;
+  for (VertexId v : mesh.corners) used[v] = 1;
   MeshFacts facts;
   facts.vertices = static_cast<std::uint64_t>(std::count(used.begin(), used.end(), 1));
-  facts.triangles = mesh.triangles.size();
+  facts.triangles = mesh.face_count();
   facts.edges = 3 * facts.triangles / 2;
   const std::int64_t euler =
       std::int64_t(facts.vertices) - std::int64_t(facts.edges) + std::int64_t(facts.triangles);

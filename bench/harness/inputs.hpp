@@ -19,7 +19,7 @@ struct InputSpec {
   std::string note;                      ///< how it was made, e.g. "regular (not simplified)"
   std::uint64_t expected_triangles = 0;  ///< known before loading (0 for files): sorts inputs
   std::optional<std::uint64_t> expected_genus;  ///< what the generator promises
-  std::function<TriangleMesh()> load;
+  std::function<PolygonMesh()> load;            ///< an all-triangle mesh
 };
 
 /// Every mesh file (.off, .obj, .ply, optionally .gz) directly in `directory`, smallest file
@@ -42,6 +42,6 @@ struct MeshFacts {
   std::uint64_t vertices = 0, edges = 0, triangles = 0;
   std::int64_t genus = 0;
 };
-MeshFacts mesh_facts(const TriangleMesh& mesh, std::uint32_t components);
+MeshFacts mesh_facts(const PolygonMesh& mesh, std::uint32_t components);
 
 }  // namespace petersen::bench

@@ -102,8 +102,8 @@ int main(int argc, char** argv) {
     std::cerr << "input " << spec.name << " (" << spec.note << ")\n";
     try {
       const auto start = std::chrono::steady_clock::now();
-      const petersen::TriangleMesh mesh = spec.load();
-      if (mesh.triangles.size() > max_triangles) continue;
+      const petersen::PolygonMesh mesh = spec.load();
+      if (mesh.face_count() > max_triangles) continue;
       const std::chrono::duration<double> loading = std::chrono::steady_clock::now() - start;
       InputResult result = runner.run(spec, mesh, loading.count());
       if (spec.expected_genus && result.facts.genus != std::int64_t(*spec.expected_genus)) {

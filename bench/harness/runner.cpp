@@ -63,7 +63,7 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 Runner::Runner(std::vector<Contestant> contestants, RunnerOptions options)
     : contestants_(std::move(contestants)), options_(options) {}
 
-InputResult Runner::run(const InputSpec& spec, const TriangleMesh& mesh, double load_seconds) {
+InputResult Runner::run(const InputSpec& spec, const PolygonMesh& mesh, double load_seconds) {
   InputResult result{spec, {}, 0, load_seconds, 0, {}};
   const auto start = std::chrono::steady_clock::now();
   const Dual dual = build_dual(mesh);

@@ -54,7 +54,7 @@ class Runner {
   /// Builds and validates the dual graph of the input's mesh (loaded by the caller in
   /// `load_seconds`), then runs every contestant on it. Throws MeshError or GraphError for a
   /// broken input.
-  InputResult run(const InputSpec& spec, const TriangleMesh& mesh, double load_seconds);
+  InputResult run(const InputSpec& spec, const PolygonMesh& mesh, double load_seconds);
 
   /// Whether any run returned a matching that failed verification, or crashed or threw.
   bool any_failure() const { return any_failure_; }

@@ -25,8 +25,8 @@ double squared_length(const Positions& positions, VertexId a, VertexId b) {
 
 }  // namespace
 
-TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) {
-  Triangulation tri = Triangulation::from_mesh(to_polygon_mesh(mesh));
+PolygonMesh simplify(const PolygonMesh& mesh, std::uint64_t target_triangles) {
+  Triangulation tri = Triangulation::from_mesh(mesh);
   Positions positions = mesh.positions;
   lrs::VertexMarks marks(tri.vertex_capacity());
   // Min-heap of (squared length when pushed, edge); an entry whose length is stale is re-pushed.
@@ -65,19 +65,17 @@ TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles) 
   }
 
   // Keep only the referenced vertices, numbered in order of first use.
-  TriangleMesh simplified = to_triangle_mesh(tri.to_mesh(positions));
+  const PolygonMesh simplified = tri.to_mesh(positions);
   std::vector<VertexId> renumbered(simplified.positions.size(), kNoNode);
-  TriangleMesh compact;
-  for (auto& triangle : simplified.triangles) {
-    for (VertexId& corner : triangle) {
-      if (renumbered[corner] == kNoNode) {
-        renumbered[corner] = static_cast<VertexId>(compact.positions.size());
-        compact.positions.push_back(simplified.positions[corner]);
-      }
-      corner = renumbered[corner];
+  PolygonMesh compact;
+  compact.corners.reserve(simplified.corners.size());
+  for (const VertexId corner : simplified.corners) {
+    if (renumbered[corner] == kNoNode) {
+      renumbered[corner] = static_cast<VertexId>(compact.positions.size());
+      compact.positions.push_back(simplified.positions[corner]);
     }
+    compact.corners.push_back(renumbered[corner]);
   }
-  compact.triangles = std::move(simplified.triangles);
   return compact;
 }
 

@@ -13,6 +13,6 @@ namespace petersen::bench {
 /// most `target_triangles` remain; genus and connectivity are kept, because every contraction
 /// passes the link condition. Unreferenced vertices are dropped. Throws std::runtime_error if no
 /// contractible edge is left first. O(F log F).
-TriangleMesh simplify(const TriangleMesh& mesh, std::uint64_t target_triangles);
+PolygonMesh simplify(const PolygonMesh& mesh, std::uint64_t target_triangles);
 
 }  // namespace petersen::bench

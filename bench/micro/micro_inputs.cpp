@@ -17,7 +17,7 @@ const MicroInput& plate_input(std::uint64_t triangles) {
   if (!slot) {
     // Subdivision s multiplies the triangles of the unsubdivided plate by s².
     PlateSpec spec{8, 8, 1, true};
-    const std::uint64_t unit = voxel_plate(spec).triangles.size();
+    const std::uint64_t unit = voxel_plate(spec).face_count();
     while (unit * (spec.subdivision + 1) * (spec.subdivision + 1) <= triangles) ++spec.subdivision;
     slot = std::make_unique<MicroInput>();
     slot->mesh = voxel_plate(spec);

@@ -10,7 +10,7 @@ namespace petersen::micro {
 /// A genus-0 plate with 8×8 dents (petersen's voxel_plate), the finest with at most `triangles`
 /// triangles (at least a quarter of that), and its dual; built on first use and kept.
 struct MicroInput {
-  TriangleMesh mesh;
+  PolygonMesh mesh;
   Dual dual;
 };
 const MicroInput& plate_input(std::uint64_t triangles);

@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <numbers>
 
-#include "petersen/mesh/vec3.hpp"
 #include "petersen/graph/parallel.hpp"
+#include "petersen/mesh/vec3.hpp"
 
 namespace petersen {
 
@@ -71,27 +71,10 @@ double quad_corner_deviation(const Vec& a, const Vec& b, const Vec& c, const Vec
   if (theta < 0) theta += 360.0;
   if (theta < 360.0 && worst_key >= 0) return std::abs(90.0 - theta);
   // A wrapped worst corner, or no corner's angle defined (NaN from overflowing products, which
-  // the maximum skips as before).
+  // std::max skips): all four are measured.
   double deviation_max = 0;
   for (int k = 0; k < 4; ++k) deviation_max = std::max(deviation_max, deviation(k));
   return deviation_max;
-}
-
-HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual) {
-  const CubicGraph& graph = dual.graph;
-  HugeVector<double> cost(graph.edge_count());
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    // Halfedge 3t + k runs from corner k to corner k + 1 of triangle t; its twin runs back.
-    const HalfedgeId h1 = dual.side(e, 0), h2 = dual.side(e, 1);
-    const auto& t1 = mesh.triangles[h1 / 3];
-    const auto& t2 = mesh.triangles[h2 / 3];
-    const int k = static_cast<int>(h1 % 3), j = static_cast<int>(h2 % 3);
-    // The quad of quads_from_matching: (a[k], b[j + 2], a[k + 1], a[k + 2]).
-    const auto& p = mesh.positions;
-    cost[e] =
-        quad_corner_deviation(p[t1[k]], p[t2[(j + 2) % 3]], p[t1[(k + 1) % 3]], p[t1[(k + 2) % 3]]);
-  }
-  return cost;
 }
 
 HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh,
@@ -102,11 +85,11 @@ HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const Polyg
     const std::size_t at = 2 * std::size_t{e};
     return graph.edge_ends[at] == v ? graph.edge_ends[at + 1] : graph.edge_ends[at];
   };
-  // The fourth corner's position, read from the neighbour's face, was 40 % of the measure's
-  // samples (armadillo-sub2, perf), and each step to it is a random read: a node's edges' ends are
-  // fetched 24 nodes ahead, its neighbours' faces 16 ahead, their corners' positions 8 ahead.
-  // Inlined by force: GCC 12 takes a function whose only effect is prefetching for one without
-  // effects and deletes the calls (the first version of this had no prefetch left in it).
+  // Reaching the fourth corner's position, through the neighbour's face, is a chain of random
+  // reads that dominates the measure on large meshes: a node's edges' ends are fetched 24 nodes
+  // ahead, its neighbours' faces 16 ahead, their corners' positions 8 ahead. Inlined by force:
+  // GCC 12 takes a function whose only effect is prefetching for one without effects and deletes
+  // the calls.
   enum class Ahead { ends, faces, positions };
   auto prefetch_edge = [&](NodeId v, EdgeId e, Ahead what) __attribute__((always_inline)) {
     if (e == kNoEdge) return;
@@ -181,8 +164,8 @@ QualityFigures quality_figures_in_place(std::span<double> costs) {
     figures.nonconvex += c > 90;
   }
   // Nearest rank: the smallest cost with at least p of them at most, the k-th smallest. Two
-  // selections instead of a sort (armadillo-sub2's 691,856 quads: the sort was 4 % of a whole
-  // `petersen quad` run); the p95 selection only looks above the median.
+  // selections, O(q), where a sort of a large mesh's costs is a visible part of a whole
+  // `petersen quad` run; the p95 selection only looks above the median.
   auto rank_index = [&](double p) {
     const auto k = static_cast<std::size_t>(std::ceil(p * double(costs.size())));
     return std::max<std::size_t>(k, 1) - 1;

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "petersen/mesh/surface_check.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 
 namespace petersen {
 
@@ -106,7 +106,7 @@ QuadCheck check_quad_mesh(const TriangleMesh& source, const QuadMesh& quads) {
   }
   const std::int64_t vertices = std::count(used.begin(), used.end(), 3);
   const std::int64_t chi = vertices - std::int64_t(edges) + std::int64_t(quads.quads.size());
-  const std::int64_t source_chi = inspect_surface(source).euler_characteristic;
+  const std::int64_t source_chi = inspect_mesh(to_polygon_mesh(source)).euler_characteristic;
   if (chi != source_chi) {
     return fail("Euler characteristic " + std::to_string(chi) + " differs from the source's " +
                 std::to_string(source_chi));

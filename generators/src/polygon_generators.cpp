@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <numbers>
-#include <random>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -12,6 +11,7 @@
 #include <vector>
 
 #include "petersen/generators/surface_generators.hpp"
+#include "petersen/graph/seeded_random.hpp"
 
 namespace petersen {
 
@@ -74,8 +74,8 @@ std::span<const std::pair<std::uint64_t, std::uint32_t>> halfedges_on(
 
 // Draw i (0, 1, 2, ...) of a partial Fisher-Yates pass over `pool`: draws 0..i are distinct
 // entries of the pool, each uniform among those left.
-std::uint32_t draw_from(std::vector<std::uint32_t>& pool, std::size_t i, std::mt19937_64& rng) {
-  const std::size_t j = i + rng() % (pool.size() - i);
+std::uint32_t draw_from(std::vector<std::uint32_t>& pool, std::size_t i, SeededRandom& rng) {
+  const std::size_t j = i + rng.below64(pool.size() - i);
   std::swap(pool[i], pool[j]);
   return pool[i];
 }
@@ -251,9 +251,9 @@ PolygonMesh jittered_grid(const JitteredGrid& spec) {
                                 std::to_string(nx) + " x " + std::to_string(ny));
   }
   PolygonMesh mesh = open_grid(nx, ny);  // also checks the sizes
-  std::mt19937_64 rng(spec.seed);
+  SeededRandom rng(spec.seed);
   // A uniform double in [-1, 1) from the top 53 bits, the same on every standard library.
-  auto unit = [&] { return double(rng() >> 11) * 0x1p-52 - 1.0; };
+  auto unit = [&] { return double(rng.next() >> 11) * 0x1p-52 - 1.0; };
   // Lattice point (x, y), moved, in lattice units.
   const std::uint32_t columns = spec.torus ? nx : nx + 1, rows = spec.torus ? ny : ny + 1;
   std::vector<std::array<double, 2>> lattice(std::size_t{columns} * rows);
@@ -282,7 +282,7 @@ PolygonMesh jittered_grid(const JitteredGrid& spec) {
       const VertexId p00 = vertex(x, y), p10 = vertex(x + 1, y), p11 = vertex(x + 1, y + 1),
                      p01 = vertex(x, y + 1);
       VertexId* c = mesh.corners.data() + 6 * (std::size_t{y} * nx + x);
-      const bool along_p00_p11 = rng() >> 63;
+      const bool along_p00_p11 = rng.next() >> 63;
       const std::array<VertexId, 6> faces =
           along_p00_p11 ? std::array<VertexId, 6>{p00, p10, p11, p00, p11, p01}
                         : std::array<VertexId, 6>{p00, p10, p01, p10, p11, p01};
@@ -293,7 +293,7 @@ PolygonMesh jittered_grid(const JitteredGrid& spec) {
 }
 
 PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  SeededRandom rng(seed);
   const std::size_t faces = mesh.face_count(), vertices = mesh.positions.size();
   // Faces around each vertex, as flat arrays.
   std::vector<std::uint32_t> start(vertices + 1, 0), around(mesh.corners.size());
@@ -311,10 +311,10 @@ PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint6
   std::vector<std::uint32_t> stamp(faces, 0);
   std::vector<FaceId> patch;
   for (std::uint32_t hole = 1; hole <= holes && alive.size() > 1; ++hole) {
-    const FaceId f = alive[rng() % alive.size()];
+    const FaceId f = alive[rng.below64(alive.size())];
     patch.assign(1, f);
     stamp[f] = hole;
-    if (rng() % 2) {
+    if (rng.below64(2)) {
       for (VertexId v : mesh.face(f)) {
         for (std::uint32_t k = start[v]; k < start[v + 1]; ++k) {
           const FaceId g = around[k];
@@ -342,7 +342,7 @@ PolygonMesh punch_holes(const PolygonMesh& mesh, std::uint32_t holes, std::uint6
 }
 
 PolygonMesh merge_into_polygons(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  SeededRandom rng(seed);
   const std::size_t faces = mesh.face_count();
   const std::vector<FaceId> face_of = face_of_corners(mesh);
   const auto halfedges = sorted_halfedges(mesh, face_of);
@@ -361,13 +361,13 @@ PolygonMesh merge_into_polygons(const PolygonMesh& mesh, std::uint32_t count, st
     const FaceId seed_face = draw_from(pool, i, rng);
     if (taken[seed_face]) continue;
     ++made;
-    const std::size_t target = 4 + rng() % 2;  // a quad or a pentagon
+    const std::size_t target = 4 + rng.below64(2);  // a quad or a pentagon
     const auto corners = mesh.face(seed_face);
     std::vector<VertexId> polygon(corners.begin(), corners.end());
     std::vector<FaceId> members{seed_face};
     while (polygon.size() < target) {
       // The first side, from a random one on, across which a free triangle can join.
-      const std::size_t offset = rng() % polygon.size();
+      const std::size_t offset = rng.below64(polygon.size());
       bool grown = false;
       for (std::size_t s = 0; s < polygon.size() && !grown; ++s) {
         const std::size_t k = (offset + s) % polygon.size();
@@ -411,7 +411,7 @@ PolygonMesh merge_into_polygons(const PolygonMesh& mesh, std::uint32_t count, st
 }
 
 PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  SeededRandom rng(seed);
   PolygonMesh out = mesh;
   if (mesh.face_count() == 0 || count == 0) return out;
   const std::vector<FaceId> face_of = face_of_corners(mesh);
@@ -425,7 +425,7 @@ PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t
   }
   if (candidates.empty()) candidates = iota_pool(mesh.corners.size());
   for (std::uint32_t k = 0; k < count; ++k) {
-    const std::uint32_t c = candidates[rng() % candidates.size()];
+    const std::uint32_t c = candidates[rng.below64(candidates.size())];
     const VertexId a = mesh.corners[c], b = mesh.corners[next_corner(mesh, face_of, c)];
     // Newell's normal of the face, then a point beside the edge's midpoint along it.
     Point normal{0, 0, 0};
@@ -444,7 +444,7 @@ PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t
     const Point d{pb[0] - pa[0], pb[1] - pa[1], pb[2] - pa[2]};
     const double length = dot(d, d) > 0 ? std::sqrt(dot(d, d)) : 1.0;
     // Fins on one edge differ in height, so that no two new vertices coincide.
-    const double height = length * (0.5 + double(rng() % 1024) / 2048);
+    const double height = length * (0.5 + double(rng.below64(1024)) / 2048);
     const VertexId apex = static_cast<VertexId>(out.positions.size());
     out.positions.push_back({(pa[0] + pb[0]) / 2 + height * normal[0],
                              (pa[1] + pb[1]) / 2 + height * normal[1],
@@ -456,7 +456,7 @@ PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t
 }
 
 PolygonMesh pinch_vertices(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  SeededRandom rng(seed);
   PolygonMesh out = mesh;
   const std::size_t faces = mesh.face_count(), vertices = mesh.positions.size();
   if (faces == 0 || count == 0) return out;
@@ -485,8 +485,8 @@ PolygonMesh pinch_vertices(const PolygonMesh& mesh, std::uint32_t count, std::ui
   std::uint32_t done = 0;
   const std::uint64_t attempts = 16 * std::uint64_t{count} + 64;
   for (std::uint64_t attempt = 1; attempt <= attempts && done < count; ++attempt) {
-    const VertexId u = mesh.corners[rng() % mesh.corners.size()];
-    const VertexId w = mesh.corners[rng() % mesh.corners.size()];
+    const VertexId u = mesh.corners[rng.below64(mesh.corners.size())];
+    const VertexId w = mesh.corners[rng.below64(mesh.corners.size())];
     if (u == w || touched[u] || touched[w]) continue;
     neighbourhood(u, around_u);
     neighbourhood(w, around_w);
@@ -504,7 +504,7 @@ PolygonMesh pinch_vertices(const PolygonMesh& mesh, std::uint32_t count, std::ui
 }
 
 PolygonMesh flip_faces(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
+  SeededRandom rng(seed);
   PolygonMesh out = mesh;
   std::vector<std::uint32_t> pool = iota_pool(mesh.face_count());
   const std::size_t flips = std::min<std::size_t>(count, pool.size());
@@ -534,24 +534,25 @@ PolygonMesh concatenate(std::span<const PolygonMesh> meshes) {
 }
 
 PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size) {
-  std::mt19937_64 rng(seed);
-  const std::uint32_t components = rng() % 4 == 0 ? 2 + rng() % 2 : 1;
+  SeededRandom rng(seed);
+  const std::uint32_t components = rng.below64(4) == 0 ? 2 + rng.below64(2) : 1;
   const std::uint32_t target = std::max<std::uint32_t>(size / components, 1);
   std::vector<PolygonMesh> parts;
   for (std::uint32_t part = 0; part < components; ++part) {
     PolygonMesh mesh;
-    switch (rng() % 4) {
+    switch (rng.below64(4)) {
       case 0: {
         // The genus-g plate has 12 triangles for g = 0 and 64 + 36(g - 1) after; splits add two.
-        const std::uint32_t genus = rng() % (1 + std::min<std::uint32_t>(3, target / 64));
+        const std::uint32_t genus = rng.below64(1 + std::min<std::uint32_t>(3, target / 64));
         const std::uint32_t base = genus == 0 ? 12 : 64 + 36 * (genus - 1);
         const std::uint32_t splits = target > base ? (target - base) / 2 : 0;
-        mesh = to_polygon_mesh(random_closed_surface(genus, splits, splits, rng()));
+        mesh = random_closed_surface(genus, splits, splits, rng.next());
         break;
       }
       case 1: {
         const std::uint32_t side = static_cast<std::uint32_t>(std::sqrt(target / 2.0));
-        const auto u = std::max<std::uint32_t>(3, side + static_cast<std::uint32_t>(rng() % 3));
+        const auto u =
+            std::max<std::uint32_t>(3, side + static_cast<std::uint32_t>(rng.below64(3)));
         mesh = klein_bottle(u, std::max<std::uint32_t>(3, target / (2 * u)));
         break;
       }
@@ -563,7 +564,8 @@ PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size) {
       }
       default: {
         const std::uint32_t side = static_cast<std::uint32_t>(std::sqrt(target / 2.0));
-        const auto nx = std::max<std::uint32_t>(1, side + static_cast<std::uint32_t>(rng() % 3));
+        const auto nx =
+            std::max<std::uint32_t>(1, side + static_cast<std::uint32_t>(rng.below64(3)));
         mesh = open_grid(nx, std::max<std::uint32_t>(1, target / (2 * nx)));
         break;
       }
@@ -572,9 +574,9 @@ PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size) {
     // draw per statement: the order of evaluation of call arguments is unspecified).
     const std::uint32_t faces = static_cast<std::uint32_t>(mesh.face_count());
     auto maybe = [&](std::uint32_t one_in, std::uint32_t most, auto step) {
-      if (rng() % one_in != 0) return;
-      const auto how_many = static_cast<std::uint32_t>(1 + rng() % most);
-      const std::uint64_t step_seed = rng();
+      if (rng.below64(one_in) != 0) return;
+      const auto how_many = static_cast<std::uint32_t>(1 + rng.below64(most));
+      const std::uint64_t step_seed = rng.next();
       mesh = step(mesh, how_many, step_seed);
     };
     maybe(2, 1 + faces / 6, merge_into_polygons);
@@ -585,9 +587,9 @@ PolygonMesh random_mixed_mesh(std::uint64_t seed, std::uint32_t size) {
   }
   PolygonMesh mesh = parts.size() == 1 ? std::move(parts[0]) : concatenate(parts);
   // Pinching after the components are put together may join two of them at a vertex.
-  if (rng() % 4 == 0) {
-    const auto pinches = static_cast<std::uint32_t>(1 + rng() % 2);
-    mesh = pinch_vertices(mesh, pinches, rng());
+  if (rng.below64(4) == 0) {
+    const auto pinches = static_cast<std::uint32_t>(1 + rng.below64(2));
+    mesh = pinch_vertices(mesh, pinches, rng.next());
   }
   return mesh;
 }

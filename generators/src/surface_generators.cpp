@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <array>
-#include <random>
 #include <unordered_map>
 #include <vector>
 
+#include "petersen/graph/seeded_random.hpp"
 #include "petersen/mesh/edge_groups.hpp"
 
 namespace petersen {
@@ -42,7 +42,7 @@ std::uint64_t PlateShape::genus() const {
   return dents ? 0 : std::uint64_t{holes_x} * holes_y;
 }
 
-TriangleMesh plate_mesh(const PlateShape& shape) {
+PolygonMesh plate_mesh(const PlateShape& shape) {
   const std::array<std::vector<std::uint32_t>, 3> offsets = {
       cell_offsets(shape.holes_x, shape.wall_x, shape.hole_x),
       cell_offsets(shape.holes_y, shape.wall_y, shape.hole_y),
@@ -59,8 +59,8 @@ TriangleMesh plate_mesh(const PlateShape& shape) {
     return !(hole_column && (!shape.dents || c[2] == 1));
   };
 
-  TriangleMesh mesh;
-  mesh.triangles.reserve(shape.triangle_count());
+  PolygonMesh mesh;
+  mesh.corners.reserve(3 * shape.triangle_count());
   mesh.positions.reserve(shape.triangle_count() / 2 + 2);
   std::unordered_map<std::uint64_t, VertexId> vertex_at;
   vertex_at.reserve(shape.triangle_count() / 2 + 2);
@@ -97,13 +97,8 @@ TriangleMesh plate_mesh(const PlateShape& shape) {
                   p[d] = j + dj[k];
                   quad[k] = vertex(p);
                 }
-                if (side) {
-                  mesh.triangles.push_back({quad[0], quad[1], quad[2]});
-                  mesh.triangles.push_back({quad[0], quad[2], quad[3]});
-                } else {
-                  mesh.triangles.push_back({quad[0], quad[2], quad[1]});
-                  mesh.triangles.push_back({quad[0], quad[3], quad[2]});
-                }
+                const int order[2][6] = {{0, 2, 1, 0, 3, 2}, {0, 1, 2, 0, 2, 3}};
+                for (int k : order[side]) mesh.corners.push_back(quad[k]);
               }
             }
           }
@@ -119,47 +114,53 @@ PlateShape uniform_plate(std::uint32_t holes_x, std::uint32_t holes_y, bool dent
   return {holes_x, holes_y, units, units, units, units, units, dents ? units : 0, dents};
 }
 
-TriangleMesh voxel_plate(const PlateSpec& spec) {
+PolygonMesh voxel_plate(const PlateSpec& spec) {
   return plate_mesh(uniform_plate(spec.holes_x, spec.holes_y, spec.dents, spec.subdivision));
 }
 
-TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
-                                     std::uint64_t seed) {
-  // Draws are the engine's raw output modulo a size: mt19937_64's output is fixed by the
-  // standard, so a seed gives the same mesh on every library (the example's regeneration command
-  // in README.md relies on it); no std distribution, whose results differ between libraries.
-  std::mt19937_64 rng(seed);
-  auto& tris = mesh.triangles;
-  tris.reserve(tris.size() + 2 * std::size_t{splits});
+namespace {
+
+// 1-to-3 splits of random triangles, the new vertex at the centroid: triangle t = (a, b, c)
+// becomes (a, b, m) and (b, c, m), (c, a, m) are appended.
+void split_triangles(PolygonMesh& mesh, std::uint32_t splits, SeededRandom& rng) {
+  auto& corners = mesh.corners;
+  corners.reserve(corners.size() + 6 * std::size_t{splits});
   mesh.positions.reserve(mesh.positions.size() + splits);
   for (std::uint32_t k = 0; k < splits; ++k) {
-    FaceId t = static_cast<FaceId>(rng() % tris.size());
-    auto [a, b, c] = tris[t];
+    const FaceId t = static_cast<FaceId>(rng.below64(mesh.face_count()));
+    const VertexId a = corners[3 * t], b = corners[3 * t + 1], c = corners[3 * t + 2];
     std::array<double, 3> centroid{};
     for (int d = 0; d < 3; ++d) {
       centroid[d] = (mesh.positions[a][d] + mesh.positions[b][d] + mesh.positions[c][d]) / 3;
     }
-    VertexId m = static_cast<VertexId>(mesh.positions.size());
+    const VertexId m = static_cast<VertexId>(mesh.positions.size());
     mesh.positions.push_back(centroid);
-    tris[t] = {a, b, m};
-    tris.push_back({b, c, m});
-    tris.push_back({c, a, m});
+    corners[3 * t + 2] = m;
+    for (VertexId v : {b, c, m, c, a, m}) corners.push_back(v);
   }
-  // Edge flips on halfedges: halfedge 3t + k runs from corner k of triangle t to corner k + 1,
-  // and twin[h] is the halfedge running back along the same edge (4 bytes per halfedge, where a
-  // map of directed edges cost ten times that and a hash per step).
-  const std::uint32_t halfedges = static_cast<std::uint32_t>(3 * tris.size());
-  HugeVector<std::uint32_t> twin(halfedges);
-  {
-    const EdgeGroups groups = group_halfedges(mesh, {});
-    for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
-      if (end - first != 2) throw MeshError("randomize_triangulation: the mesh is not closed");
-      twin[groups.entries[first][1]] = groups.entries[first + 1][1];
-      twin[groups.entries[first + 1][1]] = groups.entries[first][1];
-    });
-  }
-  auto from = [&](std::uint32_t h) { return tris[h / 3][h % 3]; };
-  auto to = [&](std::uint32_t h) { return tris[h / 3][(h % 3 + 1) % 3]; };
+}
+
+// twin[h]: the halfedge running back along halfedge h's edge (halfedge 3t + k runs from corner k
+// of triangle t to corner k + 1). 4 bytes per halfedge, where a map of directed edges costs ten
+// times that and a hash per step. Throws MeshError unless every edge has two halfedges.
+HugeVector<std::uint32_t> twins(const PolygonMesh& mesh) {
+  HugeVector<std::uint32_t> twin(mesh.corners.size());
+  const EdgeGroups groups = PolygonHalfedges(mesh).group();
+  for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
+    if (end - first != 2) throw MeshError("randomize_triangulation: the mesh is not closed");
+    twin[groups.entries[first][1]] = groups.entries[first + 1][1];
+    twin[groups.entries[first + 1][1]] = groups.entries[first][1];
+  });
+  return twin;
+}
+
+// About `flips` random edge flips on the halfedges of a closed triangulation, each kept only when
+// the triangulation stays simplicial.
+void flip_edges(PolygonMesh& mesh, std::uint32_t flips, SeededRandom& rng) {
+  auto& corners = mesh.corners;
+  HugeVector<std::uint32_t> twin = twins(mesh);
+  auto from = [&](std::uint32_t h) { return corners[h]; };
+  auto to = [&](std::uint32_t h) { return corners[h - h % 3 + (h % 3 + 1) % 3]; };
   auto next = [](std::uint32_t h) { return h - h % 3 + (h % 3 + 1) % 3; };
   auto prev = [](std::uint32_t h) { return h - h % 3 + (h % 3 + 2) % 3; };
   // Whether the halfedge w -> z exists: a walk around w, from its halfedge `start`.
@@ -172,11 +173,11 @@ TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, st
     return false;
   };
   std::vector<std::uint32_t> degree(mesh.positions.size(), 0);
-  for (const auto& t : tris)
-    for (VertexId v : t) ++degree[v];
+  for (VertexId v : corners) ++degree[v];
+  const std::size_t face_count = mesh.face_count();
   for (std::uint32_t k = 0; k < flips; ++k) {
-    FaceId t = static_cast<FaceId>(rng() % tris.size());
-    int corner = static_cast<int>(rng() % 3);
+    const FaceId t = static_cast<FaceId>(rng.below64(face_count));
+    const int corner = static_cast<int>(rng.below64(3));
     const std::uint32_t h = 3 * t + corner, g = twin[h];
     const FaceId t2 = g / 3;
     const VertexId u = from(h), v = to(h), w = from(prev(h)), z = from(prev(g));
@@ -187,9 +188,9 @@ TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, st
     // their twins, which are told their new halfedges.
     const std::uint32_t vw = twin[next(h)], wu = twin[prev(h)], uz = twin[next(g)],
                         zv = twin[prev(g)];
-    tris[t] = {u, z, w};
-    tris[t2] = {z, v, w};
     const std::uint32_t a = 3 * t, b = 3 * t2;
+    corners[a] = u, corners[a + 1] = z, corners[a + 2] = w;
+    corners[b] = z, corners[b + 1] = v, corners[b + 2] = w;
     auto join = [&](std::uint32_t x, std::uint32_t y) {
       twin[x] = y;
       twin[y] = x;
@@ -204,16 +205,31 @@ TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, st
     ++degree[w];
     ++degree[z];
   }
+}
+
+}  // namespace
+
+PolygonMesh randomize_triangulation(PolygonMesh mesh, std::uint32_t splits, std::uint32_t flips,
+                                    std::uint64_t seed) {
+  if (!mesh.all_triangles()) {
+    throw MeshError("randomize_triangulation: every face must be a triangle");
+  }
+  // SeededRandom's draws are fixed by its code, so a seed gives the same mesh on every platform
+  // and library (the example's regeneration command in README.md relies on it).
+  SeededRandom rng(seed);
+  split_triangles(mesh, splits, rng);
+  flip_edges(mesh, flips, rng);
   return mesh;
 }
 
-TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
-                                   std::uint64_t seed) {
+PolygonMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
+                                  std::uint64_t seed) {
   return randomize_triangulation(voxel_plate({genus, genus == 0 ? 0u : 1u, 1, false}), splits,
                                  flips, seed);
 }
 
-TriangleMesh spatially_ordered(const TriangleMesh& mesh) {
+PolygonMesh spatially_ordered(const PolygonMesh& mesh) {
+  if (!mesh.all_triangles()) throw MeshError("spatially_ordered: every face must be a triangle");
   std::array<double, 3> low{}, high{};
   for (int d = 0; d < 3; ++d) {
     low[d] = mesh.positions.empty() ? 0 : mesh.positions[0][d];
@@ -235,12 +251,13 @@ TriangleMesh spatially_ordered(const TriangleMesh& mesh) {
     x = (x | x << 2) & 0x1249249249249249ull;
     return x;
   };
-  HugeVector<std::array<std::uint64_t, 2>> order(mesh.triangles.size());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+  const std::size_t face_count = mesh.face_count();
+  HugeVector<std::array<std::uint64_t, 2>> order(face_count);
+  for (std::size_t t = 0; t < face_count; ++t) {
     std::uint64_t key = 0;
     for (int d = 0; d < 3; ++d) {
       double c = 0;
-      for (VertexId v : mesh.triangles[t]) c += mesh.positions[v][d];
+      for (int k = 0; k < 3; ++k) c += mesh.positions[mesh.corners[3 * t + k]][d];
       const double extent = high[d] - low[d];
       const double unit = extent > 0 ? (c / 3 - low[d]) / extent : 0;
       key |= spread(static_cast<std::uint64_t>(std::clamp(unit, 0.0, 1.0) * 0x1FFFFF)) << d;
@@ -248,19 +265,20 @@ TriangleMesh spatially_ordered(const TriangleMesh& mesh) {
     order[t] = {key, t};
   }
   std::sort(order.begin(), order.end());
-  TriangleMesh out;
-  out.triangles.resize(mesh.triangles.size());
+  PolygonMesh out;
+  out.corners.resize(mesh.corners.size());
   HugeVector<VertexId> renamed(mesh.positions.size(), 0xFFFFFFFFu);
   out.positions.reserve(mesh.positions.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
-    const auto& t = mesh.triangles[order[i][1]];
+    const std::size_t t = order[i][1];
     for (int k = 0; k < 3; ++k) {
-      VertexId& id = renamed[t[k]];
+      const VertexId v = mesh.corners[3 * t + k];
+      VertexId& id = renamed[v];
       if (id == 0xFFFFFFFFu) {
         id = static_cast<VertexId>(out.positions.size());
-        out.positions.push_back(mesh.positions[t[k]]);
+        out.positions.push_back(mesh.positions[v]);
       }
-      out.triangles[i][k] = id;
+      out.corners[3 * i + k] = id;
     }
   }
   // Vertices no triangle uses keep their place at the end, in their order.

@@ -64,11 +64,6 @@ PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped
   return parse(read_file_bytes(path).view(), format, path, FaceKinds::polygons, dropped);
 }
 
-TriangleMesh parse_triangle_mesh(std::string_view bytes, MeshFormat format,
-                                 const std::string& source) {
-  return to_triangles(parse(bytes, format, source, FaceKinds::triangles, nullptr));
-}
-
 TriangleMesh read_triangle_mesh(const std::string& path) {
   const MeshFormat format = mesh_format_of(path);
   // The file's bytes are freed at the end of this statement, before the conversion.

@@ -122,14 +122,6 @@ void write_view(const std::string& path, const MeshView<FaceAt>& mesh) {
   }
 }
 
-// Triangle and quad meshes: every face has N corners.
-template <std::size_t N>
-void write_fixed(const std::string& path, std::span<const std::array<double, 3>> positions,
-                 std::span<const std::array<VertexId, N>> faces) {
-  auto face = [faces](std::size_t f) { return std::span<const VertexId>(faces[f]); };
-  write_view(path, MeshView<decltype(face)>{positions, faces.size(), N * faces.size(), N, face});
-}
-
 }  // namespace
 
 std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& mesh) {
@@ -155,14 +147,6 @@ std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& 
   write_view(path, MeshView<decltype(face)>{mesh.positions, mesh.face_count(), mesh.corners.size(),
                                             max_arity, face});
   return dropped;
-}
-
-void write_quad_mesh(const std::string& path, const QuadMesh& mesh) {
-  write_fixed<4>(path, mesh.positions, mesh.quads);
-}
-
-void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh) {
-  write_fixed<3>(path, mesh.positions, mesh.triangles);
 }
 
 }  // namespace petersen

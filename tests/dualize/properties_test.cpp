@@ -5,26 +5,26 @@
 #include <rapidcheck/gtest.h>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/quads.hpp"
-#include "petersen/mesh/surface_check.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
+#include "quad_check.hpp"
 
 namespace petersen {
 namespace {
 
-void check_pipeline(const TriangleMesh& mesh, std::uint32_t genus) {
+void check_pipeline(const PolygonMesh& mesh, std::uint32_t genus) {
   require_closed_surface(mesh,
                          {.allow_pinched_vertices = false, .allow_several_components = false});
-  const SurfaceReport report = inspect_surface(mesh);
+  const MeshReport report = inspect_mesh(mesh);
   RC_ASSERT(report.genus == std::optional<std::uint32_t>(genus));
   RC_ASSERT(report.euler_characteristic == 2 - 2 * std::int64_t{genus});
   const Dual dual = build_dual(mesh);
   validate_connected_bridgeless(dual.graph);
-  for (FaceId t = 0; t < mesh.triangles.size(); ++t) {
+  for (FaceId t = 0; t < mesh.face_count(); ++t) {
     for (int k = 0; k < 3; ++k) {
       const EdgeId e = dual.dual_edge(t, k);
       RC_ASSERT(dual.side(e, 0) == 3 * t + k || dual.side(e, 1) == 3 * t + k);
@@ -34,14 +34,13 @@ void check_pipeline(const TriangleMesh& mesh, std::uint32_t genus) {
       dual.graph, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const MatchingCheck matching = verify_perfect_matching(dual.graph, result.matching);
   RC_ASSERT(matching.ok());
-  const QuadCheck quads =
-      check_quad_mesh(mesh, quads_from_matching(mesh, dual.graph, result.matching));
-  RC_ASSERT(quads.ok());
+  RC_ASSERT(testing::quad_mesh_problem(
+                mesh, testing::quads_of_matching(mesh, dual.graph, result.matching)) == "");
 }
 
 RC_GTEST_PROP(SurfacePipeline, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations(genus);
   check_pipeline(mesh, genus);
 }
 

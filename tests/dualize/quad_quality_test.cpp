@@ -1,5 +1,5 @@
-// The quad measure of issue 14 (worst-corner deviation from 90°) on hand-made quads, and the
-// per-dual-edge costs against the quads quads_from_matching builds.
+// The quad measure (worst-corner deviation from 90°) on hand-made quads, and the per-edge costs
+// of the pairable graph against the quads a matching of the dual makes.
 
 #include "petersen/dualize/quad_quality.hpp"
 
@@ -12,10 +12,11 @@
 #include <numbers>
 #include <random>
 
+#include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
-#include "petersen/dualize/quads.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "quad_check.hpp"
 
 namespace petersen {
 namespace {
@@ -107,24 +108,31 @@ TEST(QuadQuality, DegenerateQuadsCostTheMaximumWithoutNaN) {
             kDegenerateQuadCost);
 }
 
-TEST(QuadQuality, DualEdgeCostIsTheCostOfTheQuadsFromMatching) {
-  const TriangleMesh mesh = random_closed_surface(2, 60, 60, 5);
+// On a closed triangle mesh the pairable graph is the dual, edge for edge (both number edges by
+// their mesh edge), and each edge's cost is that of the quad a matching of the dual makes.
+TEST(QuadQuality, PairableEdgeCostIsTheCostOfTheQuadsFromAMatchingOfTheDual) {
+  const PolygonMesh mesh = random_closed_surface(2, 60, 60, 5);
   const Dual dual = build_dual(mesh);
-  const HugeVector<double> cost = dual_edge_quality(mesh, dual);
-  ASSERT_EQ(cost.size(), dual.graph.edge_count());
+  const PairableGraph graph = build_pairable_graph(mesh);
+  ASSERT_EQ(graph.edge_count(), dual.graph.edge_count());
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    ASSERT_EQ(graph.edge_ends[2 * e], dual.graph.endpoints(e)[0]);
+    ASSERT_EQ(graph.edge_ends[2 * e + 1], dual.graph.endpoints(e)[1]);
+  }
+  const HugeVector<double> cost = pairable_edge_quality(graph, mesh);
   const Result r = perfect_matching(dual.graph);
-  const QuadMesh quads = quads_from_matching(mesh, dual.graph, r.matching);
+  const PolygonMesh quads = testing::quads_of_matching(mesh, dual.graph, r.matching);
   std::size_t q = 0;
   std::size_t checked = 0;
-  for (FaceId t = 0; t < mesh.triangles.size(); ++t) {
+  for (FaceId t = 0; t < mesh.face_count(); ++t) {
     const EdgeId e = r.matching.mate_edge[t];
     if (dual.graph.endpoints(e)[0] != t) continue;
-    const auto& c = quads.quads[q++];
+    const auto c = quads.face(static_cast<FaceId>(q++));
     const auto& p = mesh.positions;
-    // Two triangles sharing two edges (a parallel dual edge) may give quads_from_matching the
-    // other shared edge's quad; such pairs are skipped.
-    const auto& a = mesh.triangles[t];
-    const auto& b = mesh.triangles[dual.graph.other_end(e, t)];
+    // Two triangles sharing two edges (a parallel dual edge) may give quad_of the other shared
+    // edge's quad; such pairs are skipped.
+    const auto a = mesh.face(t);
+    const auto b = mesh.face(dual.graph.other_end(e, t));
     int shared = 0;
     for (VertexId x : a)
       for (VertexId y : b) shared += x == y;
@@ -132,14 +140,14 @@ TEST(QuadQuality, DualEdgeCostIsTheCostOfTheQuadsFromMatching) {
     EXPECT_DOUBLE_EQ(cost[e], quad_corner_deviation(p[c[0]], p[c[1]], p[c[2]], p[c[3]]));
     ++checked;
   }
-  EXPECT_EQ(q, quads.quads.size());
-  EXPECT_GT(checked, quads.quads.size() / 2);
+  EXPECT_EQ(q, quads.face_count());
+  EXPECT_GT(checked, quads.face_count() / 2);
 }
 
 // The pairable graph's costs are measured in blocks of 65,536 nodes on the threads: the same
 // costs, bit for bit, on one thread or three, each the cost of the quad its two faces make.
 TEST(QuadQuality, PairableEdgeCostsDoNotDependOnTheThreads) {
-  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(1, 70000, 20000, 3));
+  const PolygonMesh mesh = random_closed_surface(1, 70000, 20000, 3);
   const PairableGraph graph = build_pairable_graph(mesh);
   ASSERT_GT(graph.node_count, 2u << 16);  // three blocks
   const HugeVector<double> one = pairable_edge_quality(graph, mesh, 1);

@@ -1,26 +1,32 @@
-#include "petersen/dualize/quads.hpp"
-
 #include <gtest/gtest.h>
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "quad_check.hpp"
 
 namespace petersen {
 namespace {
 
+using testing::quad_mesh_problem;
+using testing::quads_of_matching;
+
 // An octahedron: 8 triangles, every vertex of degree 4.
-TriangleMesh octahedron() {
-  TriangleMesh mesh;
+PolygonMesh octahedron() {
+  PolygonMesh mesh;
   mesh.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  mesh.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4},
-                    {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+  mesh.corners = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
   return mesh;
+}
+
+std::array<VertexId, 4> quad(const PolygonMesh& quads, FaceId q) {
+  const auto c = quads.face(q);
+  return {c[0], c[1], c[2], c[3]};
 }
 
 TEST(Quads, KeepTheOrientationOfBothTriangles) {
   // Triangles (a, b, c) = (0, 2, 4) and (b, a, d) = (2, 0, 5) share 0-2: quad (a, d, b, c).
-  const TriangleMesh mesh = octahedron();
+  const PolygonMesh mesh = octahedron();
   const Dual dual = build_dual(mesh);
   Matching matching(8);
   for (auto [t1, t2] : {std::pair{0u, 4u}, {1u, 5u}, {2u, 6u}, {3u, 7u}}) {
@@ -29,59 +35,71 @@ TEST(Quads, KeepTheOrientationOfBothTriangles) {
       if (dual.graph.other_end(e, t1) == t2) matching.match(dual.graph, e);
     }
   }
-  const QuadMesh quads = quads_from_matching(mesh, dual.graph, matching);
-  ASSERT_EQ(quads.quads.size(), 4u);
-  EXPECT_EQ(quads.quads[0], (std::array<VertexId, 4>{0, 5, 2, 4}));
-  EXPECT_TRUE(check_quad_mesh(mesh, quads).ok()) << check_quad_mesh(mesh, quads).problem;
+  const PolygonMesh quads = quads_of_matching(mesh, dual.graph, matching);
+  ASSERT_EQ(quads.face_count(), 4u);
+  EXPECT_EQ(quad(quads, 0), (std::array<VertexId, 4>{0, 5, 2, 4}));
+  EXPECT_EQ(quad_mesh_problem(mesh, quads), "");
 }
 
 TEST(Quads, LemonMatchingGivesAValidQuadMesh) {
-  const TriangleMesh mesh = octahedron();
+  const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
   const Result result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  const QuadMesh quads = quads_from_matching(mesh, dual, result.matching);
-  EXPECT_EQ(quads.quads.size(), 4u);
-  EXPECT_TRUE(check_quad_mesh(mesh, quads).ok()) << check_quad_mesh(mesh, quads).problem;
+  const PolygonMesh quads = quads_of_matching(mesh, dual, result.matching);
+  EXPECT_EQ(quads.face_count(), 4u);
+  EXPECT_EQ(quad_mesh_problem(mesh, quads), "");
 }
 
 TEST(Quads, ImperfectMatchingIsRefused) {
-  const TriangleMesh mesh = octahedron();
+  const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  EXPECT_THROW(quads_from_matching(mesh, dual, Matching(8)), MeshError);
-  EXPECT_THROW(quads_from_matching(mesh, dual, Matching(6)), MeshError);
+  EXPECT_THROW(quads_of_matching(mesh, dual, Matching(8)), MeshError);
+  EXPECT_THROW(quads_of_matching(mesh, dual, Matching(6)), MeshError);
 }
 
 TEST(Quads, CheckFindsEachKindOfDefect) {
-  const TriangleMesh mesh = octahedron();
+  const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const QuadMesh good = quads_from_matching(
+  const PolygonMesh good = quads_of_matching(
       mesh, dual,
       perfect_matching(dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching})
           .matching);
+  // Corner k of quad q is corners[4q + k]: every face of `good` has four.
   auto problem = [&](auto edit) {
-    QuadMesh q = good;
+    PolygonMesh q = good;
     edit(q);
-    return check_quad_mesh(mesh, q).problem;
+    return quad_mesh_problem(mesh, q);
   };
-  EXPECT_EQ(problem([](QuadMesh& q) { q.positions[0][0] = 7; }),
+  EXPECT_EQ(problem([](PolygonMesh& q) { q.positions[0][0] = 7; }),
             "positions differ from the source's");
   EXPECT_NE(
-      problem([](QuadMesh& q) { q.quads[1][2] = q.quads[1][0]; }).find("quad 1 repeats vertex"),
+      problem([](PolygonMesh& q) { q.corners[6] = q.corners[4]; }).find("quad 1 repeats vertex"),
       std::string::npos);
   EXPECT_NE(
-      problem([](QuadMesh& q) { q.quads[0][1] = 77; }).find("quad 0 has corner 77 out of range"),
+      problem([](PolygonMesh& q) { q.corners[1] = 77; }).find("quad 0 has corner 77 out of range"),
       std::string::npos);
-  EXPECT_NE(problem([](QuadMesh& q) { q.quads.pop_back(); }).find("quads (first"),
+  EXPECT_NE(problem([](PolygonMesh& q) {
+              q.corners.resize(q.corners.size() - 4);
+              q.face_start.pop_back();
+            }).find("quads (first"),
             std::string::npos);
-  EXPECT_NE(problem([](QuadMesh& q) {
-              std::swap(q.quads[0][1], q.quads[0][3]);
+  EXPECT_NE(problem([](PolygonMesh& q) {
+              std::swap(q.corners[1], q.corners[3]);
             }).find("in the same direction"),
+            std::string::npos);
+  EXPECT_NE(problem([](PolygonMesh& q) {
+              PolygonMesh triangle;
+              triangle.positions = q.positions;
+              triangle.corners = {0, 2, 1};
+              q = triangle;
+            }).find("face 0 has 3 corners, not 4"),
             std::string::npos);
   // Two quads over the same four vertices in opposite directions: a closed "pillow" with a
   // different vertex set and Euler characteristic.
-  EXPECT_NE(problem([](QuadMesh& q) {
-              q.quads = {{0, 2, 1, 3}, {3, 1, 2, 0}};
+  EXPECT_NE(problem([](PolygonMesh& q) {
+              q.corners = {0, 2, 1, 3, 3, 1, 2, 0};
+              q.face_start = {0, 4, 8};
             }).find("source vertex 4 is in no quad"),
             std::string::npos);
 }

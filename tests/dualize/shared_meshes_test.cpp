@@ -6,12 +6,12 @@
 #include <gtest/gtest.h>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/dualize/quads.hpp"
-#include "petersen/io/read_mesh.hpp"
-#include "petersen/mesh/surface_check.hpp"
 #include "petersen/graph/connectivity.hpp"
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/mesh/mesh_report.hpp"
+#include "quad_check.hpp"
 
 namespace petersen {
 namespace {
@@ -31,14 +31,15 @@ TEST(SharedMeshes, ClosedOnesHaveTheListedCountsAndGenus) {
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   for (const auto& expected : testing::shared_meshes_up_to(kMaxTriangles)) {
     SCOPED_TRACE(expected.file);
-    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
-    const SurfaceReport r = inspect_surface(mesh);
-    EXPECT_EQ(r.vertices, expected.vertices);
+    const PolygonMesh mesh = read_mesh(*dir + "/" + expected.file);
+    const MeshReport r = inspect_mesh(mesh);
+    EXPECT_EQ(r.referenced_vertices, expected.vertices);
     EXPECT_EQ(r.faces, expected.triangles);
+    EXPECT_EQ(r.faces_by_arity.at(3), expected.triangles);
     EXPECT_EQ(r.genus, expected.genus);
     EXPECT_TRUE(r.closed());
     EXPECT_EQ(r.components, 1u);
-    EXPECT_EQ(r.edge_components, 1u);
+    EXPECT_EQ(r.vertex_components, 1u);
     EXPECT_TRUE(r.pinched_vertices.empty());
     EXPECT_NO_THROW(require_closed_surface(mesh, {false, false}));
   }
@@ -49,14 +50,15 @@ TEST(SharedMeshes, ClosedOnesConvertThroughLemon) {
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   for (const auto& expected : testing::shared_meshes_up_to(kMaxLemonTriangles)) {
     SCOPED_TRACE(expected.file);
-    const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
+    const PolygonMesh mesh = read_mesh(*dir + "/" + expected.file);
     const CubicGraph dual = dual_graph(mesh);
     EXPECT_NO_THROW(validate_connected_bridgeless(dual));
     const Result result = perfect_matching(
         dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
     ASSERT_TRUE(verify_perfect_matching(dual, result.matching).ok());
-    const QuadCheck check = check_quad_mesh(mesh, quads_from_matching(mesh, dual, result.matching));
-    EXPECT_TRUE(check.ok()) << check.problem;
+    EXPECT_EQ(
+        testing::quad_mesh_problem(mesh, testing::quads_of_matching(mesh, dual, result.matching)),
+        "");
   }
 }
 
@@ -64,32 +66,33 @@ TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
   const auto dir = testing::shared_mesh_dir();
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   auto report = [&](const char* file) {
-    return inspect_surface(read_triangle_mesh(*dir + "/invalid/" + file));
+    return inspect_mesh(read_mesh(*dir + "/invalid/" + file));
   };
 
-  const SurfaceReport bunny = report("stanford-bunny.obj.gz");
+  const MeshReport bunny = report("stanford-bunny.obj.gz");
   EXPECT_EQ(bunny.boundary_edges.count, 223u);
   EXPECT_EQ(bunny.unreferenced_vertices.count, 1113u);
   EXPECT_FALSE(bunny.closed());
 
-  const SurfaceReport teapot = report("teapot.obj.gz");
+  const MeshReport teapot = report("teapot.obj.gz");
   EXPECT_EQ(teapot.boundary_edges.count, 1036u);
-  EXPECT_EQ(teapot.components, 4u);
+  EXPECT_EQ(teapot.vertex_components, 4u);
+  EXPECT_EQ(teapot.components, 19u);
 
-  const SurfaceReport beetle = report("beetle.obj.gz");
+  const MeshReport beetle = report("beetle.obj.gz");
   EXPECT_EQ(beetle.non_manifold_edges.count, 47u);
   EXPECT_EQ(beetle.boundary_edges.count, 296u);
-  EXPECT_EQ(beetle.components, 2u);
+  EXPECT_EQ(beetle.vertex_components, 2u);
 
   for (const char* file : {"stanford-bunny.obj.gz", "teapot.obj.gz", "beetle.obj.gz"}) {
-    const TriangleMesh mesh = read_triangle_mesh(*dir + "/invalid/" + file);
+    const PolygonMesh mesh = read_mesh(*dir + "/invalid/" + file);
     EXPECT_THROW(require_closed_surface(mesh), MeshError) << file;
     EXPECT_THROW(dual_graph(mesh), MeshError) << file;
   }
 
   // cow: closed and edge-manifold, vertex 253 pinched; accepted and converted.
-  const TriangleMesh cow = read_triangle_mesh(*dir + "/invalid/cow.obj.gz");
-  const SurfaceReport r = inspect_surface(cow);
+  const PolygonMesh cow = read_mesh(*dir + "/invalid/cow.obj.gz");
+  const MeshReport r = inspect_mesh(cow);
   EXPECT_TRUE(r.closed());
   EXPECT_EQ(r.pinched_vertices.first, std::vector<VertexId>{253});
   EXPECT_EQ(r.euler_characteristic, 1);
@@ -104,8 +107,8 @@ TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
   EXPECT_NO_THROW(validate_connected_bridgeless(dual));
   const Result result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  const QuadCheck check = check_quad_mesh(cow, quads_from_matching(cow, dual, result.matching));
-  EXPECT_TRUE(check.ok()) << check.problem;
+  EXPECT_EQ(testing::quad_mesh_problem(cow, testing::quads_of_matching(cow, dual, result.matching)),
+            "");
 }
 
 }  // namespace

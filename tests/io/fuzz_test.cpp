@@ -9,7 +9,7 @@
 
 #include "petersen/dualize/dual.hpp"
 #include "petersen/io/read_mesh.hpp"
-#include "petersen/mesh/surface_check.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 
 namespace petersen {
 namespace {
@@ -110,9 +110,10 @@ std::string damaged(std::string bytes) {
 
 TEST(ParserFuzz, SeedsParseAsTetrahedra) {
   for (const Seed& seed : seeds()) {
-    const TriangleMesh mesh = parse_triangle_mesh(seed.bytes, seed.format, "seed");
-    EXPECT_EQ(mesh.triangles.size(), 4u);
-    EXPECT_EQ(inspect_surface(mesh).genus, 0u);
+    const PolygonMesh mesh = parse_mesh(seed.bytes, seed.format, "seed");
+    EXPECT_EQ(mesh.face_count(), 4u);
+    EXPECT_TRUE(mesh.all_triangles());
+    EXPECT_EQ(inspect_mesh(mesh).genus, 0);
   }
 }
 
@@ -120,15 +121,17 @@ RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowFileError, ()) {
   const Seed& seed = *rc::gen::elementOf(seeds());
   const std::string bytes = damaged(seed.bytes);
   try {
-    const TriangleMesh mesh = parse_triangle_mesh(bytes, seed.format, "fuzz");
-    RC_ASSERT(mesh.positions.size() + mesh.triangles.size() <= bytes.size());
-    // Whatever parsed must be safe to inspect and to dualize (which may refuse it).
-    const SurfaceReport report = inspect_surface(mesh);
-    RC_ASSERT(report.faces == mesh.triangles.size());
+    const PolygonMesh mesh = parse_mesh(bytes, seed.format, "fuzz");
+    RC_ASSERT(mesh.positions.size() + mesh.face_count() <= bytes.size());
+    // Whatever parsed must be safe to inspect and to dualize (which may refuse it: a closed
+    // surface of triangles it accepts).
+    const MeshReport report = inspect_mesh(mesh);
+    RC_ASSERT(report.faces == mesh.face_count());
+    const bool triangles = report.faces_by_arity.size() == 1 && report.faces_by_arity.count(3);
     try {
       build_dual(mesh);
     } catch (const MeshError&) {
-      RC_ASSERT(!report.closed());
+      RC_ASSERT(!report.closed() || !triangles);
     }
   } catch (const FileError& e) {
     RC_ASSERT(std::string(e.what()).rfind("fuzz", 0) == 0);  // every message names its source
@@ -136,8 +139,7 @@ RC_GTEST_PROP(ParserFuzz, MutatedFilesParseOrThrowFileError, ()) {
 }
 
 // The polygon reader on the same damaged files and on polygon seeds: FileError or a well-formed
-// mesh (every face of 3 or more corners, every corner a vertex), and the triangle reader accepts
-// exactly the all-triangle ones.
+// mesh (every face of 3 or more corners, every corner a vertex).
 const std::vector<Seed>& polygon_seeds() {
   static const std::vector<Seed> all = [] {
     std::vector<Seed> seeds = petersen::seeds();
@@ -160,23 +162,15 @@ const std::vector<Seed>& polygon_seeds() {
 RC_GTEST_PROP(ParserFuzz, MutatedPolygonFilesParseOrThrowFileError, ()) {
   const Seed& seed = *rc::gen::elementOf(polygon_seeds());
   const std::string bytes = damaged(seed.bytes);
-  bool all_triangles = false;
   try {
     const PolygonMesh mesh = parse_mesh(bytes, seed.format, "fuzz");
     RC_ASSERT(mesh.positions.size() + mesh.face_count() <= bytes.size());
-    all_triangles = mesh.all_triangles();
     for (FaceId f = 0; f < mesh.face_count(); ++f) {
       RC_ASSERT(mesh.face(f).size() >= 3u);
       for (VertexId v : mesh.face(f)) RC_ASSERT(v < mesh.positions.size());
     }
   } catch (const FileError& e) {
     RC_ASSERT(std::string(e.what()).rfind("fuzz", 0) == 0);
-  }
-  try {
-    parse_triangle_mesh(bytes, seed.format, "fuzz");
-    RC_ASSERT(all_triangles);
-  } catch (const FileError&) {
-    RC_ASSERT(!all_triangles);
   }
 }
 

@@ -37,14 +37,15 @@ std::string slurp(const fs::path& path) {
 
 TEST(ReadWrite, TriangleRoundTripThroughEveryFormatAndGzip) {
   const fs::path dir = scratch_dir();
-  TriangleMesh mesh = random_closed_surface(2, 30, 30, 7);
+  PolygonMesh mesh = random_closed_surface(2, 30, 30, 7);
   mesh.positions[0] = {0.1, -1e-300, 12345.678901234567};  // needs every digit to survive
   for (const char* name : {"m.off", "m.obj", "m.ply", "m.off.gz", "m.OBJ.gz", "m.ply.gz"}) {
     const std::string path = (dir / name).string();
-    write_triangle_mesh(path, mesh);
-    const TriangleMesh back = read_triangle_mesh(path);
+    write_mesh(path, mesh);
+    const PolygonMesh back = read_mesh(path);
     EXPECT_EQ(back.positions, mesh.positions) << name;
-    EXPECT_EQ(back.triangles, mesh.triangles) << name;
+    EXPECT_EQ(back.corners, mesh.corners) << name;
+    EXPECT_TRUE(back.all_triangles()) << name;
   }
   EXPECT_EQ(slurp(dir / "m.off.gz").substr(0, 2), "\x1f\x8b");  // really compressed
 }
@@ -54,29 +55,34 @@ TEST(ReadWrite, TriangleRoundTripThroughEveryFormatAndGzip) {
 // buffered paths, whatever the size's remainder by the block.
 TEST(ReadWrite, LargeBinaryPlyRoundTripsThroughDirectWritesAndMapping) {
   const fs::path dir = scratch_dir();
-  TriangleMesh mesh;
+  PolygonMesh mesh;
   constexpr std::uint32_t kVertices = 3'000'001;  // 72 MB of positions, an odd file size
   mesh.positions.resize(kVertices);
   for (std::uint32_t v = 0; v < kVertices; ++v) {
     mesh.positions[v] = {v * 0.5, -1.0 / (v + 1), v % 977 * 1e-7};
   }
-  for (std::uint32_t t = 0; t + 2 < kVertices; t += 3) mesh.triangles.push_back({t, t + 1, t + 2});
+  for (std::uint32_t t = 0; t + 2 < kVertices; t += 3) {
+    for (VertexId v : {t, t + 1, t + 2}) mesh.corners.push_back(v);
+  }
   const std::string path = (dir / "large.ply").string();
-  write_triangle_mesh(path, mesh);
+  write_mesh(path, mesh);
   EXPECT_GT(fs::file_size(path), std::uintmax_t{64} << 20);
   EXPECT_NE(fs::file_size(path) % 4096, 0u);
-  const TriangleMesh back = read_triangle_mesh(path);
+  const PolygonMesh back = read_mesh(path);
   EXPECT_EQ(back.positions, mesh.positions);
-  EXPECT_EQ(back.triangles, mesh.triangles);
+  EXPECT_EQ(back.corners, mesh.corners);
   fs::remove_all(dir);
 }
 
 TEST(ReadWrite, QuadFilesHaveTheirFacesInEachFormat) {
   const fs::path dir = scratch_dir();
-  const QuadMesh quads{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {{0, 1, 2, 3}, {3, 2, 1, 0}}};
-  write_quad_mesh((dir / "q.off").string(), quads);
-  write_quad_mesh((dir / "q.obj").string(), quads);
-  write_quad_mesh((dir / "q.ply").string(), quads);
+  PolygonMesh quads;
+  quads.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  quads.add_face(std::array<VertexId, 4>{0, 1, 2, 3});
+  quads.add_face(std::array<VertexId, 4>{3, 2, 1, 0});
+  write_mesh((dir / "q.off").string(), quads);
+  write_mesh((dir / "q.obj").string(), quads);
+  write_mesh((dir / "q.ply").string(), quads);
   EXPECT_EQ(slurp(dir / "q.off"), "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n4 3 2 1 0\n");
   EXPECT_EQ(slurp(dir / "q.obj"), "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\nf 4 3 2 1\n");
   const std::string ply = slurp(dir / "q.ply");
@@ -85,14 +91,6 @@ TEST(ReadWrite, QuadFilesHaveTheirFacesInEachFormat) {
   EXPECT_NE(ply.find("format binary_little_endian 1.0"), std::string::npos);
   EXPECT_EQ(ply.size() - data, 4 * 24 + 2 * (1 + 16));
   EXPECT_EQ(ply[data + 4 * 24], 4);  // the first face's corner count
-  // The triangle reader refuses the quads and names the first face.
-  try {
-    read_triangle_mesh((dir / "q.obj").string());
-    FAIL() << "quads read as triangles";
-  } catch (const FileError& e) {
-    EXPECT_NE(std::string(e.what()).find(":5: face 0 has 4 corners"), std::string::npos)
-        << e.what();
-  }
 }
 
 TEST(ReadWrite, FormatFollowsTheExtension) {
@@ -101,11 +99,11 @@ TEST(ReadWrite, FormatFollowsTheExtension) {
   EXPECT_EQ(mesh_format_of("c.PLY"), MeshFormat::ply);
   EXPECT_THROW(mesh_format_of("d.stl"), FileError);
   EXPECT_THROW(mesh_format_of("e.gz"), FileError);
-  EXPECT_THROW(read_triangle_mesh("/nonexistent/f.off"), FileError);
+  EXPECT_THROW(read_mesh("/nonexistent/f.off"), FileError);
 }
 
 TEST(ReadWrite, UnwritablePathIsAnError) {
-  EXPECT_THROW(write_quad_mesh("/nonexistent/q.off", QuadMesh{}), FileError);
+  EXPECT_THROW(write_mesh("/nonexistent/q.off", PolygonMesh{}), FileError);
 }
 
 void spit(const fs::path& path, const std::string& bytes) {
@@ -121,11 +119,11 @@ void expect_same(const PolygonMesh& a, const PolygonMesh& b, const std::string& 
 // A closed surface with some triangle pairs merged into quads, a face with a repeated corner and
 // one face of 300 corners (past what a PLY uchar count can say).
 PolygonMesh polygon_mesh() {
-  const TriangleMesh triangles = random_closed_surface(1, 20, 40, 3);
+  const PolygonMesh triangles = random_closed_surface(1, 20, 40, 3);
   PolygonMesh mesh;
   mesh.positions = triangles.positions;
-  for (std::size_t t = 0; t < triangles.triangles.size(); ++t) {
-    const auto& tri = triangles.triangles[t];
+  for (FaceId t = 0; t < triangles.face_count(); ++t) {
+    const auto tri = triangles.face(t);
     if (t % 5 == 1) {
       const std::vector<VertexId> square{tri[0], tri[1], tri[2], tri[1]};
       mesh.add_face(square);
@@ -150,7 +148,7 @@ TEST(ReadWrite, PolygonRoundTripThroughEveryFormatAndGzip) {
     expect_same(read_mesh(path), mesh, name);
   }
   // All-triangle meshes keep implicit face starts through write_mesh and read_mesh.
-  const PolygonMesh triangles = to_polygon_mesh(random_closed_surface(2, 30, 30, 7));
+  const PolygonMesh triangles = random_closed_surface(2, 30, 30, 7);
   for (const char* name : {"t.off", "t.obj", "t.ply.gz"}) {
     write_mesh((dir / name).string(), triangles);
     const PolygonMesh back = read_mesh((dir / name).string());
@@ -171,7 +169,7 @@ TEST(ReadWrite, WritingOverTheInputReplacesItWhole) {
   const fs::path dir = scratch_dir();
   const std::string path = (dir / "m.obj").string();
   const PolygonMesh mesh = polygon_mesh();
-  write_mesh(path, to_polygon_mesh(random_closed_surface(0, 3, 3, 1)));
+  write_mesh(path, random_closed_surface(0, 3, 3, 1));
   fs::permissions(path, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
   write_mesh(path, read_mesh(path));  // the same file in and out
   write_mesh(path, mesh);
@@ -224,7 +222,7 @@ TEST(ReadWrite, AKilledWriteLeavesTheOldFileAndNothingElse) {
   ASSERT_GE(child, 0);
   if (child == 0) {
     // A mesh whose OBJ takes tens of milliseconds to write, killed while it is written.
-    const PolygonMesh large = to_polygon_mesh(random_closed_surface(3, 100000, 0, 5));
+    const PolygonMesh large = random_closed_surface(3, 100000, 0, 5);
     const char byte = 1;
     if (write(ready[1], &byte, 1) != 1) _exit(3);
     for (;;) write_mesh(path, large);
@@ -249,8 +247,7 @@ TEST(ReadWrite, GzipMembersPaddingAndDamage) {
   const fs::path dir = scratch_dir();
   // Two members (two OBJ files compressed apart, one after the other) and zero padding read as
   // one OBJ file, as gzip -dc would give it.
-  const PolygonMesh first = polygon_mesh(),
-                    second = to_polygon_mesh(random_closed_surface(0, 0, 0, 1));
+  const PolygonMesh first = polygon_mesh(), second = random_closed_surface(0, 0, 0, 1);
   write_mesh((dir / "a.obj.gz").string(), first);
   write_mesh((dir / "b.obj.gz").string(), second);
   const std::string a = slurp(dir / "a.obj.gz"), b = slurp(dir / "b.obj.gz");

@@ -318,9 +318,9 @@ TEST(OrderedSweep, SweepsALocalNumberingAndRefusesAShuffledOne) {
 
 TEST(OrderedSweep, RepairsMostOfWhatItStrandsOnAnIrregularPlate) {
   // Splits and flips make the plate's dual non-bipartite and irregular; stored in Morton order,
-  // as petersen generate --spatial-order and scanners do. Without repairs the sweep strands 456 of
-  // the 80,000 nodes here; with them 38 are left.
-  const TriangleMesh mesh = spatially_ordered(randomize_triangulation(
+  // as petersen generate --spatial-order and scanners do. Without repairs the sweep strands 452 of
+  // the 80,000 nodes here; with them 32 are left.
+  const PolygonMesh mesh = spatially_ordered(randomize_triangulation(
       voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 20}), 20000, 20000, 7));
   const CubicGraph g = dual_graph(mesh);
   std::uint32_t left[2];

@@ -17,7 +17,7 @@ TEST(SharedMeshes, SgAndPsMakePerfectMatchings) {
   if (!dir) GTEST_SKIP() << "no shared meshes";
   for (const testing::SharedMesh& mesh : testing::shared_meshes_up_to(100'000)) {
     SCOPED_TRACE(mesh.file);
-    CubicGraph g = dual_graph(read_triangle_mesh(*dir + "/" + mesh.file));
+    CubicGraph g = dual_graph(read_mesh(*dir + "/" + mesh.file));
     ASSERT_EQ(g.node_count(), mesh.triangles);
     EXPECT_EQ(testing::lemon_matching_size(g.node_count(), testing::edge_list(g)),
               g.node_count() / 2);

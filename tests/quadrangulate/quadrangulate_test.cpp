@@ -78,17 +78,16 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
 // augment either way); on the same plate made irregular (odd cycles in the dual) PS runs, and the
 // summary says which ran.
 TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
-  const TriangleMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
-  const QuadResult in_order = quadrangulate(to_polygon_mesh(plate));
+  const PolygonMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
+  const QuadResult in_order = quadrangulate(plate);
   EXPECT_TRUE(in_order.stats.matching.ordered_sweep);
   EXPECT_EQ(in_order.stats.matching.unpaired_after_initial, 0u);
-  const QuadResult regular = quadrangulate(testing::shuffled_faces(to_polygon_mesh(plate), 11));
+  const QuadResult regular = quadrangulate(testing::shuffled_faces(plate, 11));
   EXPECT_TRUE(regular.stats.matching.schrijver);
   EXPECT_EQ(regular.stats.matching.unpaired_after_initial, 0u);
   EXPECT_EQ(regular.stats.triangles_left, 0u);
   EXPECT_TRUE(regular.stats.maximum_certified);
-  const QuadResult irregular =
-      quadrangulate(to_polygon_mesh(randomize_triangulation(plate, 7, 200, 1)));
+  const QuadResult irregular = quadrangulate(randomize_triangulation(plate, 7, 200, 1));
   EXPECT_FALSE(irregular.stats.matching.schrijver);
   EXPECT_EQ(irregular.stats.triangles_left, 0u);
   EXPECT_TRUE(irregular.stats.maximum_certified);
@@ -100,9 +99,9 @@ TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
 TEST(Quadrangulate, LrsReportsItsAugmentationsLabels) {
   int augmented = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    const TriangleMesh plate = randomize_triangulation(
+    const PolygonMesh plate = randomize_triangulation(
         voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 4}), 300, 300, seed);
-    const QuadResult r = quadrangulate(to_polygon_mesh(plate), {.algorithm = Algorithm::lrs});
+    const QuadResult r = quadrangulate(plate, {.algorithm = Algorithm::lrs});
     ASSERT_TRUE(r.stats.maximum_certified);
     ASSERT_EQ(r.stats.triangles_left, 0u);
     EXPECT_GE(r.stats.matching.nodes_labelled, r.stats.matching.augmenting_paths);
@@ -186,7 +185,7 @@ TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
 
 // A closed mesh takes the fast path: every triangle paired by every algorithm.
 TEST(Quadrangulate, ClosedMeshesArePerfect) {
-  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 40, 200, 5));
+  const PolygonMesh mesh = random_closed_surface(2, 40, 200, 5);
   for (Algorithm algorithm : kAlgorithms) {
     const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
     EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
@@ -377,7 +376,7 @@ RC_GTEST_PROP(Quadrangulate, ConsumingTheMeshGivesTheSameAnswer, ()) {
 // mixed meshes through the others, by either door.
 RC_GTEST_PROP(Quadrangulate, WithoutSourcesTheSameMesh, ()) {
   const bool closed = *rc::gen::arbitrary<bool>();
-  const PolygonMesh mesh = closed ? to_polygon_mesh(*testing::closed_triangulations_up_to(3))
+  const PolygonMesh mesh = closed ? *testing::closed_triangulations_up_to(3)
                                   : random_mixed_mesh(*rc::gen::inRange<std::uint64_t>(0, 1u << 30),
                                                       *rc::gen::inRange<std::uint32_t>(4, 300));
   const Algorithm algorithm =
@@ -406,7 +405,7 @@ RC_GTEST_PROP(Quadrangulate, WithoutSourcesTheSameMesh, ()) {
 // count from the mesh does, even where the cuts split its pairable graph into pieces.
 RC_GTEST_PROP(Quadrangulate, ChosenCutsKeepTheGenus, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 5);
-  const PolygonMesh mesh = to_polygon_mesh(*testing::closed_triangulations(genus));
+  const PolygonMesh mesh = *testing::closed_triangulations(genus);
   const auto [material, user] = random_chosen_cuts(mesh);
   QuadOptions options{.cuts = {.user_edges = user, .face_material = material}};
   if (*rc::gen::arbitrary<bool>()) options.max_corner_deviation = *rc::gen::inRange(10, 170) + 0.5;
@@ -597,9 +596,7 @@ MeshAttributes arbitrary_attributes(const PolygonMesh& mesh) {
 // new ones interpolated).
 RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
   PolygonMesh mesh =
-      *rc::gen::oneOf(testing::mixed_meshes(),
-                      rc::gen::map(testing::closed_triangulations_up_to(2),
-                                   [](const TriangleMesh& t) { return to_polygon_mesh(t); }));
+      *rc::gen::oneOf(testing::mixed_meshes(), testing::closed_triangulations_up_to(2));
   mesh.attributes = arbitrary_attributes(mesh);
   const MeshAttributes& a = mesh.attributes;
   std::vector<CutCause> cross;

@@ -12,6 +12,7 @@
 
 #include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
+#include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
@@ -35,6 +36,13 @@ constexpr std::uint32_t kAllAlgorithmsUpTo = 100000;
 constexpr std::uint32_t kMaxTriangles = 600000;
 constexpr std::uint32_t kFrinkUpTo = 10000;  // cheburashka, fandisk, homer: 5-9 s of frink each
 #endif
+
+// The mesh's positions and faces alone: what the front door pairs when a file has no attributes.
+PolygonMesh read_bare_mesh(const std::string& path) {
+  PolygonMesh mesh = read_mesh(path);
+  mesh.attributes = {};
+  return mesh;
+}
 
 bool full_run() {
   const char* full = std::getenv("PETERSEN_FULL_SHARED");
@@ -61,7 +69,7 @@ TEST_P(EveryAlgorithm, ConvertsTheMesh) {
   const auto dir = testing::shared_mesh_dir();
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   const std::string& file = GetParam();
-  const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/" + file));
+  const PolygonMesh mesh = read_bare_mesh(*dir + "/" + file);
   const bool small = full_run() || mesh.face_count() <= kAllAlgorithmsUpTo;
   for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw,
                               Algorithm::frink, Algorithm::lemon, Algorithm::lrs}) {
@@ -95,7 +103,7 @@ INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryAlgorithm, ::testing::ValuesIn(all_s
 TEST(SharedMeshes, FandiskKeepsItsCreases) {
   const auto dir = testing::shared_mesh_dir();
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
-  const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/fandisk.obj.gz"));
+  const PolygonMesh mesh = read_bare_mesh(*dir + "/fandisk.obj.gz");
   const CutOptions cuts{.sharp_angle_degrees = 30.0};
   const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
   EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::sharp)], 0u);
@@ -105,20 +113,22 @@ TEST(SharedMeshes, FandiskKeepsItsCreases) {
 }
 
 // --objective quality on the closed meshes: all quads, both certificates, and the optimum LEMON's
-// weighted perfect matching finds on the dual build_dual makes, with dual_edge_quality's costs.
+// weighted perfect matching finds on the dual build_dual makes, with the pairable graph's costs
+// (on a closed triangle mesh the pairable graph is the dual, edge for edge).
 TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
   const auto dir = testing::shared_mesh_dir();
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   for (const auto& shared : testing::shared_meshes_up_to(kAllAlgorithmsUpTo / 5)) {
     SCOPED_TRACE(shared.file);
-    const TriangleMesh triangles = read_triangle_mesh(*dir + "/" + shared.file);
-    const PolygonMesh mesh = to_polygon_mesh(triangles);
+    const PolygonMesh mesh = read_bare_mesh(*dir + "/" + shared.file);
     const QuadResult result = quadrangulate(mesh, {.objective = Objective::quality});
     EXPECT_TRUE(result.stats.optimality_certified);
     EXPECT_EQ(result.stats.triangles_left, 0u);
     EXPECT_EQ(testing::check_quad_result(mesh, result, false, false), "");
-    const Dual dual = build_dual(triangles);
-    const HugeVector<Cost> costs = scale_costs(dual_edge_quality(triangles, dual));
+    const Dual dual = build_dual(mesh);
+    const PairableGraph pairable = build_pairable_graph(mesh);
+    ASSERT_EQ(pairable.edge_count(), dual.graph.edge_count());
+    const HugeVector<Cost> costs = scale_costs(pairable_edge_quality(pairable, mesh));
     std::vector<std::array<std::uint32_t, 2>> edges(dual.graph.edge_count());
     for (EdgeId e = 0; e < edges.size(); ++e) edges[e] = dual.graph.endpoints(e);
     const auto lemon = testing::lemon_min_cost_perfect(dual.graph.node_count(), edges, costs);

@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -28,18 +28,23 @@ struct Dual {
   }
 };
 
-/// Builds the dual of a closed, edge-manifold, consistently oriented triangle mesh: triangle i is
-/// node i. Dual edges are numbered by their mesh edge {a, b} in order of (min(a, b), max(a, b)),
-/// and the first endpoint of each is the triangle with the smaller halfedge id. Pinched vertices
-/// and several components are allowed (the dual stays cubic; it is then disconnected). Throws
-/// MeshError naming the triangle or edge (a, b) when a corner is out of range, a triangle repeats
-/// a corner, an edge has one triangle (boundary) or more than two, or its two triangles run
-/// along it in the same direction (inconsistent orientation).
+/// Builds the dual of a closed, edge-manifold, consistently oriented triangle mesh (every face a
+/// triangle): triangle i is node i. Dual edges are numbered by their mesh edge {a, b} in order of
+/// (min(a, b), max(a, b)), and the first endpoint of each is the triangle with the smaller
+/// halfedge id. Pinched vertices and several components are allowed (the dual stays cubic; it is
+/// then disconnected). Throws MeshError naming the face when a face is not a triangle, and the
+/// triangle or edge (a, b) when a corner is out of range, a triangle repeats a corner, an edge has
+/// one triangle (boundary) or more than two, or its two triangles run along it in the same
+/// direction (inconsistent orientation).
 /// O(F log d) for maximum vertex degree d, no hashing: halfedges are bucketed by their smaller
 /// vertex and each bucket is sorted by the larger one.
-Dual build_dual(const TriangleMesh& mesh);
+Dual build_dual(const PolygonMesh& mesh);
 
 /// The dual graph alone (see build_dual for the numbering and the errors).
+CubicGraph dual_graph(const PolygonMesh& mesh);
+
+/// The same on a TriangleMesh, for lrs/ (with its tests and benchmarks), which takes TriangleMesh.
+Dual build_dual(const TriangleMesh& mesh);
 CubicGraph dual_graph(const TriangleMesh& mesh);
 
 }  // namespace petersen

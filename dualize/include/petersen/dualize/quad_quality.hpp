@@ -1,7 +1,7 @@
 #pragma once
-// The shape of a quad as its worst corner's deviation from a right angle (issue 14's measure),
-// that cost for every quad the dual of a closed triangle mesh could form, and the figures that
-// summarise a mesh's quads (quadrangulate's stats, `petersen info`, the pictures' captions).
+// The shape of a quad as its worst corner's deviation from a right angle, that cost for every
+// quad two pairable triangles could form, and the figures that summarise a mesh's quads
+// (quadrangulate's stats, `petersen info`, the pictures' captions).
 
 #include <array>
 #include <cstdint>
@@ -9,10 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "petersen/dualize/dual.hpp"
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -30,11 +29,6 @@ inline constexpr double kDegenerateQuadCost = 270.0;
 /// diagonals (no normal n), or a corner whose projected edge has zero length. Never NaN. O(1).
 double quad_corner_deviation(const std::array<double, 3>& a, const std::array<double, 3>& b,
                              const std::array<double, 3>& c, const std::array<double, 3>& d);
-
-/// For each edge e of `dual` (built by build_dual from `mesh`), the cost of the quad its two
-/// triangles would form, with the corners quads_from_matching gives it: triangles (a, b, c) and
-/// (b, a, d) sharing edge a-b form (a, d, b, c). O(F).
-HugeVector<double> dual_edge_quality(const TriangleMesh& mesh, const Dual& dual);
 
 /// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
 /// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b

@@ -1,12 +1,13 @@
 #pragma once
-// A perfect matching of the dual turned into quads, and the check that the quads form a closed
-// quad mesh of the same surface.
+// A perfect matching of the dual of a TriangleMesh turned into quads, and the check that they form
+// a closed quad mesh of the same surface: for lrs/ (with its tests), which takes TriangleMesh. The
+// rest of the library pairs PolygonMesh triangles through quad_of.hpp.
 
 #include <string>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/matching/matching.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 

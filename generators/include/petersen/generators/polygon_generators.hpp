@@ -4,9 +4,9 @@
 // edges, pinched vertices, inconsistent orientation and several components.
 //
 // Every function is deterministic for its arguments on any standard library: random choices use
-// the raw outputs of std::mt19937_64 reduced with `% n`, never the std distributions or
-// std::shuffle, whose results differ between implementations. Counts below are of referenced
-// vertices; V, E, F are vertices, distinct undirected edges and faces, χ = V - E + F.
+// petersen's SeededRandom (petersen/graph/seeded_random.hpp) and its bounded draws, never the std
+// distributions or std::shuffle, whose results differ between implementations. Counts below are
+// of referenced vertices; V, E, F are vertices, distinct undirected edges and faces, χ = V - E + F.
 
 #include <cstdint>
 #include <span>

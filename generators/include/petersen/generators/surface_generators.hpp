@@ -1,5 +1,6 @@
 #pragma once
-// Closed, oriented triangulations for tests, benchmarks and the bundled example; all seeded.
+// Closed, oriented triangulations for tests, benchmarks and the bundled example; all seeded. Each
+// is an all-triangle PolygonMesh: face t is corners[3t..3t + 2], face_start empty.
 
 #include "petersen/mesh/mesh.hpp"
 
@@ -25,7 +26,7 @@ struct PlateShape {
 };
 
 /// The closed, consistently oriented triangulation of the plate's surface. O(triangles).
-TriangleMesh plate_mesh(const PlateShape& shape);
+PolygonMesh plate_mesh(const PlateShape& shape);
 
 /// The plate with every width and depth equal to `units` (a regular, isotropic refinement).
 PlateShape uniform_plate(std::uint32_t holes_x, std::uint32_t holes_y, bool dents,
@@ -39,24 +40,25 @@ struct PlateSpec {
   std::uint32_t subdivision = 1;
   bool dents = false;
 };
-TriangleMesh voxel_plate(const PlateSpec& spec);
+PolygonMesh voxel_plate(const PlateSpec& spec);
 
 /// Makes a closed triangulation irregular: `splits` random 1-to-3 triangle splits (new vertex at
 /// the centroid), then about `flips` random edge flips that keep it simplicial (a flip is skipped
 /// when the new edge exists already or an end would drop to degree 2). Genus is unchanged.
-TriangleMesh randomize_triangulation(TriangleMesh mesh, std::uint32_t splits, std::uint32_t flips,
-                                     std::uint64_t seed);
+/// Throws MeshError unless every face is a triangle (face_start empty) and every edge has two.
+PolygonMesh randomize_triangulation(PolygonMesh mesh, std::uint32_t splits, std::uint32_t flips,
+                                    std::uint64_t seed);
 
 /// The mesh renumbered the way scanners and subdivisions store theirs: triangles in Morton
 /// (Z-order) of their centroids, vertices in order of first use, orientation kept. Neighbours then
 /// sit near each other in memory, where random splits and flips leave them scattered over the
-/// arrays. O(F log F).
-TriangleMesh spatially_ordered(const TriangleMesh& mesh);
+/// arrays. Throws MeshError unless every face is a triangle (face_start empty). O(F log F).
+PolygonMesh spatially_ordered(const PolygonMesh& mesh);
 
 /// An irregular closed triangulation of genus `genus`: a thin plate with `genus` holes (a cube for
 /// genus 0), then `splits` random 1-to-3 triangle splits, then about `flips` random edge flips
 /// that keep it a simplicial triangulation. Positions of new vertices are triangle centroids.
-TriangleMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
-                                   std::uint64_t seed);
+PolygonMesh random_closed_surface(std::uint32_t genus, std::uint32_t splits, std::uint32_t flips,
+                                  std::uint64_t seed);
 
 }  // namespace petersen

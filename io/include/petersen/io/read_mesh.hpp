@@ -1,5 +1,5 @@
 #pragma once
-// Reading polygon and triangle meshes from OFF, OBJ and PLY files, plain or gzip-compressed.
+// Reading polygon meshes from OFF, OBJ and PLY files, plain or gzip-compressed.
 
 #include <string>
 #include <string_view>
@@ -46,14 +46,11 @@ PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
                        std::vector<std::string>* dropped = nullptr);
 
-/// Reads a mesh like read_mesh, for code that needs triangles (attributes are not kept): a face
-/// that is not a triangle is a MeshError located like the others ("FILE:LINE: face F has 4 corners;
-/// only triangles are supported"). Peak memory: the file's bytes and the mesh while parsing, then
-/// the triangles' corners twice while they are converted (the file's bytes are gone by then).
+/// Reads a mesh like read_mesh as a TriangleMesh, for lrs/'s tests and benchmarks, which take
+/// TriangleMesh (attributes are not kept): a face that is not a triangle is a MeshError located
+/// like the others ("FILE:LINE: face F has 4 corners; only triangles are supported"). Peak memory:
+/// the file's bytes and the mesh while parsing, then the triangles' corners twice while they are
+/// converted (the file's bytes are gone by then).
 TriangleMesh read_triangle_mesh(const std::string& path);
-
-/// Parses a triangle mesh already in memory, like read_triangle_mesh.
-TriangleMesh parse_triangle_mesh(std::string_view bytes, MeshFormat format,
-                                 const std::string& source);
 
 }  // namespace petersen

@@ -1,6 +1,5 @@
 #pragma once
-// Writing polygon, triangle and quad meshes as OFF, OBJ or PLY (binary little endian), by
-// extension, atomically.
+// Writing polygon meshes as OFF, OBJ or PLY (binary little endian), by extension, atomically.
 
 #include <string>
 #include <vector>
@@ -30,11 +29,5 @@ namespace petersen {
 /// hold, a value a text format cannot spell (not finite) or a name the format cannot spell;
 /// MeshError when check_attributes refuses the mesh.
 std::vector<std::string> write_mesh(const std::string& path, const PolygonMesh& mesh);
-
-/// Writes the quad mesh like write_mesh.
-void write_quad_mesh(const std::string& path, const QuadMesh& mesh);
-
-/// Writes the triangle mesh like write_mesh.
-void write_triangle_mesh(const std::string& path, const TriangleMesh& mesh);
 
 }  // namespace petersen

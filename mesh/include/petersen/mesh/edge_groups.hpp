@@ -8,8 +8,8 @@
 #include <span>
 #include <vector>
 
-#include "petersen/mesh/mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -64,8 +64,8 @@ EdgeGroups group_halfedges_in(std::span<const std::uint32_t> all_starts, std::si
   groups.start.resize(vertices + 1);
   groups.entries.resize(all_starts[last_vertex] - base);
   // Bucket v's next free entry is kept in start[v + 1], which the bucket's last entry moves to
-  // its end, the next bucket's start: no separate array of cursors (a fresh one per slice was
-  // most of the grouping's page faults).
+  // its end, the next bucket's start: no separate array of cursors, whose fresh pages
+  // per slice would dominate the grouping's page faults.
   groups.start[0] = 0;
   for (std::size_t i = 0; i < vertices; ++i) {
     groups.start[i + 1] = all_starts[first_vertex + i] - base;
@@ -103,29 +103,6 @@ EdgeGroups group_halfedges(std::size_t vertex_count, std::uint32_t halfedge_coun
   const HugeVector<std::uint32_t> start = bucket_starts(vertex_count, halfedges);
   return group_halfedges_in(start, 0, vertex_count, halfedges);
 }
-
-/// Halfedge h = 3t + k runs from corner k of triangle t to corner (k+1)%3.
-inline VertexId halfedge_from(const TriangleMesh& mesh, std::uint32_t h) {
-  return mesh.triangles[h / 3][h % 3];
-}
-inline VertexId halfedge_to(const TriangleMesh& mesh, std::uint32_t h) {
-  return mesh.triangles[h / 3][(h % 3 + 1) % 3];
-}
-
-/// Groups the halfedges of the triangles whose `usable` flag is set (all when `usable` is empty).
-/// The corners of usable triangles must be in range.
-inline EdgeGroups group_halfedges(const TriangleMesh& mesh,
-                                  const std::vector<std::uint8_t>& usable) {
-  return group_halfedges(
-      mesh.positions.size(), static_cast<std::uint32_t>(3 * mesh.triangles.size()),
-      [&](std::uint32_t h) { return halfedge_from(mesh, h); },
-      [&](std::uint32_t h) { return halfedge_to(mesh, h); },
-      [&](std::uint32_t h) { return usable.empty() || usable[h / 3]; });
-}
-
-}  // namespace petersen
-
-namespace petersen {
 
 /// The halfedges of a polygon mesh: halfedge h is corner h of the flat corner array, running to
 /// the next corner of its face. The face of each corner is kept only when some face is not a

@@ -1,5 +1,5 @@
 #pragma once
-// Triangle and quad meshes as flat arrays of positions and corner indices.
+// Polygon meshes as flat arrays of positions and corner indices.
 
 #include <array>
 #include <cstdint>
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "petersen/mesh/mesh_attributes.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/mesh/mesh_attributes.hpp"
 
 namespace petersen {
 
@@ -20,19 +20,6 @@ using FaceId = std::uint32_t;
 /// (petersen/graph/huge_pages.hpp), so that meshes, graphs and scratch arrays recycle one
 /// another's memory.
 using Positions = HugeVector<std::array<double, 3>>;
-
-/// A triangle mesh: positions and, per triangle, three corner indices in counter-clockwise order
-/// seen from outside. Edge k of triangle t joins corners k and (k+1)%3.
-struct TriangleMesh {
-  Positions positions;
-  HugeVector<std::array<VertexId, 3>> triangles;
-};
-
-/// A quad mesh over the same positions as the triangle mesh it came from.
-struct QuadMesh {
-  Positions positions;
-  HugeVector<std::array<VertexId, 4>> quads;
-};
 
 /// A mesh whose faces have any number of corners (three or more), as flat arrays: face f's
 /// corners, in order, are corners[face_start[f]] up to corners[face_start[f + 1]]. While every
@@ -61,6 +48,23 @@ struct PolygonMesh {
   /// Appends a face (at least three corners; not checked here). Switches to explicit face starts
   /// at the first face that is not a triangle. Throws MeshError past 2^32 - 1 corners.
   void add_face(std::span<const VertexId> face_corners);
+};
+
+/// A triangle mesh as an array of corner triples, counter-clockwise seen from outside: the type
+/// lrs/ takes (with its tests and benchmarks); the rest of the library takes PolygonMesh, whose
+/// all-triangle form has the same corners in the same order.
+struct TriangleMesh {
+  TriangleMesh() = default;
+  /// to_triangle_mesh, implicitly, so that lrs/ takes the generators' and readers' meshes.
+  TriangleMesh(const PolygonMesh& mesh);  // NOLINT(google-explicit-constructor)
+  Positions positions;
+  HugeVector<std::array<VertexId, 3>> triangles;
+};
+
+/// The quads lrs/ makes of a TriangleMesh (quads_from_matching), over the same positions.
+struct QuadMesh {
+  Positions positions;
+  HugeVector<std::array<VertexId, 4>> quads;
 };
 
 /// Throws MeshError naming the first attribute array whose size does not match the mesh (one

@@ -19,11 +19,11 @@
 #include <vector>
 
 #include "petersen/dualize/dual.hpp"
-#include "petersen/mesh/mesh.hpp"
+#include "petersen/generators/graph_generators.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/generators/graph_generators.hpp"
+#include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
 
@@ -36,12 +36,13 @@ inline void showValue(const CubicGraph& graph, std::ostream& os) {
   }
 }
 
-/// Prints the vertex and triangle counts and the triangles.
-inline void showValue(const TriangleMesh& mesh, std::ostream& os) {
-  os << "TriangleMesh with " << mesh.positions.size() << " vertices, triangles";
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const auto& c = mesh.triangles[t];
-    os << (t == 0 ? " " : ", ") << c[0] << ' ' << c[1] << ' ' << c[2];
+/// Prints the vertex and face counts and the faces' corners.
+inline void showValue(const PolygonMesh& mesh, std::ostream& os) {
+  os << "polygon mesh with " << mesh.positions.size() << " vertices, " << mesh.face_count()
+     << " faces";
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    os << (f == 0 ? ": " : ", ");
+    for (std::size_t k = 0; k < mesh.arity(f); ++k) os << (k == 0 ? "" : " ") << mesh.face(f)[k];
   }
 }
 
@@ -72,10 +73,10 @@ inline rc::Gen<CubicGraph> random_cubic_graphs() {
   });
 }
 
-/// Closed, oriented, irregular triangulations of the given genus (a plate with `genus` holes, or
-/// a cube for 0, then up to 3·size random triangle splits and edge flips); shrinks towards the
-/// plate itself.
-inline rc::Gen<TriangleMesh> closed_triangulations(std::uint32_t genus) {
+/// Closed, oriented, irregular triangulations (all-triangle polygon meshes) of the given genus (a
+/// plate with `genus` holes, or a cube for 0, then up to 3·size random triangle splits and edge
+/// flips); shrinks towards the plate itself.
+inline rc::Gen<PolygonMesh> closed_triangulations(std::uint32_t genus) {
   return rc::gen::withSize([genus](int size) {
     const auto most = 1 + 3 * static_cast<std::uint32_t>(size);
     return rc::gen::apply(
@@ -88,14 +89,9 @@ inline rc::Gen<TriangleMesh> closed_triangulations(std::uint32_t genus) {
 }
 
 /// Closed triangulations of any genus from 0 to `max_genus`; shrinks towards genus 0.
-inline rc::Gen<TriangleMesh> closed_triangulations_up_to(std::uint32_t max_genus) {
+inline rc::Gen<PolygonMesh> closed_triangulations_up_to(std::uint32_t max_genus) {
   return rc::gen::mapcat(rc::gen::inRange<std::uint32_t>(0, max_genus + 1),
                          [](std::uint32_t genus) { return closed_triangulations(genus); });
-}
-
-inline void showValue(const PolygonMesh& mesh, std::ostream& os) {
-  os << "polygon mesh with " << mesh.positions.size() << " vertices, " << mesh.face_count()
-     << " faces";
 }
 
 /// Every kind of mesh a user has (petersen::random_mixed_mesh): closed surfaces of genus 0 to 3,
@@ -124,7 +120,7 @@ inline rc::Gen<CubicGraph> cubic_bridgeless_graphs() {
       {1, rc::gen::map(rc::gen::inRange<std::uint32_t>(2, 60),
                        [](std::uint32_t k) { return prism(k); })},
       {4, rc::gen::map(closed_triangulations_up_to(30),
-                       [](const TriangleMesh& mesh) { return dual_graph(mesh); })},
+                       [](const PolygonMesh& mesh) { return dual_graph(mesh); })},
   });
 }
 
