@@ -23,10 +23,10 @@ namespace {
 using namespace petersen;
 
 // The run with the smallest pairing time of `runs` (the least disturbed by other processes).
-LrsStats best_of(const TriangleMesh& mesh, int runs) {
+LrsStats best_of(const PolygonMesh& mesh, int runs) {
   LrsStats best;
   for (int r = 0; r < runs; ++r) {
-    const LrsStats s = pair_closed_component_by_lrs(to_polygon_mesh(mesh)).stats;
+    const LrsStats s = pair_closed_component_by_lrs(mesh).stats;
     if (r == 0 || s.matching_seconds() < best.matching_seconds()) best = s;
   }
   return best;
@@ -46,7 +46,7 @@ void print_row(const std::string& name, const LrsStats& s) {
               1e9 * s.expansion_seconds / s.faces, s.flipped_percent());
 }
 
-void compare_with_ps(const std::string& name, const TriangleMesh& mesh) {
+void compare_with_ps(const std::string& name, const PolygonMesh& mesh) {
   const LrsStats lrs = best_of(mesh, 3);
   print_row(name, lrs);
   const CubicGraph dual = dual_graph(mesh);
@@ -70,14 +70,14 @@ int main(int argc, char** argv) {
   petersen::huge_pages::enable_pool_unless_switched_off();
   print_header();
   if (argc > 1) {
-    for (int i = 1; i < argc; ++i) compare_with_ps(argv[i], read_triangle_mesh(argv[i]));
+    for (int i = 1; i < argc; ++i) compare_with_ps(argv[i], read_mesh(argv[i]));
     return 0;
   }
   // Doubling series: the plate grows by doubling holes_x and holes_y in turn.
   PlateSpec spec{.holes_x = 8, .holes_y = 8, .subdivision = 4, .dents = true};
   for (int step = 0;; ++step) {
-    const TriangleMesh mesh = voxel_plate(spec);
-    const LrsStats s = best_of(mesh, mesh.triangles.size() > 2000000 ? 1 : 3);
+    const PolygonMesh mesh = voxel_plate(spec);
+    const LrsStats s = best_of(mesh, mesh.face_count() > 2000000 ? 1 : 3);
     print_row("plate " + std::to_string(spec.holes_x) + "x" + std::to_string(spec.holes_y) +
                   " sub" + std::to_string(spec.subdivision),
               s);
@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
   }
   const std::string armadillo = std::string(PETERSEN_SHARED_MESHES) + "/armadillo-sub2.ply.gz";
   if (std::filesystem::exists(armadillo)) {
-    compare_with_ps("armadillo-sub2", read_triangle_mesh(armadillo));
+    compare_with_ps("armadillo-sub2", read_mesh(armadillo));
   }
   return 0;
 }

@@ -116,9 +116,8 @@ Measures boost_peer(const BenchInput& input, std::uint64_t) {
 // matching pairs the triangles of K (the input with some edges flipped): lrs verifies it perfect
 // on K's dual, and every triangle must be in one of its quads.
 Measures lrs_contestant(const BenchInput& input, std::uint64_t) {
-  const LrsPairing result =
-      pair_closed_component_by_lrs(to_polygon_mesh(input.mesh), {.augment = Augment::local});
-  if (2 * result.quads.size() != input.mesh.triangles.size()) {
+  const LrsPairing result = pair_closed_component_by_lrs(input.mesh, {.augment = Augment::local});
+  if (2 * result.quads.size() != input.mesh.face_count()) {
     throw VerificationError("lrs left triangles unpaired");
   }
   Measures measures;

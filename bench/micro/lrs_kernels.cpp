@@ -11,8 +11,7 @@ namespace petersen::micro {
 namespace {
 
 void BM_LrsContraction(benchmark::State& state) {
-  const PolygonMesh mesh =
-      to_polygon_mesh(plate_input(static_cast<std::uint64_t>(state.range(0))).mesh);
+  const PolygonMesh mesh = plate_input(static_cast<std::uint64_t>(state.range(0))).mesh;
   double contractions = 0;
   for (auto _ : state) {
     state.PauseTiming();
@@ -29,8 +28,7 @@ BENCHMARK(BM_LrsContraction)
     ->Unit(benchmark::kMillisecond);
 
 void BM_LrsSplit(benchmark::State& state) {
-  const PolygonMesh mesh =
-      to_polygon_mesh(plate_input(static_cast<std::uint64_t>(state.range(0))).mesh);
+  const PolygonMesh mesh = plate_input(static_cast<std::uint64_t>(state.range(0))).mesh;
   double splits = 0;
   for (auto _ : state) {
     state.PauseTiming();

@@ -122,14 +122,4 @@ CubicGraph dual_graph(const PolygonMesh& mesh) {
   return build_dual(mesh).graph;
 }
 
-Dual build_dual(const TriangleMesh& mesh) {
-  const auto* triangles = mesh.triangles.data();
-  return dual_of(mesh.triangles.size(), mesh.positions.size(),
-                 [triangles](FaceId t, std::uint32_t k) { return triangles[t][k]; });
-}
-
-CubicGraph dual_graph(const TriangleMesh& mesh) {
-  return build_dual(mesh).graph;
-}
-
 }  // namespace petersen

@@ -49,11 +49,10 @@ const char* const kColourNames[3] = {"red", "green", "blue"};
 // face line so that one allocates nothing. Messages are built only on error.
 class ObjReader {
  public:
-  ObjReader(std::string_view bytes, const std::string& source, FaceKinds kinds)
+  ObjReader(std::string_view bytes, const std::string& source)
       : lines_{bytes},
         at_{source, lines_},
         source_(source),
-        kinds_(kinds),
         attributes_(mesh_.attributes),
         materials_{attributes_.material_names},
         groups_{attributes_.group_names},
@@ -147,7 +146,7 @@ class ObjReader {
       }
       read_slashed_corner(token);
     }
-    if (!corner_count_ok(face_.size(), kinds_)) {
+    if (!corner_count_ok(face_.size())) {
       at_.fail(corner_count_error(mesh_.face_count(), face_.size()));
     }
     if (!corners_fit(mesh_, face_.size())) at_.fail("more than 2^32 - 1 face corners");
@@ -316,7 +315,6 @@ class ObjReader {
   text::Lines lines_;
   const text::Located at_;
   const std::string& source_;
-  FaceKinds kinds_;
   PolygonMesh mesh_;
   MeshAttributes& attributes_;  // mesh_'s
   std::vector<VertexId> face_;
@@ -331,9 +329,9 @@ class ObjReader {
 
 }  // namespace
 
-PolygonMesh parse_obj(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_obj(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped) {
-  return ObjReader(bytes, source, kinds).read(dropped);
+  return ObjReader(bytes, source).read(dropped);
 }
 
 }  // namespace petersen

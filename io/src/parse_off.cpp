@@ -85,7 +85,7 @@ struct Declared {
 
 class OffReader {
  public:
-  OffReader(std::string_view bytes, FaceKinds kinds) : lines_{bytes}, kinds_(kinds) {}
+  OffReader(std::string_view bytes) : lines_{bytes} {}
 
   PolygonMesh read(const std::string& source, std::vector<std::string>& dropped) {
     const text::Located at{source, lines_};
@@ -247,7 +247,7 @@ class OffReader {
     if (!text::parse_integer(token, corners) || corners < 0) {
       at.fail("face " + std::to_string(f) + ": bad corner count " + text::Located::quote(token));
     }
-    if (!corner_count_ok(static_cast<std::uint64_t>(corners), kinds_)) {
+    if (!corner_count_ok(static_cast<std::uint64_t>(corners))) {
       at.fail(corner_count_error(f, static_cast<std::uint64_t>(corners)));
     }
     face_.clear();
@@ -278,7 +278,6 @@ class OffReader {
   }
 
   text::Lines lines_;
-  FaceKinds kinds_;
   Declared declared_;
   std::uint64_t vertex_count_ = 0, face_count_ = 0;
   PolygonMesh mesh_;
@@ -293,9 +292,9 @@ class OffReader {
 
 }  // namespace
 
-PolygonMesh parse_off(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_off(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped) {
-  return OffReader(bytes, kinds).read(source, dropped);
+  return OffReader(bytes).read(source, dropped);
 }
 
 }  // namespace petersen

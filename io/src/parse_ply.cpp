@@ -25,9 +25,8 @@ using ply::Use;
 
 class PlyReader {
  public:
-  PlyReader(std::string_view bytes, const std::string& source, FaceKinds kinds,
-            std::vector<std::string>& dropped)
-      : bytes_(bytes), source_(source), kinds_(kinds), dropped_(dropped), lines_{bytes} {}
+  PlyReader(std::string_view bytes, const std::string& source, std::vector<std::string>& dropped)
+      : bytes_(bytes), source_(source), dropped_(dropped), lines_{bytes} {}
 
   PolygonMesh read() {
     ply::Header header = ply::read_header(lines_, source_, dropped_);
@@ -154,7 +153,7 @@ class PlyReader {
   // The face's corner count and corners are checked the same way in every encoding.
   template <class Source>
   void check_corner_count(std::uint64_t i, std::uint64_t corners, const Source& in) const {
-    if (!corner_count_ok(corners, kinds_)) in.fail(corner_count_error(i, corners));
+    if (!corner_count_ok(corners)) in.fail(corner_count_error(i, corners));
     if (!corners_fit(mesh_, corners)) in.fail("more than 2^32 - 1 face corners");
   }
 
@@ -312,7 +311,6 @@ class PlyReader {
 
   std::string_view bytes_;
   const std::string& source_;
-  FaceKinds kinds_;
   std::vector<std::string>& dropped_;
   text::Lines lines_;
   PolygonMesh mesh_;
@@ -323,9 +321,9 @@ class PlyReader {
 
 }  // namespace
 
-PolygonMesh parse_ply(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_ply(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped) {
-  return PlyReader(bytes, source, kinds, dropped).read();
+  return PlyReader(bytes, source, dropped).read();
 }
 
 }  // namespace petersen

@@ -10,16 +10,12 @@
 
 namespace petersen {
 
-/// Which faces a parser accepts: any polygon of three or more corners, or only triangles (for
-/// parse_triangle_mesh, whose error then names the file's line or element like any other).
-enum class FaceKinds { polygons, triangles };
-
 /// Each parser appends to `dropped` one line per kind of thing it read past (see read_mesh).
-PolygonMesh parse_off(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_off(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped);
-PolygonMesh parse_obj(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_obj(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped);
-PolygonMesh parse_ply(std::string_view bytes, const std::string& source, FaceKinds kinds,
+PolygonMesh parse_ply(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped);
 
 /// Counts what a text reader reads past, per kind, remembering the first line of each; the
@@ -64,18 +60,16 @@ inline void push_attribute(HugeVector<std::uint32_t>& values, std::uint32_t valu
   values.push_back(value);
 }
 
-/// True when `kinds` accepts a face of `corners` corners.
-inline bool corner_count_ok(std::uint64_t corners, FaceKinds kinds) {
-  return corners >= 3 && (kinds == FaceKinds::polygons || corners == 3);
+/// True when a face of `corners` corners is a face: three or more.
+inline bool corner_count_ok(std::uint64_t corners) {
+  return corners >= 3;
 }
 
 /// The complaint about face `face` whose corner count corner_count_ok refused, worded the same
 /// by every parser.
 inline std::string corner_count_error(std::uint64_t face, std::uint64_t corners) {
-  std::string what =
-      "face " + std::to_string(face) + " has " + std::to_string(corners) + " corners; ";
-  what += corners < 3 ? "a face needs at least 3" : "only triangles are supported";
-  return what;
+  return "face " + std::to_string(face) + " has " + std::to_string(corners) +
+         " corners; a face needs at least 3";
 }
 
 /// The corners a mesh can hold: face_start holds 32-bit offsets.

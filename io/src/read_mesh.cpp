@@ -8,39 +8,26 @@ namespace petersen {
 namespace {
 
 PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& source,
-                  FaceKinds kinds, std::vector<std::string>* dropped) {
+                  std::vector<std::string>* dropped) {
   if (bytes.empty()) throw FileError(source, 0, "empty file");
   std::vector<std::string> ignored;
   std::vector<std::string>& out = dropped ? *dropped : ignored;
   PolygonMesh mesh;
   switch (format) {
     case MeshFormat::off:
-      mesh = parse_off(bytes, source, kinds, out);
+      mesh = parse_off(bytes, source, out);
       break;
     case MeshFormat::obj:
-      mesh = parse_obj(bytes, source, kinds, out);
+      mesh = parse_obj(bytes, source, out);
       break;
     case MeshFormat::ply:
-      mesh = parse_ply(bytes, source, kinds, out);
+      mesh = parse_ply(bytes, source, out);
       break;
   }
   // A file with no faces is not a mesh the library can do anything with; say so here rather
   // than let an empty surface pass as closed.
   if (mesh.face_count() == 0) throw FileError(source, 0, "no faces");
   return mesh;
-}
-
-// The all-triangle polygon mesh as a triangle mesh: the positions move, the corners are copied
-// and then freed, so the peak is the corners twice (12 bytes per face), after the file's bytes
-// are gone, below the parse's own peak.
-TriangleMesh to_triangles(PolygonMesh&& mesh) {
-  TriangleMesh triangles;
-  triangles.positions = std::move(mesh.positions);
-  triangles.triangles.resize(mesh.face_count());
-  for (std::size_t t = 0; t < triangles.triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) triangles.triangles[t][k] = mesh.corners[3 * t + k];
-  }
-  return triangles;
 }
 
 }  // namespace
@@ -56,20 +43,12 @@ MeshFormat mesh_format_of(const std::string& path) {
 
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
                        std::vector<std::string>* dropped) {
-  return parse(bytes, format, source, FaceKinds::polygons, dropped);
+  return parse(bytes, format, source, dropped);
 }
 
 PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped) {
   const MeshFormat format = mesh_format_of(path);
-  return parse(read_file_bytes(path).view(), format, path, FaceKinds::polygons, dropped);
-}
-
-TriangleMesh read_triangle_mesh(const std::string& path) {
-  const MeshFormat format = mesh_format_of(path);
-  // The file's bytes are freed at the end of this statement, before the conversion.
-  PolygonMesh mesh =
-      parse(read_file_bytes(path).view(), format, path, FaceKinds::triangles, nullptr);
-  return to_triangles(std::move(mesh));
+  return parse(read_file_bytes(path).view(), format, path, dropped);
 }
 
 }  // namespace petersen

@@ -1,9 +1,10 @@
 #include "triangulation.hpp"
 
 #include <stdexcept>
+#include <string>
 
 #include "petersen/dualize/pairable_graph.hpp"
-#include "petersen/mesh/surface_check.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "spatial_order.hpp"
 
 namespace petersen::lrs {
@@ -13,10 +14,16 @@ namespace {
 constexpr SurfaceRequirements kSurface{.allow_pinched_vertices = false,
                                        .allow_several_components = false};
 
-// The surface check, on the mesh's triangles (require_closed_surface reads them as a triangle
-// list). Throws MeshError naming the first face that is not a triangle, or the surface's fault.
+// The surface lrs needs: triangles only, closed, connected, no pinched vertex. Throws MeshError
+// naming the first face that is not a triangle, or the surface's fault. O(C log d).
 void require_closed_triangle_surface(const PolygonMesh& mesh) {
-  require_closed_surface(to_triangle_mesh(mesh), kSurface);
+  for (FaceId f = 0; !mesh.all_triangles() && f < mesh.face_count(); ++f) {
+    if (mesh.arity(f) != 3) {
+      throw MeshError("face " + std::to_string(f) + " has " + std::to_string(mesh.arity(f)) +
+                      " corners; only triangles are supported here");
+    }
+  }
+  require_closed_surface(mesh, kSurface);
 }
 
 bool corners_in_range(const PolygonMesh& mesh) {

@@ -11,7 +11,7 @@
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
-#include "quad_check.hpp"
+#include "quad_mesh_check.hpp"
 
 namespace petersen {
 namespace {

@@ -16,7 +16,7 @@
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/matching/perfect_matching.hpp"
-#include "quad_check.hpp"
+#include "quad_mesh_check.hpp"
 
 namespace petersen {
 namespace {

@@ -3,7 +3,7 @@
 #include "petersen/dualize/dual.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
-#include "quad_check.hpp"
+#include "quad_mesh_check.hpp"
 
 namespace petersen {
 namespace {

@@ -13,7 +13,7 @@
 namespace petersen::lrs {
 namespace {
 
-void check_contraction(const TriangleMesh& mesh, std::uint32_t genus) {
+void check_contraction(const PolygonMesh& mesh, std::uint32_t genus) {
   const Triangulation original = testing::from_triangles(mesh);
   RC_ASSERT(original.genus() == genus);
   Triangulation tri = original;
@@ -42,7 +42,7 @@ void check_contraction(const TriangleMesh& mesh, std::uint32_t genus) {
 
 RC_GTEST_PROP(ContractionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations(genus);
   check_contraction(mesh, genus);
 }
 

@@ -14,20 +14,21 @@
 
 #include "contraction_step.hpp"
 #include "dual_rows.hpp"
-#include "petersen/dualize/quads.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/perfect_partners.hpp"
-#include "petersen/mesh/surface_check.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
+#include "quad_mesh_check.hpp"
 #include "small_meshes.hpp"
 
 namespace petersen::lrs {
 namespace {
 
-std::vector<std::pair<VertexId, VertexId>> edge_set(const TriangleMesh& mesh) {
+std::vector<std::pair<VertexId, VertexId>> edge_set(const PolygonMesh& mesh) {
   std::vector<std::pair<VertexId, VertexId>> edges;
-  for (const auto& t : mesh.triangles) {
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const auto t = mesh.face(f);
     for (int k = 0; k < 3; ++k) {
       const VertexId a = t[k], b = t[(k + 1) % 3];
       if (a < b) edges.emplace_back(a, b);
@@ -38,7 +39,7 @@ std::vector<std::pair<VertexId, VertexId>> edge_set(const TriangleMesh& mesh) {
 }
 
 // `tri` is the triangulation of `mesh`, from from_mesh or from_dual.
-void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t genus) {
+void check_expansion(const PolygonMesh& mesh, Triangulation tri, std::uint32_t genus) {
   const std::uint32_t vertices = tri.live_vertices(), faces = tri.live_faces();
   const ContractionResult contraction = contract_to_irreducible(tri);
   const std::uint32_t irreducible_faces = tri.live_faces();
@@ -48,8 +49,8 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
   RC_ASSERT(tri.live_vertices() == vertices);
   RC_ASSERT(tri.live_faces() == faces);
   RC_ASSERT(tri.genus() == genus);
-  const TriangleMesh k = to_triangle_mesh(tri.to_mesh(mesh.positions));
-  const SurfaceReport report = inspect_surface(k);
+  const PolygonMesh k = tri.to_mesh(mesh.positions);
+  const MeshReport report = inspect_mesh(k);
   RC_ASSERT(report.closed());
   RC_ASSERT(report.pinched_vertices.empty());
   RC_ASSERT(report.components == 1u);
@@ -75,9 +76,10 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
   ExpansionResult states = expansion;
   DualRows rows = into_dual_rows(std::move(tri), std::move(states));
   RC_ASSERT(rows.unpaired == matching.unmatched_count());
-  RC_ASSERT(rows.triangles.size() == k.triangles.size());
+  RC_ASSERT(rows.triangles.size() == k.face_count());
   for (NodeId f = 0; f < dual.node_count(); ++f) {
-    RC_ASSERT(rows.triangles[f] == k.triangles[f]);
+    const auto kf = k.face(f);
+    RC_ASSERT((rows.triangles[f] == std::array<VertexId, 3>{kf[0], kf[1], kf[2]}));
     for (int i = 0; i < 3; ++i) {
       RC_ASSERT(rows.rows[3 * f + i] == dual.other_end(dual.incident_edges(f)[i], f));
     }
@@ -87,14 +89,15 @@ void check_expansion(const TriangleMesh& mesh, Triangulation tri, std::uint32_t 
 
   augment_matching(dual, matching);
   RC_ASSERT(verify_perfect_matching(dual, matching).ok());
-  RC_ASSERT(check_quad_mesh(mesh, quads_from_matching(k, dual, matching)).ok());
+  RC_ASSERT(petersen::testing::quad_mesh_problem(
+                mesh, petersen::testing::quads_of_matching(k, dual, matching)) == "");
   augment_partners(rows.rows, rows.partner);
   RC_ASSERT(verify_perfect_partners(rows.rows, rows.partner).ok());
 }
 
 RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations(genus);
   check_expansion(mesh, testing::from_triangles(mesh), genus);
 }
 
@@ -102,7 +105,7 @@ RC_GTEST_PROP(ExpansionStep, RandomClosedSurfacesOfGenusUpTo30, ()) {
 // door builds it): the same guarantees.
 RC_GTEST_PROP(ExpansionStep, FromTheDualOfRandomClosedSurfaces, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations(genus);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations(genus);
   check_expansion(mesh, testing::from_dual_of(mesh), genus);
 }
 
@@ -112,7 +115,7 @@ RC_GTEST_PROP(ExpansionStep, VoxelPlates, ()) {
   spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.dents = *rc::gen::arbitrary<bool>();
-  const TriangleMesh mesh = voxel_plate(spec);
+  const PolygonMesh mesh = voxel_plate(spec);
   const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
   check_expansion(mesh, testing::from_triangles(mesh), genus);
   check_expansion(mesh, testing::from_dual_of(mesh), genus);

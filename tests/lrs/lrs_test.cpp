@@ -60,7 +60,7 @@ LrsPairing pair_from_dual(const PolygonMesh& mesh, const LrsOptions& options = {
 
 RC_GTEST_PROP(Lrs, RandomClosedSurfacesOfGenusUpTo30, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 31);
-  const PolygonMesh mesh = to_polygon_mesh(*petersen::testing::closed_triangulations(genus));
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations(genus);
   const auto augment = *rc::gen::element(Augment::local, Augment::faithful);
   check_result(mesh, pair_closed_component_by_lrs(mesh, {.augment = augment}), genus);
   check_result(mesh, pair_from_dual(mesh, {.augment = augment}), genus);
@@ -72,7 +72,7 @@ RC_GTEST_PROP(Lrs, VoxelPlates, ()) {
   spec.holes_y = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.subdivision = *rc::gen::inRange<std::uint32_t>(1, 4);
   spec.dents = *rc::gen::arbitrary<bool>();
-  const PolygonMesh mesh = to_polygon_mesh(voxel_plate(spec));
+  const PolygonMesh mesh = voxel_plate(spec);
   const std::uint32_t genus = spec.dents ? 0 : spec.holes_x * spec.holes_y;
   check_result(mesh, pair_closed_component_by_lrs(mesh), genus);
   check_result(mesh, pair_from_dual(mesh), genus);
@@ -80,7 +80,7 @@ RC_GTEST_PROP(Lrs, VoxelPlates, ()) {
 
 // Without sources every quad names no input triangle, and the caller's corners_read runs once.
 TEST(Lrs, WithoutSourcesTheCornersAreReleasedOnce) {
-  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(2, 400, 400, 3));
+  const PolygonMesh mesh = random_closed_surface(2, 400, 400, 3);
   PairableGraph graph = build_pairable_graph(mesh);
   int calls = 0;
   const LrsPairing result =
@@ -98,7 +98,7 @@ TEST(Lrs, WithoutSourcesTheCornersAreReleasedOnce) {
 }
 
 TEST(Lrs, EveryExpansionCaseRunsOnAnIrregularSphere) {
-  const PolygonMesh mesh = to_polygon_mesh(random_closed_surface(0, 3000, 3000, 7));
+  const PolygonMesh mesh = random_closed_surface(0, 3000, 3000, 7);
   const LrsPairing result = pair_closed_component_by_lrs(mesh);
   for (int c = 0; c < 4; ++c) EXPECT_GT(result.stats.expansion_cases[c], 0u) << "case " << c;
   EXPECT_GT(result.stats.flipped_edges, 0u);
@@ -110,9 +110,9 @@ TEST(Lrs, EveryExpansionCaseRunsOnAnIrregularSphere) {
 }
 
 TEST(Lrs, RefusesWhatIsNotAClosedOrientableManifold) {
-  const auto refuses = [](const TriangleMesh& mesh, const std::string& names) {
+  const auto refuses = [](const PolygonMesh& mesh, const std::string& names) {
     try {
-      pair_closed_component_by_lrs(to_polygon_mesh(mesh));
+      pair_closed_component_by_lrs((mesh));
       ADD_FAILURE() << "accepted a mesh that should name " << names;
     } catch (const MeshError& error) {
       EXPECT_NE(std::string(error.what()).find(names), std::string::npos) << error.what();
@@ -124,11 +124,11 @@ TEST(Lrs, RefusesWhatIsNotAClosedOrientableManifold) {
           7,
           {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}}),
       "vertex 0");
-  TriangleMesh open = lrs::testing::tetrahedron();
-  open.triangles.pop_back();
+  PolygonMesh open = lrs::testing::tetrahedron();
+  open.corners.resize(open.corners.size() - 3);
   refuses(open, "edge");
-  TriangleMesh flipped = lrs::testing::tetrahedron();
-  std::swap(flipped.triangles[3][1], flipped.triangles[3][2]);
+  PolygonMesh flipped = lrs::testing::tetrahedron();
+  std::swap(flipped.corners[3 * 3 + 1], flipped.corners[3 * 3 + 2]);
   refuses(flipped, "edge");
   // Two disjoint tetrahedra.
   refuses(
@@ -143,7 +143,7 @@ TEST(Lrs, SharedMeshesConvert) {
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   for (const auto& expected : testing::shared_meshes_up_to(kMaxTriangles)) {
     SCOPED_TRACE(expected.file);
-    const PolygonMesh mesh = to_polygon_mesh(read_triangle_mesh(*dir + "/" + expected.file));
+    const PolygonMesh mesh = read_mesh(*dir + "/" + expected.file);
     const LrsPairing result = pair_closed_component_by_lrs(mesh);
     const LrsStats& s = result.stats;
     EXPECT_EQ(lrs::testing::quad_problem(mesh, result), "");

@@ -14,7 +14,7 @@
 #include "edge_flip.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/mesh/surface_check.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "small_meshes.hpp"
 
@@ -35,7 +35,7 @@ Halfedge find_halfedge(const Triangulation& tri, VertexId a, VertexId b) {
 }
 
 TEST(Triangulation, BuildsFromMeshWithMeshIds) {
-  const TriangleMesh mesh = testing::octahedron();
+  const PolygonMesh mesh = testing::octahedron();
   const Triangulation tri = testing::from_triangles(mesh);
   EXPECT_EQ(tri.check(), "");
   EXPECT_EQ(tri.live_vertices(), 6u);
@@ -51,9 +51,9 @@ TEST(Triangulation, BuildsFromMeshWithMeshIds) {
 // surface, the same oriented faces, the same genus; an error names the input's elements.
 RC_GTEST_PROP(Triangulation, SpatialNumberingKeepsTheSurface, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
-  const TriangleMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
-                                                  *rc::gen::inRange<std::uint32_t>(0, 300),
-                                                  *rc::gen::arbitrary<std::uint64_t>());
+  const PolygonMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                 *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                 *rc::gen::arbitrary<std::uint64_t>());
   const Triangulation tri = testing::from_triangles(mesh, Triangulation::Numbering::spatial);
   RC_ASSERT(tri.check() == "");
   RC_ASSERT(tri.genus() == genus);
@@ -65,8 +65,8 @@ RC_GTEST_PROP(Triangulation, SpatialNumberingKeepsTheSurface, ()) {
 }
 
 TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
-  TriangleMesh open = testing::octahedron();
-  open.triangles.erase(open.triangles.begin() + 3);
+  PolygonMesh open = testing::octahedron();
+  open.corners.erase(open.corners.begin() + 9, open.corners.begin() + 12);
   std::string as_given, spatial;
   try {
     testing::from_triangles(open);
@@ -80,17 +80,17 @@ TEST(Triangulation, SpatialNumberingNamesTheInputsElementsInErrors) {
   }
   EXPECT_NE(as_given, "");
   EXPECT_EQ(spatial, as_given);
-  TriangleMesh out_of_range = testing::tetrahedron();
-  out_of_range.triangles[2][1] = 99;
+  PolygonMesh out_of_range = testing::tetrahedron();
+  out_of_range.corners[2 * 3 + 1] = 99;
   EXPECT_THROW(testing::from_triangles(out_of_range, Triangulation::Numbering::spatial), MeshError);
 }
 
 // From the dual: the same surface as from_mesh, numbered spatially, every vertex once.
 RC_GTEST_PROP(Triangulation, FromDualKeepsTheSurface, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
-  const TriangleMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
-                                                  *rc::gen::inRange<std::uint32_t>(0, 300),
-                                                  *rc::gen::arbitrary<std::uint64_t>());
+  const PolygonMesh mesh = random_closed_surface(genus, *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                 *rc::gen::inRange<std::uint32_t>(0, 300),
+                                                 *rc::gen::arbitrary<std::uint64_t>());
   const Triangulation tri = testing::from_dual_of(mesh);
   const Triangulation reference = testing::from_triangles(mesh);
   RC_ASSERT(tri.check() == "");
@@ -107,7 +107,7 @@ RC_GTEST_PROP(Triangulation, FromDualKeepsTheSurface, ()) {
 
 // A caller that has counted one component skips the count, and gets the same triangulation.
 RC_GTEST_PROP(Triangulation, FromDualTrustsTheCallersCount, ()) {
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
   const CubicGraph dual = build_dual(mesh).graph;
   const auto build = [&](Triangulation::Connectivity connectivity) {
     return Triangulation::from_dual(mesh.positions, testing::flat_corners(mesh),
@@ -132,7 +132,7 @@ RC_GTEST_PROP(Triangulation, FromDualTrustsTheCallersCount, ()) {
 // The corners are not read after corners_read, which is called once: a caller that overwrites
 // (or frees) them there gets the same triangulation.
 RC_GTEST_PROP(Triangulation, FromDualReadsNoCornerAfterSayingSo, ()) {
-  const TriangleMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
+  const PolygonMesh mesh = *petersen::testing::closed_triangulations_up_to(3);
   const CubicGraph dual = build_dual(mesh).graph;
   std::vector<VertexId> corners = testing::flat_corners(mesh);
   int calls = 0;
@@ -158,17 +158,16 @@ RC_GTEST_PROP(Triangulation, FromDualReadsNoCornerAfterSayingSo, ()) {
 }
 
 // Closed surfaces with vertices pinched (pinch_vertices merges two vertices' cones): from_dual
-// refuses them, on one thread or two, naming a vertex that the surface check (inspect_surface,
+// refuses them, on one thread or two, naming a vertex that the surface check (inspect_mesh,
 // which counts each vertex's fans its own way) finds pinched, and before corners_read; without a
 // pinch it builds.
 RC_GTEST_PROP(Triangulation, FromDualRefusesEveryPinchBeforeReadingOn, ()) {
-  const TriangleMesh surface = random_closed_surface(
+  const PolygonMesh surface = random_closed_surface(
       *rc::gen::inRange<std::uint32_t>(0, 3), *rc::gen::inRange<std::uint32_t>(0, 200),
       *rc::gen::inRange<std::uint32_t>(0, 200), *rc::gen::arbitrary<std::uint64_t>());
-  const TriangleMesh mesh = to_triangle_mesh(pinch_vertices(to_polygon_mesh(surface),
-                                                            *rc::gen::inRange<std::uint32_t>(0, 4),
-                                                            *rc::gen::arbitrary<std::uint64_t>()));
-  const SurfaceReport report = inspect_surface(mesh);
+  const PolygonMesh mesh = pinch_vertices(surface, *rc::gen::inRange<std::uint32_t>(0, 4),
+                                          *rc::gen::arbitrary<std::uint64_t>());
+  const MeshReport report = inspect_mesh(mesh);
   const CubicGraph dual = build_dual(mesh).graph;
   const std::vector<VertexId> corners = testing::flat_corners(mesh);
   int reads = 0;
@@ -205,7 +204,7 @@ RC_GTEST_PROP(Triangulation, FromDualRefusesEveryPinchBeforeReadingOn, ()) {
 TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
   // A refusal comes before corners_read: a caller that frees the corners there and falls back
   // to another method on MeshError reads them again.
-  const auto message = [](const TriangleMesh& mesh, std::span<const VertexId> corners,
+  const auto message = [](const PolygonMesh& mesh, std::span<const VertexId> corners,
                           const CubicGraph& dual) -> std::string {
     bool read = false;
     try {
@@ -221,30 +220,30 @@ TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
     return "";
   };
   // Two tetrahedra apart.
-  TriangleMesh two = testing::mesh_of(
+  PolygonMesh two = testing::mesh_of(
       8, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {4, 6, 5}, {4, 5, 7}, {5, 6, 7}, {4, 7, 6}});
   EXPECT_EQ(message(two, testing::flat_corners(two), build_dual(two).graph),
             "2 components (triangles joined through edges)");
   // A cylinder of 2 x 4 squares whose end circles are closed by cones with one apex, vertex 12:
   // connected through edges, but 12 has two fans.
-  TriangleMesh pinched;
+  PolygonMesh pinched;
   for (VertexId v = 0; v < 13; ++v) pinched.positions.push_back({double(v), 0, 0});
   for (VertexId row = 0; row < 2; ++row) {
     for (VertexId i = 0; i < 4; ++i) {
       const VertexId a = 4 * row + i, b = 4 * row + (i + 1) % 4, c = a + 4, d = b + 4;
-      pinched.triangles.push_back({a, b, d});
-      pinched.triangles.push_back({a, d, c});
+      pinched.add_face(std::array<VertexId, 3>{a, b, d});
+      pinched.add_face(std::array<VertexId, 3>{a, d, c});
     }
   }
   for (VertexId i = 0; i < 4; ++i) {
-    pinched.triangles.push_back({(i + 1) % 4, i, 12});
-    pinched.triangles.push_back({8 + i, 8 + (i + 1) % 4, 12});
+    pinched.add_face(std::array<VertexId, 3>{(i + 1) % 4, i, 12});
+    pinched.add_face(std::array<VertexId, 3>{8 + i, 8 + (i + 1) % 4, 12});
   }
   EXPECT_EQ(message(pinched, testing::flat_corners(pinched), build_dual(pinched).graph),
             "pinched vertex 12 (its triangles form more than one fan)");
   // Triangle 0 of the tetrahedron turned over, its slots turned with it: the dual's arrays still
   // fit the triangles, but the two triangles of its edges run along them the same way.
-  const TriangleMesh tetrahedron = testing::tetrahedron();
+  const PolygonMesh tetrahedron = testing::tetrahedron();
   const CubicGraph dual = build_dual(tetrahedron).graph;
   std::vector<VertexId> corners = testing::flat_corners(tetrahedron);
   std::swap(corners[1], corners[2]);
@@ -269,11 +268,11 @@ TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
 
 TEST(Triangulation, RefusesPinchedVertexAndOpenSurface) {
   // Two tetrahedra sharing vertex 0: closed, but 0's link is two cycles.
-  TriangleMesh pinched = testing::mesh_of(
+  PolygonMesh pinched = testing::mesh_of(
       7, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}, {0, 5, 4}, {0, 4, 6}, {4, 5, 6}, {0, 6, 5}});
   EXPECT_THROW(testing::from_triangles(pinched), MeshError);
-  TriangleMesh open = testing::tetrahedron();
-  open.triangles.pop_back();
+  PolygonMesh open = testing::tetrahedron();
+  open.corners.resize(open.corners.size() - 3);
   EXPECT_THROW(testing::from_triangles(open), MeshError);
 }
 
@@ -352,7 +351,7 @@ RC_GTEST_PROP(Operators, ContractThenSplitRestoresTheExactTriangulation, ()) {
 RC_GTEST_PROP(Operators, FlipTwiceRestoresTheTriangulation, ()) {
   const auto genus = *rc::gen::inRange<std::uint32_t>(0, 6);
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  const TriangleMesh mesh = random_closed_surface(genus, 40, 40, seed);
+  const PolygonMesh mesh = random_closed_surface(genus, 40, 40, seed);
   const Triangulation original = testing::from_triangles(mesh);
   std::uint32_t flipped = 0;
   for (Halfedge h = 0; h < 2 * original.edge_capacity(); h += 7) {

@@ -15,45 +15,44 @@
 
 namespace petersen::lrs::testing {
 
-inline TriangleMesh mesh_of(std::uint32_t vertices, HugeVector<std::array<VertexId, 3>> faces) {
-  TriangleMesh mesh;
+inline PolygonMesh mesh_of(std::uint32_t vertices,
+                           const std::vector<std::array<VertexId, 3>>& faces) {
+  PolygonMesh mesh;
   for (std::uint32_t v = 0; v < vertices; ++v) mesh.positions.push_back({double(v), 0, 0});
-  mesh.triangles = std::move(faces);
+  for (const auto& t : faces) mesh.add_face(t);
   return mesh;
 }
 
-inline TriangleMesh tetrahedron() {
+inline PolygonMesh tetrahedron() {
   return mesh_of(4, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}});
 }
 
 /// Vertices 0/1, 2/3, 4/5 are antipodal pairs.
-inline TriangleMesh octahedron() {
+inline PolygonMesh octahedron() {
   return mesh_of(
       6, {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
 }
 
 /// The tetrahedron with face (0, 1, 3) split at a new vertex 4: the 3-cycle 0-1-3 bounds no face
 /// and separates 2 from 4.
-inline TriangleMesh stacked_tetrahedron() {
+inline PolygonMesh stacked_tetrahedron() {
   return mesh_of(5, {{0, 2, 1}, {1, 2, 3}, {0, 3, 2}, {0, 1, 4}, {1, 3, 4}, {3, 0, 4}});
 }
 
-/// Triangulation::from_mesh on a triangle mesh (the generators' type).
+/// Triangulation::from_mesh, its numbering as given unless asked.
 inline Triangulation from_triangles(
-    const TriangleMesh& mesh,
+    const PolygonMesh& mesh,
     Triangulation::Numbering numbering = Triangulation::Numbering::as_given) {
-  return Triangulation::from_mesh(to_polygon_mesh(mesh), numbering);
+  return Triangulation::from_mesh(mesh, numbering);
 }
 
-/// The mesh's corners, three per triangle, as PolygonMesh keeps them.
-inline std::vector<VertexId> flat_corners(const TriangleMesh& mesh) {
-  std::vector<VertexId> corners;
-  for (const auto& t : mesh.triangles) corners.insert(corners.end(), t.begin(), t.end());
-  return corners;
+/// The mesh's corners, three per triangle.
+inline std::vector<VertexId> flat_corners(const PolygonMesh& mesh) {
+  return {mesh.corners.begin(), mesh.corners.end()};
 }
 
 /// Triangulation::from_dual on the mesh's build_dual graph (copies of its arrays).
-inline Triangulation from_dual_of(const TriangleMesh& mesh) {
+inline Triangulation from_dual_of(const PolygonMesh& mesh) {
   const CubicGraph dual = build_dual(mesh).graph;
   const std::span<const EdgeId> slots = dual.node_edges();
   const std::span<const NodeId> ends = dual.edge_ends();
@@ -62,18 +61,16 @@ inline Triangulation from_dual_of(const TriangleMesh& mesh) {
 }
 
 /// The oriented faces as vertex triples rotated to start at their smallest vertex, sorted.
-inline std::vector<std::array<VertexId, 3>> oriented_faces(const TriangleMesh& mesh) {
+inline std::vector<std::array<VertexId, 3>> oriented_faces(const PolygonMesh& mesh) {
   std::vector<std::array<VertexId, 3>> faces;
-  for (auto t : mesh.triangles) {
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const auto c = mesh.face(f);
+    std::array<VertexId, 3> t = {c[0], c[1], c[2]};
     while (t[0] > t[1] || t[0] > t[2]) t = {t[1], t[2], t[0]};
     faces.push_back(t);
   }
   std::sort(faces.begin(), faces.end());
   return faces;
-}
-
-inline std::vector<std::array<VertexId, 3>> oriented_faces(const PolygonMesh& mesh) {
-  return oriented_faces(to_triangle_mesh(mesh));
 }
 
 /// K's dual as a CubicGraph, an oracle for into_dual_rows: node f is to_mesh's triangle f, dual

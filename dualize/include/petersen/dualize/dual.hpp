@@ -43,8 +43,5 @@ Dual build_dual(const PolygonMesh& mesh);
 /// The dual graph alone (see build_dual for the numbering and the errors).
 CubicGraph dual_graph(const PolygonMesh& mesh);
 
-/// The same on a TriangleMesh, for lrs/ (with its tests and benchmarks), which takes TriangleMesh.
-Dual build_dual(const TriangleMesh& mesh);
-CubicGraph dual_graph(const TriangleMesh& mesh);
 
 }  // namespace petersen

@@ -46,11 +46,4 @@ PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
                        std::vector<std::string>* dropped = nullptr);
 
-/// Reads a mesh like read_mesh as a TriangleMesh, for lrs/'s tests and benchmarks, which take
-/// TriangleMesh (attributes are not kept): a face that is not a triangle is a MeshError located
-/// like the others ("FILE:LINE: face F has 4 corners; only triangles are supported"). Peak memory:
-/// the file's bytes and the mesh while parsing, then the triangles' corners twice while they are
-/// converted (the file's bytes are gone by then).
-TriangleMesh read_triangle_mesh(const std::string& path);
-
 }  // namespace petersen

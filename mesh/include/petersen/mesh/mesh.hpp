@@ -50,31 +50,9 @@ struct PolygonMesh {
   void add_face(std::span<const VertexId> face_corners);
 };
 
-/// A triangle mesh as an array of corner triples, counter-clockwise seen from outside: the type
-/// lrs/ takes (with its tests and benchmarks); the rest of the library takes PolygonMesh, whose
-/// all-triangle form has the same corners in the same order.
-struct TriangleMesh {
-  TriangleMesh() = default;
-  /// to_triangle_mesh, implicitly, so that lrs/ takes the generators' and readers' meshes.
-  TriangleMesh(const PolygonMesh& mesh);  // NOLINT(google-explicit-constructor)
-  Positions positions;
-  HugeVector<std::array<VertexId, 3>> triangles;
-};
-
-/// The quads lrs/ makes of a TriangleMesh (quads_from_matching), over the same positions.
-struct QuadMesh {
-  Positions positions;
-  HugeVector<std::array<VertexId, 4>> quads;
-};
-
 /// Throws MeshError naming the first attribute array whose size does not match the mesh (one
 /// entry per corner, face or vertex) or whose index is out of range. O(corners + faces).
 void check_attributes(const PolygonMesh& mesh);
-
-/// The triangle mesh as a polygon mesh (a copy of its corners), and back: to_triangle_mesh throws
-/// MeshError naming the first face that is not a triangle. O(F).
-PolygonMesh to_polygon_mesh(const TriangleMesh& mesh);
-TriangleMesh to_triangle_mesh(const PolygonMesh& mesh);
 
 /// Raised for bad mesh input or a mesh that is not a closed surface; the message names the file
 /// and line, or the element index.

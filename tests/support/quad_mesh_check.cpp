@@ -1,4 +1,4 @@
-#include "quad_check.hpp"
+#include "quad_mesh_check.hpp"
 
 #include <algorithm>
 #include <cstdint>
