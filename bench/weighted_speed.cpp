@@ -77,7 +77,7 @@ void measure(const std::string& name, const TriangleMesh& mesh, bool with_lemon,
     ps.push_back(seconds_of([&] {
       ps_cpu.push_back(cpu_seconds_of([&] {
         perfect_matching(
-            g, {.algorithm = Algorithm::ps, .augment = Augment::local, .validate = false});
+            g, {.algorithm = Algorithm::automatic, .augment = Augment::local, .validate = false});
       }));
     }));
   }

@@ -37,7 +37,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?", default=str(here / "plate-genus2.off"))
     parser.add_argument("--out", default="out")
-    parser.add_argument("--algorithm", default="ps", choices=petersen.ALGORITHMS,
+    parser.add_argument("--algorithm", default="auto", choices=petersen.ALGORITHMS,
                         help="for the objective pairs")
     parser.add_argument("--all-quad", action="store_true", help="split the triangles left too")
     args = parser.parse_args()

@@ -301,8 +301,8 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 // not before: each is a single-threaded pass of random reads (on armadillo-sub2 about 0.03 s
 // together, one after the other), and the forest (4 bytes per node) is still gone before the
 // matching's peak.
-void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePairing& pairing,
-                      QuadStats& stats, LapClock& clock) {
+void pair_by_partners(CubicGraph cubic, Algorithm algorithm, const QuadOptions& options,
+                      TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
   const std::uint32_t node_count = cubic.node_count();
   const HugeVector<NodeId> rows =
       std::move(cubic).into_neighbour_rows(options.threads, [&](std::span<const NodeId> edge_ends) {
@@ -310,7 +310,8 @@ void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePair
             ComponentForest(node_count, edge_ends).root_count();
       });
   stats.dual_seconds += clock.lap();
-  PartnerResult result = perfect_partners(rows, {.augment = options.augment, .seed = options.seed});
+  PartnerResult result = perfect_partners(
+      rows, {.algorithm = algorithm, .augment = options.augment, .seed = options.seed});
   add_run(stats.matching, result.stats);
   clock.lap();
   if (MatchingCheck check = verify_perfect_partners(rows, result.partner); !check.ok()) {
@@ -331,7 +332,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   TrianglePairing pairing;
   const std::uint32_t n = graph.node_count;
   const Algorithm closed_algorithm =
-      options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
+      options.algorithm == Algorithm::lrs ? Algorithm::automatic : options.algorithm;
   const bool quality = options.objective == Objective::quality;
   // lrs flips edges, making quads the threshold never judged: with one, ps does its work.
   bool use_lrs = options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
@@ -362,10 +363,11 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   // The common case, a closed triangle mesh matched by a graph algorithm: the pairable graph is
   // the cubic dual itself.
   if (graph.cubic && !use_lrs) {
-    if (closed_algorithm == Algorithm::ps && costs.empty()) {
+    if ((closed_algorithm == Algorithm::automatic || closed_algorithm == Algorithm::ps) &&
+        costs.empty()) {
       pair_by_partners(
           CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends)),
-          options, pairing, stats, clock);
+          closed_algorithm, options, pairing, stats, clock);
     } else {
       CubicGraph cubic =
           CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
