@@ -6,7 +6,7 @@
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
-#include "stopwatch.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "reduction/match_by_reductions.hpp"
 
 namespace petersen {

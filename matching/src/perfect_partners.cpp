@@ -5,7 +5,7 @@
 
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
-#include "stopwatch.hpp"
+#include "petersen/graph/stopwatch.hpp"
 
 namespace petersen {
 
