@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convert a mesh with both objectives, compare the quads' shapes, and draw both.
 
-    python3 examples/convert.py [MESH] [--out DIR] [--algorithm ps] [--all-quad]
+    python3 examples/convert.py [MESH] [--out DIR] [--algorithm auto] [--all-quad]
 
 MESH defaults to the bundled examples/plate-genus2.off. Converts it twice: objective "pairs" (the
 algorithm's pairing, fastest) and objective "quality" (the certified minimum total worst-corner
