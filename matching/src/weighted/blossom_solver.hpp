@@ -74,8 +74,8 @@ class BlossomSolver {
   /// The nodes left free by the start.
   std::uint32_t free_nodes() const;
 
-  /// Grows the alternating trees of all free nodes at once until none is left (blossom_forest.cpp).
-  /// Throws GraphError when there is no perfect matching.
+  /// Grows the alternating trees of all free nodes at once until none is left
+  /// (blossom_forest.cpp). Throws GraphError when there is no perfect matching.
   [[gnu::noinline]] void run();
 
   /// The matching and the dual certificate in the input's ids, after run(); returns the
@@ -133,7 +133,8 @@ class BlossomSolver {
     }
     return find_nested(v, below);
   }
-  std::uint32_t find_nested(NodeId v, std::int64_t& below);  // blossom_structure.cpp
+  // Out of line (blossom_structure.cpp), so that find stays small where it is inlined.
+  [[gnu::noinline]] std::uint32_t find_nested(NodeId v, std::int64_t& below);
   std::uint32_t top(NodeId v) {
     std::int64_t below;
     return find(v, below);
