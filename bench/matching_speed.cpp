@@ -67,7 +67,7 @@ void measure(const std::string& name, const CubicGraph& g) {
   constexpr int kRounds = 5;
   const std::uint32_t n = g.node_count();
   std::printf("\n== %s: %u nodes\n", name.c_str(), n);
-  constexpr Algorithm kGreedy[] = {Algorithm::ps, Algorithm::sg};
+  constexpr Algorithm kGreedy[] = {Algorithm::automatic, Algorithm::sg};
   std::vector<double> bfs;
   std::vector<double> seconds[2], ratio[2], initial[2], augment[2];
   Result local[2];

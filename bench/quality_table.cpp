@@ -203,7 +203,7 @@ int main(int argc, char** argv) {
   const PeerMatcher lemon = &lemon_peer::maximum_matching;
   std::vector<Row> rows;
   rows.push_back(by_petersen(mesh, "sg", {.algorithm = Algorithm::sg, .peer = lemon}));
-  rows.push_back(by_petersen(mesh, "ps", {.algorithm = Algorithm::ps, .peer = lemon}));
+  rows.push_back(by_petersen(mesh, "auto", {.algorithm = Algorithm::automatic, .peer = lemon}));
   rows.push_back(by_petersen(mesh, "lrs", {.algorithm = Algorithm::lrs, .peer = lemon}));
   rows.push_back(by_petersen(mesh, "quality", {.objective = Objective::quality}));
   rows.push_back(by_petersen(mesh, "quality, max 40",

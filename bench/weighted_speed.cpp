@@ -78,7 +78,7 @@ void measure(const std::string& name, const PolygonMesh& mesh, bool with_lemon, 
     ps.push_back(seconds_of([&] {
       ps_cpu.push_back(cpu_seconds_of([&] {
         perfect_matching(
-            g, {.algorithm = Algorithm::ps, .augment = Augment::local, .validate = false});
+            g, {.algorithm = Algorithm::automatic, .augment = Augment::local, .validate = false});
       }));
     }));
   }

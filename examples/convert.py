@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Convert a mesh with both objectives, compare the quads' shapes, and draw both.
 
-    python3 examples/convert.py [MESH] [--out DIR] [--algorithm ps] [--all-quad]
+    python3 examples/convert.py [MESH] [--out DIR] [--algorithm auto] [--all-quad]
 
 MESH defaults to the bundled examples/plate-genus2.off. Converts it twice: objective "pairs" (the
 algorithm's pairing, fastest) and objective "quality" (the certified minimum total worst-corner
@@ -37,7 +37,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("mesh", nargs="?", default=str(here / "plate-genus2.off"))
     parser.add_argument("--out", default="out")
-    parser.add_argument("--algorithm", default="ps", choices=petersen.ALGORITHMS,
+    parser.add_argument("--algorithm", default="auto", choices=petersen.ALGORITHMS,
                         help="for the objective pairs")
     parser.add_argument("--all-quad", action="store_true", help="split the triangles left too")
     args = parser.parse_args()

@@ -56,10 +56,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // The reader allows 2^24 isolated nodes past what the edges touch; a matching of those is
   // nothing to learn and only fills memory.
   if (graph.node_count > (1u << 16)) return 0;
-  constexpr Algorithm kAlgorithms[] = {Algorithm::ps, Algorithm::sg, Algorithm::ds, Algorithm::gw,
-                                       Algorithm::frink};
+  constexpr Algorithm kAlgorithms[] = {Algorithm::automatic, Algorithm::ps, Algorithm::sg,
+                                       Algorithm::ds,        Algorithm::gw, Algorithm::frink};
   Options options;
-  options.algorithm = kAlgorithms[data[size - 1] % 5];
+  options.algorithm = kAlgorithms[data[size - 1] % 6];
   const AnyGraphMatching maximum = match_any_graph(graph.node_count, graph.edges, options);
   REQUIRE(checked_size(graph, maximum.mate_edge) == maximum.size);
   REQUIRE(maximum.perfect == (2 * std::uint64_t{maximum.size} == graph.node_count));

@@ -117,7 +117,8 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
       ->required();
   cmd->add_option("--format", args.format, "dimacs or edges (default: from IN's extension)");
   cmd->add_option("--algorithm", args.algorithm,
-                  "for a cubic bridgeless graph: sg, ps, ds, gw, frink or lemon")
+                  "for a cubic bridgeless graph: auto (the fastest pairing, then augmenting "
+                  "paths), sg, ps (Puli-Segal as the paper has it), ds, gw, frink or lemon")
       ->capture_default_str();
   cmd->add_option("--objective", args.objective,
                   "size: a maximum matching (perfect when there is one); cost: the one of least "
@@ -126,7 +127,8 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
       ->capture_default_str();
   cmd->add_option("--augment", args.augment, "augmenting-path variant: local or faithful")
       ->capture_default_str();
-  cmd->add_option("--seed", args.seed, "seed of the random orders (sg, ps)")->capture_default_str();
+  cmd->add_option("--seed", args.seed, "seed of the random orders (auto, sg, ps)")
+      ->capture_default_str();
   cmd->add_option("--stats-json", args.stats_json,
                   "also write the summary as one JSON object to this file");
   cmd->add_flag("--require-perfect", args.require_perfect,

@@ -8,7 +8,7 @@
 namespace petersen::cli {
 
 struct MatchArgs {
-  std::string input, output, format, algorithm = "ps", augment = "local", objective = "size",
+  std::string input, output, format, algorithm = "auto", augment = "local", objective = "size",
                                      stats_json;
   std::uint64_t seed = 1;
   bool require_perfect = false;

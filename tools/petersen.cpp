@@ -99,7 +99,7 @@ int render(const RenderArgs& args) {
 }
 
 struct QuadArgs {
-  std::string input, output, algorithm = "ps", augment = "local", objective = "pairs", stats_json,
+  std::string input, output, algorithm = "auto", augment = "local", objective = "pairs", stats_json,
                              render;
   std::vector<double> view;
   std::uint32_t render_width = 800, render_height = 800;
@@ -281,13 +281,16 @@ int main(int argc, char** argv) {
                    "mesh to write (written whole, then renamed into place); format from the "
                    "extension (.off, .obj, .ply, optionally .gz)")
       ->required();
-  quad_cmd->add_option("--algorithm", quad_args.algorithm, "sg, ps, ds, gw, frink, lemon or lrs")
+  quad_cmd
+      ->add_option("--algorithm", quad_args.algorithm,
+                   "auto (the fastest pairing, then augmenting paths), sg, ps (Puli-Segal as the "
+                   "paper has it), ds, gw, frink, lemon or lrs")
       ->capture_default_str();
   quad_cmd
       ->add_option("--augment", quad_args.augment,
-                   "augmenting-path variant for sg and ps: local or faithful")
+                   "augmenting-path variant for auto, sg and ps: local or faithful")
       ->capture_default_str();
-  quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (sg, ps)")
+  quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (auto, sg, ps)")
       ->capture_default_str();
   quad_cmd
       ->add_option("--objective", quad_args.objective,

@@ -39,8 +39,8 @@ void print_summary(std::FILE* out, const RunReport& r) {
   }
   const Algorithm a = r.options.algorithm;
   const bool quality = r.options.objective == Objective::quality;
-  const bool augments =
-      !quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs);
+  const bool augments = !quality && (a == Algorithm::automatic || a == Algorithm::sg ||
+                                     a == Algorithm::ps || a == Algorithm::lrs);
   std::fprintf(out, "\nalgorithm   %s%s%s\n",
                quality ? "min-cost (objective quality)" : std::string(to_string(a)).c_str(),
                augments ? ", augment " : "",

@@ -4,6 +4,7 @@
 #include <boost/graph/max_cardinality_matching.hpp>
 #include <chrono>
 #include <stdexcept>
+#include <utility>
 
 #include "bfs_floor.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
@@ -37,22 +38,16 @@ Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
 // petersen's own algorithms, through the front door (the graph was validated once, up front).
 Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augment augment,
                             std::uint64_t seed) {
-  // The paper-faithful rows run the paper's PS alone; the local rows run what `ps` runs for a
-  // user (Schrijver's exact matching first on a bipartite dual, else the ordered sweep where the
-  // numbering is local).
-  const Result result =
-      perfect_matching(input.dual.graph, {.algorithm = algorithm,
-                                          .augment = augment,
-                                          .seed = seed,
-                                          .bipartite_exact = augment == Augment::local,
-                                          .ordered_sweep = augment == Augment::local,
-                                          .validate = false});
+  const Result result = perfect_matching(
+      input.dual.graph,
+      {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
   require_perfect(input.dual.graph, result.matching);
   Measures measures;
   measures.initial_seconds = result.stats.initial_seconds;
   measures.augment_seconds = result.stats.augment_seconds;
   measures.unpaired = result.stats.unpaired_after_initial;
-  measures.two_phase = algorithm == Algorithm::sg || algorithm == Algorithm::ps;
+  measures.two_phase =
+      algorithm == Algorithm::sg || algorithm == Algorithm::ps || algorithm == Algorithm::automatic;
   measures.augmenting_paths = result.stats.augmenting_paths;
   measures.labels = result.stats.nodes_labelled;
   measures.reductions = result.stats.reductions;
@@ -135,15 +130,20 @@ Measures lrs_contestant(const BenchInput& input, std::uint64_t) {
 std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
   std::vector<Contestant> list;
   list.push_back({"bfs", "", false, true, 0xFFFFFFFFu, breadth_first_search});
-  for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps}) {
-    for (Augment augment : {Augment::local, Augment::faithful}) {
-      const std::string name =
-          std::string(to_string(algorithm)) + "-" + std::string(to_string(augment));
-      list.push_back({name, algorithm == Algorithm::sg ? "SG" : "PS", true, false, 0xFFFFFFFFu,
-                      [algorithm, augment](const BenchInput& input, std::uint64_t seed) {
-                        return petersen_algorithm(input, algorithm, augment, seed);
-                      }});
-    }
+  // The paper-faithful rows run the paper's PS (ps-faithful), the local rows what a user gets
+  // by default (auto-local: the ordered sweep where the numbering is local, Schrijver's exact
+  // matching on a bipartite dual where the sweep leaves nodes).
+  const std::pair<Algorithm, Augment> greedy_rows[] = {{Algorithm::sg, Augment::local},
+                                                       {Algorithm::sg, Augment::faithful},
+                                                       {Algorithm::automatic, Augment::local},
+                                                       {Algorithm::ps, Augment::faithful}};
+  for (const auto [algorithm, augment] : greedy_rows) {
+    const std::string name =
+        std::string(to_string(algorithm)) + "-" + std::string(to_string(augment));
+    list.push_back({name, algorithm == Algorithm::sg ? "SG" : "PS", true, false, 0xFFFFFFFFu,
+                    [algorithm, augment](const BenchInput& input, std::uint64_t seed) {
+                      return petersen_algorithm(input, algorithm, augment, seed);
+                    }});
   }
   for (Algorithm algorithm : {Algorithm::ds, Algorithm::gw, Algorithm::frink}) {
     list.push_back({std::string(to_string(algorithm)), algorithm == Algorithm::ds ? "DS" : "",

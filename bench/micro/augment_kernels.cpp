@@ -19,7 +19,7 @@ namespace {
 // unmatched and its other edges matched.
 Matching two_free_nodes(const CubicGraph& graph, NodeId start, int length, std::uint64_t seed) {
   Matching matching =
-      perfect_matching(graph, {.algorithm = Algorithm::ps, .validate = false}).matching;
+      perfect_matching(graph, {.algorithm = Algorithm::automatic, .validate = false}).matching;
   std::mt19937_64 rng(seed);
   std::vector<std::uint8_t> on_walk(graph.node_count(), 0);
   std::vector<EdgeId> flip_in;   // unmatched edges of the walk, matched afterwards

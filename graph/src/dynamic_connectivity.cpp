@@ -31,7 +31,7 @@ DynamicConnectivity::DynamicConnectivity(std::uint32_t node_count, std::uint32_t
       arc_block_(edge_capacity) {
   // Vertex nodes of higher levels and arcs, with the arcs recycled, came to 8.2 nodes per vertex
   // on armadillo's dual and 7.9 on fertility-sub3's: reserved at once, the node arrays are not
-  // copied as they grow (the copies were a quarter of ds's fresh memory; untouched capacity
+  // copied as they grow (the copies would be a quarter of ds's fresh memory; untouched capacity
   // costs no memory).
   // The pool, with blocks recycled, ends at 10.8 and 12.7 entries per vertex on the same inputs.
   const std::size_t nodes = std::size_t{9} * node_count;
@@ -52,8 +52,9 @@ DynamicConnectivity& DynamicConnectivity::operator=(DynamicConnectivity&&) noexc
 
 void DynamicConnectivity::grow_block(Block& block, std::uint32_t i) {
   // Capacities are powers of two; a block given up (outgrown here, or its edge's arcs gone in
-  // delete_edge) is handed out again for the next request of its size. Left behind, they were
-  // most of the pool: 39 entries per vertex on fertility-sub3's dual, grown by copying to 134 MB.
+  // delete_edge) is handed out again for the next request of its size. Left behind, they would
+  // be most of the pool: 39 entries per vertex on fertility-sub3's dual, grown by copying to
+  // 134 MB.
   const std::uint32_t grown = std::bit_ceil(std::max(i + 1, 2 * block.capacity));
   std::vector<std::uint32_t>& spare = free_blocks_[std::countr_zero(grown)];
   std::uint32_t fresh;
@@ -272,7 +273,7 @@ EdgeId DynamicConnectivity::replace(NodeId u, NodeId v, int level) {
   // The smaller tree's tree edges of this level rise one level (it is at most half as large).
   // Raising one changes only the forest a level up, so the arc just found and unflagged is still
   // its tree's splay root and the next search starts there: splaying `small` back up before
-  // each search was 2.8 % of ds's instructions (Callgrind, armadillo's dual).
+  // each search would be 2.8 % of ds's instructions (armadillo's dual).
   for (EttNode a, r = ett_->root(small); (a = ett_->find_flagged(r, kTreeFlag)) != kNoEtt; r = a) {
     const EdgeId f = ett_->owner(a);
     ett_->set_flag(a, kTreeFlag, false);

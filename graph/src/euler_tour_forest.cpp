@@ -42,7 +42,7 @@ void EulerTourForest::update(EttNode x) {
 
 void EulerTourForest::splay(EttNode x) {
   // Only the nodes a step moves down are updated on the way (updating both ends of every
-  // rotation was 23 % of ds's instructions, Callgrind on armadillo's dual). x, which ends with
+  // rotation would be 23 % of ds's instructions on armadillo's dual). x, which ends with
   // the whole tree below it, takes the old root's count and flags: no update of x at all.
   Node& nx = nodes_[x];
   if (nx.parent == kNoEtt) return;
@@ -157,8 +157,8 @@ EttNode EulerTourForest::reroot(EttNode x) {
 void EulerTourForest::link(EttNode x, EttNode y, EttNode xy, EttNode yx) {
   // The tour (x R L) xy (y R' L') yx as a tree without walking it: xy at the root, the x side on
   // its left, yx on its right with the y side on yx's left. Rerooting x and then joining the
-  // pieces one after another walked and splayed the right spine three more times: link was 20 %
-  // of ds's instructions (Callgrind, armadillo's dual).
+  // pieces one after another would walk and splay the right spine three more times, making link
+  // 20 % of ds's instructions (armadillo's dual).
   const EttNode tx = reroot(x), ty = reroot(y);
   nodes_[yx].child[0] = ty;
   nodes_[ty].parent = yx;

@@ -48,10 +48,10 @@ class EulerTourForest {
 
  private:
   // One node in 16 bytes, four to a cache line: a splay step reads and writes x, its parent and
-  // grandparent, and each was up to seven cache lines apart when every field had its own array
-  // (the ds chooser on armadillo-sub2's dual: splay and rotate were most of the time, stalled on
-  // those loads). meta = vertex count << 5 | aggregate flags << 3 | own bits (0, 1 the flags,
-  // 2 vertex); the owner, read once per raised edge, keeps an array of its own.
+  // grandparent, and each would be up to seven cache lines apart were every field in its own
+  // array (the ds chooser on armadillo-sub2's dual: splay and rotate would be most of the time,
+  // stalled on those loads). meta = vertex count << 5 | aggregate flags << 3 | own bits (0, 1 the
+  // flags, 2 vertex); the owner, read once per raised edge, keeps an array of its own.
   struct Node {
     EttNode child[2] = {kNoEtt, kNoEtt};  // left, right
     EttNode parent = kNoEtt;
@@ -63,8 +63,8 @@ class EulerTourForest {
   std::uint32_t own(EttNode x) const { return nodes_[x].meta & kOwnMask; }
   std::uint32_t aggregate(EttNode x) const { return (nodes_[x].meta >> kAggregateShift) & 3; }
   EttNode make_node(std::uint32_t owner, bool vertex);
-  // Inline in splay: out of line, with a branch per child, it cost ds 180M more instructions
-  // of 2.1G (Callgrind, armadillo's dual).
+  // Inline in splay: out of line, with a branch per child, it would cost ds 180M more
+  // instructions of 2.1G (armadillo's dual).
   [[gnu::always_inline]] inline void update(EttNode x);
   void splay(EttNode x);
   EttNode join(EttNode a, EttNode b);  // roots (or kNoEtt) of two sequences; returns the root

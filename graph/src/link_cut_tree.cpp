@@ -27,8 +27,8 @@ void LinkCutTree::cut(NodeId u, NodeId v) {
   // After the access, u ends its preferred path. Either v is u's parent: v is u's predecessor on
   // that path, and once splayed it has u alone on its right. Or v is u's child: v then starts
   // its own path, whose splay tree hangs from u by a path parent, and v has nothing on its left
-  // once splayed. A splay where an evert and a second access were (LinkCutTree::cut was 5.2 % of
-  // ds's instructions, Callgrind on armadillo's dual).
+  // once splayed. So a splay does, where an evert and a second access would make cut 5.2 % of
+  // ds's instructions (armadillo's dual).
   access(u);
   splay(v);
   if (nodes_[v].child[1] == u) {

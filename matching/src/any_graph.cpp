@@ -5,11 +5,11 @@
 
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/graph/csr_graph.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
-#include "stopwatch.hpp"
 
 namespace petersen {
 

@@ -82,7 +82,7 @@ class NeighbourTable {
 
   /// A greedy pairing's last pass, in one sequential sweep: each node v paired across its edge
   /// paired_index(v) (free when < 0) gets its fresh search state and, with `mate`, its mate edge
-  /// (looked up at pairing time, v's incidence list was a cache miss of its own on every
+  /// (looked up at pairing time, v's incidence list would be a cache miss of its own on every
   /// pairing). Returns the number of nodes left free.
   template <class PairedIndex>
   std::uint32_t start_searches(PairedIndex paired_index, HugeVector<EdgeId>* mate) {

@@ -6,17 +6,17 @@
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
 #include "petersen/graph/connectivity.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "reduction/match_by_reductions.hpp"
-#include "stopwatch.hpp"
 
 namespace petersen {
 
 namespace {
 
 constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
-    {Algorithm::sg, "sg"},   {Algorithm::ps, "ps"},       {Algorithm::ds, "ds"},
-    {Algorithm::gw, "gw"},   {Algorithm::frink, "frink"}, {Algorithm::lemon, "lemon"},
-    {Algorithm::lrs, "lrs"},
+    {Algorithm::automatic, "auto"}, {Algorithm::sg, "sg"},   {Algorithm::ps, "ps"},
+    {Algorithm::ds, "ds"},          {Algorithm::gw, "gw"},   {Algorithm::frink, "frink"},
+    {Algorithm::lemon, "lemon"},    {Algorithm::lrs, "lrs"},
 };
 constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::local, "local"},
                                                                   {Augment::faithful, "faithful"}};
@@ -32,10 +32,10 @@ void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) 
 
 // SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect. PS and
 // the augmentation share one NeighbourTable, built in PS's time; SG does not read neighbours,
-// so for SG it is built in the augmentation's time. In PS's place, pair_in_ps_place (greedy.hpp):
-// the ordered sweep, Schrijver's exact matching where the sweep leaves nodes (on a bipartite
-// graph PS leaves patches of one colour that cost the augmentation 20 BFS passes: the regular
-// plates), PS where neither stands.
+// so for SG it is built in the augmentation's time. Algorithm::automatic pairs in PS's place by
+// pair_in_ps_place (greedy.hpp): the ordered sweep, Schrijver's exact matching where the sweep
+// leaves nodes (on a bipartite graph PS leaves patches of one colour that cost the augmentation
+// 20 BFS passes: the regular plates), PS where neither stands; Algorithm::ps runs PS alone.
 void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
   Stopwatch initial;
   std::optional<NeighbourTable> table;
@@ -45,9 +45,7 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
     result.stats.unpaired_after_initial = result.matching.unmatched_count();
   } else {
     const PsPlace made = pair_in_ps_place(table.emplace(graph), &result.matching.mate_edge,
-                                          {.ordered_sweep = options.ordered_sweep,
-                                           .bipartite_exact = options.bipartite_exact,
-                                           .seed = options.seed});
+                                          ps_place_options(options.algorithm, options.seed));
     result.stats.initial_seconds = initial.seconds();
     result.stats.unpaired_after_initial = made.unpaired;
     result.stats.schrijver = made.schrijver;
@@ -124,6 +122,7 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
     case Algorithm::lemon:
       match_with_peer(graph, options.peer, result);
       break;
+    case Algorithm::automatic:
     case Algorithm::sg:
     case Algorithm::ps:
       match_greedily_then_augment(graph, options, result);

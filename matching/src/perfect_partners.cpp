@@ -5,19 +5,21 @@
 
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
-#include "stopwatch.hpp"
+#include "petersen/graph/stopwatch.hpp"
 
 namespace petersen {
 
 PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options) {
+  if (options.algorithm != Algorithm::automatic && options.algorithm != Algorithm::ps) {
+    throw std::invalid_argument("perfect_partners: runs auto or ps, not " +
+                                std::string(to_string(options.algorithm)));
+  }
   PartnerResult result;
   NeighbourTable table(rows);
   Stopwatch initial;
   // In PS's place as in perfect_matching (pair_in_ps_place says what and why).
-  const PsPlace made = pair_in_ps_place(table, nullptr,
-                                        {.ordered_sweep = options.ordered_sweep,
-                                         .bipartite_exact = options.bipartite_exact,
-                                         .seed = options.seed});
+  const PsPlace made =
+      pair_in_ps_place(table, nullptr, ps_place_options(options.algorithm, options.seed));
   result.stats.schrijver = made.schrijver;
   result.stats.ordered_sweep = made.ordered_sweep;
   result.stats.unpaired_after_initial = made.unpaired;

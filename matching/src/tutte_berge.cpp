@@ -3,6 +3,8 @@
 #include <string>
 #include <vector>
 
+#include "petersen/graph/component_forest.hpp"
+
 namespace petersen {
 
 MatchingCheck verify_maximum_matching(const CsrGraph& graph, const Matching& matching,
@@ -19,24 +21,18 @@ MatchingCheck verify_maximum_matching(const CsrGraph& graph, const Matching& mat
     }
     in_set[v] = 1;
   }
-  // Components of G − A by a disjoint-set forest (path halving, iterative).
-  std::vector<NodeId> parent(n);
-  for (NodeId v = 0; v < n; ++v) parent[v] = v;
-  auto find = [&](NodeId v) {
-    while (parent[v] != v) v = parent[v] = parent[parent[v]];
-    return v;
-  };
+  // Components of G − A by disjoint sets.
+  ComponentForest components(n);
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const auto [a, b] = graph.endpoints(e);
-    if (in_set[a] || in_set[b]) continue;
-    const NodeId ra = find(a), rb = find(b);
-    if (ra != rb) parent[ra] = rb;
+    if (!in_set[a] && !in_set[b]) components.unite(a, b);
   }
   std::vector<std::uint8_t> parity(n, 0);
   for (NodeId v = 0; v < n; ++v)
-    if (!in_set[v]) parity[find(v)] ^= 1;
+    if (!in_set[v]) parity[components.find(v)] ^= 1;
   std::int64_t odd_components = 0;
-  for (NodeId v = 0; v < n; ++v) odd_components += !in_set[v] && parent[v] == v && parity[v];
+  for (NodeId v = 0; v < n; ++v)
+    odd_components += !in_set[v] && components.find(v) == v && parity[v];
   const std::int64_t bound = odd_components - static_cast<std::int64_t>(tutte_set.size());
   const std::int64_t unmatched = matching.unmatched_count();
   if (unmatched != bound) {

@@ -6,7 +6,7 @@ the face, edge or node) raised as ``ValueError``.
 
     >>> import numpy as np, petersen
     >>> mesh = petersen.read_mesh("bunny.off.gz")
-    >>> result = petersen.quadrangulate(mesh.V, mesh.F, algorithm="ps")
+    >>> result = petersen.quadrangulate(mesh.V, mesh.F, algorithm="auto")
     >>> result.quads.shape, result.stats["triangles_left"]
 """
 
@@ -43,7 +43,7 @@ __all__ = [
 
 #: The algorithms of ``quadrangulate`` (all) and ``perfect_matching`` (all but lrs, which needs a
 #: mesh): see the README's table.
-ALGORITHMS = ("sg", "ps", "ds", "gw", "frink", "lemon", "lrs")
+ALGORITHMS = ("auto", "sg", "ps", "ds", "gw", "frink", "lemon", "lrs")
 
 #: Faces: an (m, k) integer array (every face k corners) or a sequence of faces of any length >= 3.
 Faces = Union[npt.ArrayLike, Sequence[Sequence[int]]]
@@ -175,7 +175,7 @@ def _to_meshio(V: np.ndarray, faces: List[Any], attributes: Attributes) -> Any:
 def quadrangulate(
     V: Union[npt.ArrayLike, Mesh],
     F: Optional[Faces] = None,
-    algorithm: str = "ps",
+    algorithm: str = "auto",
     all_quad: bool = False,
     seed: int = 1,
     augment: str = "local",
@@ -192,10 +192,10 @@ def quadrangulate(
     ``V`` is an (n, 3) array of any numeric dtype and memory order (copied only when it is not
     C-ordered float64); ``F`` an (m, k) integer array or a list of faces (sequences of vertex
     indices, any length >= 3, mixed lengths allowed). The pairing is a certified maximum: closed
-    components are paired perfectly by ``algorithm`` (sg, ps, ds, gw, frink, lemon or lrs), the
-    rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that are not
-    triangles are kept. ``all_quad`` turns the triangles left into quads by splitting edges
-    (adding vertices). ``augment`` is "local" or "faithful", ``seed`` seeds sg and ps.
+    components are paired perfectly by ``algorithm`` (auto, sg, ps, ds, gw, frink, lemon or
+    lrs), the rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that
+    are not triangles are kept. ``all_quad`` turns the triangles left into quads by splitting edges
+    (adding vertices). ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
     ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
     (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
@@ -309,7 +309,7 @@ def write_mesh(
 def perfect_matching(
     n: int,
     edges: npt.ArrayLike,
-    algorithm: str = "ps",
+    algorithm: str = "auto",
     seed: int = 1,
     augment: str = "local",
 ) -> np.ndarray:
@@ -340,7 +340,7 @@ class MaximumMatching:
 def maximum_matching(
     n: int,
     edges: npt.ArrayLike,
-    algorithm: str = "ps",
+    algorithm: str = "auto",
     seed: int = 1,
     augment: str = "local",
 ) -> MaximumMatching:

@@ -31,7 +31,8 @@ namespace {
 
 Algorithm algorithm_of(const std::string& name) {
   if (auto a = parse_algorithm(name)) return *a;
-  throw py::value_error("unknown algorithm '" + name + "': sg, ps, ds, gw, frink, lemon or lrs");
+  throw py::value_error("unknown algorithm '" + name +
+                        "': auto, sg, ps, ds, gw, frink, lemon or lrs");
 }
 
 Augment augment_of(const std::string& name) {

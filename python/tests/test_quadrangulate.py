@@ -152,9 +152,12 @@ def test_stats_have_the_cli_keys_but_the_file_ones():
     assert "augment" not in petersen.quadrangulate(V, F, algorithm="ds").stats
     # The octahedron's dual is the cube, a bipartite graph: the ordered sweep (eight nodes are a
     # local numbering) or, where it leaves nodes, Schrijver's algorithm matches it perfectly.
+    auto = petersen.quadrangulate(V, F, algorithm="auto").stats
+    assert auto["schrijver"] != auto["ordered_sweep"]
+    assert auto["unpaired_after_initial"] == 0
+    # ps is the paper's Puli-Segal alone: neither the sweep nor Schrijver's algorithm runs.
     ps = petersen.quadrangulate(V, F, algorithm="ps").stats
-    assert ps["schrijver"] != ps["ordered_sweep"]
-    assert ps["unpaired_after_initial"] == 0
+    assert not ps["schrijver"] and not ps["ordered_sweep"]
     assert "schrijver" not in s and "ordered_sweep" not in s
 
 

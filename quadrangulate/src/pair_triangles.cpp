@@ -181,8 +181,8 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 // The components are counted on the edge list while the rows are written over the incidences,
 // not before: each is a single-threaded pass of random reads, and the forest (4 bytes per node) is
 // still gone before the matching's peak.
-void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePairing& pairing,
-                      QuadStats& stats, LapClock& clock) {
+void pair_by_partners(CubicGraph cubic, Algorithm algorithm, const QuadOptions& options,
+                      TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
   const std::uint32_t node_count = cubic.node_count();
   const HugeVector<NodeId> rows =
       std::move(cubic).into_neighbour_rows(options.threads, [&](std::span<const NodeId> edge_ends) {
@@ -190,7 +190,8 @@ void pair_by_partners(CubicGraph cubic, const QuadOptions& options, TrianglePair
             ComponentForest(node_count, edge_ends).root_count();
       });
   stats.dual_seconds += clock.lap();
-  PartnerResult result = perfect_partners(rows, {.augment = options.augment, .seed = options.seed});
+  PartnerResult result = perfect_partners(
+      rows, {.algorithm = algorithm, .augment = options.augment, .seed = options.seed});
   add_run(stats.matching, result.stats);
   clock.lap();
   if (MatchingCheck check = verify_perfect_partners(rows, result.partner); !check.ok()) {
@@ -208,8 +209,8 @@ void pair_closed_whole_mesh(PairableGraph& graph, std::span<const Cost> costs,
                             TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
   CubicGraph cubic =
       CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
-  if (algorithm == Algorithm::ps && costs.empty()) {
-    pair_by_partners(std::move(cubic), options, pairing, stats, clock);
+  if ((algorithm == Algorithm::automatic || algorithm == Algorithm::ps) && costs.empty()) {
+    pair_by_partners(std::move(cubic), algorithm, options, pairing, stats, clock);
     return;
   }
   stats.dual_seconds += clock.lap();
@@ -363,9 +364,9 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   LapClock clock;
   TrianglePairing pairing;
   const Algorithm closed_algorithm =
-      options.algorithm == Algorithm::lrs ? Algorithm::ps : options.algorithm;
+      options.algorithm == Algorithm::lrs ? Algorithm::automatic : options.algorithm;
   const bool quality = options.objective == Objective::quality;
-  // lrs flips edges, making quads the threshold never judged: with one, ps does its work.
+  // lrs flips edges, making quads the threshold never judged: with one, auto does its work.
   bool use_lrs = options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
   const HugeVector<Cost> costs = quality ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();

@@ -14,7 +14,8 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   const bool quality = options.objective == Objective::quality;
   add("objective", std::string(to_string(options.objective)));
   add("algorithm", quality ? std::string("min-cost") : std::string(to_string(a)));
-  if (!quality && (a == Algorithm::sg || a == Algorithm::ps || a == Algorithm::lrs)) {
+  if (!quality && (a == Algorithm::automatic || a == Algorithm::sg || a == Algorithm::ps ||
+                   a == Algorithm::lrs)) {
     add("augment", std::string(to_string(options.augment)));
   }
   if (options.max_corner_deviation) d("max_corner_deviation", *options.max_corner_deviation);
@@ -43,8 +44,9 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
         ? 100.0
         : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) / double(s.triangles));
   u("unpaired_after_initial", s.matching.unpaired_after_initial);
-  if (a == Algorithm::ps && !quality) add("schrijver", s.matching.schrijver);
-  if (a == Algorithm::ps && !quality) add("ordered_sweep", s.matching.ordered_sweep);
+  const bool in_ps_place = (a == Algorithm::automatic || a == Algorithm::ps) && !quality;
+  if (in_ps_place) add("schrijver", s.matching.schrijver);
+  if (in_ps_place) add("ordered_sweep", s.matching.ordered_sweep);
   d("augment_seconds", s.matching.augment_seconds);
   d("matching_seconds", s.matching.matching_seconds());
   u("augmenting_paths", s.matching.augmenting_paths);

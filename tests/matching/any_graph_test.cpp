@@ -44,8 +44,8 @@ std::int64_t checked_size(std::uint32_t n, const testing::EdgeList& edges,
 RC_GTEST_PROP(AnyGraph, CubicBridgelessGraphsGetPerfectMatchingsByEveryAlgorithm,
               (const CubicGraph& g)) {
   const testing::EdgeList edges = testing::edge_list(g);
-  const Algorithm algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps, Algorithm::ds,
-                                                Algorithm::gw, Algorithm::lemon);
+  const Algorithm algorithm = *rc::gen::element(Algorithm::automatic, Algorithm::sg, Algorithm::ps,
+                                                Algorithm::ds, Algorithm::gw, Algorithm::lemon);
   const AnyGraphMatching m = match_any_graph(
       g.node_count(), edges, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
   RC_ASSERT(m.cubic_bridgeless && m.perfect && m.note.empty());

@@ -18,7 +18,7 @@ namespace {
 
 using testing::edge_list;
 
-constexpr Algorithm kGreedy[] = {Algorithm::sg, Algorithm::ps};
+constexpr Algorithm kGreedy[] = {Algorithm::sg, Algorithm::ps, Algorithm::automatic};
 constexpr Augment kVariants[] = {Augment::local, Augment::faithful};
 
 RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
@@ -41,9 +41,10 @@ RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
 
 RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
   CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
-  const Options options{.algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps),
-                        .augment = *rc::gen::element(Augment::local, Augment::faithful),
-                        .seed = *rc::gen::arbitrary<std::uint64_t>()};
+  const Options options{
+      .algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps, Algorithm::automatic),
+      .augment = *rc::gen::element(Augment::local, Augment::faithful),
+      .seed = *rc::gen::arbitrary<std::uint64_t>()};
   Result first = perfect_matching(g, options);
   Result second = perfect_matching(g, options);
   RC_ASSERT(verify_perfect_matching(g, first.matching).ok());

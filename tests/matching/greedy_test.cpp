@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <numeric>
 #include <optional>
+#include <stdexcept>
 #include <vector>
 
 #include "neighbour_table.hpp"
@@ -200,7 +201,7 @@ RC_GTEST_PROP(Schrijver, BipartiteGraphsArePairedPerfectlyBeforeAugmentingAtBoth
   // By the sweep where the numbering is local and it pairs every node, else by Schrijver's walk:
   // nothing is left to augment either way, and both doors choose alike.
   const CubicGraph g = *bipartite_cubic_graphs();
-  const Result r = perfect_matching(g, {.algorithm = Algorithm::ps, .validate = false});
+  const Result r = perfect_matching(g, {.algorithm = Algorithm::automatic, .validate = false});
   RC_ASSERT(r.stats.schrijver != r.stats.ordered_sweep);
   RC_ASSERT(r.stats.unpaired_after_initial == 0u);
   RC_ASSERT(r.stats.augmenting_paths == 0u);
@@ -260,16 +261,15 @@ TEST(Schrijver, MatchesAShuffledPlateAndLeavesThePetersenGraphToTheSweep) {
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), p.matching).ok());
 }
 
-// bipartite_exact = false runs the paper's PS alone: on the plate it leaves nodes to augment.
-TEST(Schrijver, IsSkippedWhenNotAsked) {
+// Algorithm::ps runs the paper's PS alone: on the plate it leaves nodes to augment.
+TEST(Schrijver, IsSkippedByPaperPS) {
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const Result r = perfect_matching(plate, {.bipartite_exact = false, .ordered_sweep = false});
+  const Result r = perfect_matching(plate, {.algorithm = Algorithm::ps});
   EXPECT_FALSE(r.stats.schrijver);
   EXPECT_GT(r.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
   const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
-  const PartnerResult p =
-      perfect_partners(rows, {.bipartite_exact = false, .ordered_sweep = false});
+  const PartnerResult p = perfect_partners(rows, {.algorithm = Algorithm::ps});
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_GT(p.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
@@ -338,25 +338,35 @@ TEST(OrderedSweep, RepairsMostOfWhatItStrandsOnAnIrregularPlate) {
 }
 
 TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
-  // A plate with its bipartite exact matching turned off stands for a non-bipartite graph.
+  // In the generator's order the sweep pairs the plate whole, so Schrijver's matching, which
+  // would take over where the sweep leaves nodes of a bipartite graph, does not run: the same
+  // pairing as on a graph that is not bipartite.
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
   const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
   for (const std::uint64_t seed : {1u, 2u}) {
-    const Result r = perfect_matching(plate, {.seed = seed, .bipartite_exact = false});
+    const Result r = perfect_matching(plate, {.seed = seed});
     EXPECT_TRUE(r.stats.ordered_sweep);
+    EXPECT_FALSE(r.stats.schrijver);
     EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
-    const PartnerResult p = perfect_partners(rows, {.seed = seed, .bipartite_exact = false});
+    const PartnerResult p = perfect_partners(rows, {.seed = seed});
     EXPECT_TRUE(p.stats.ordered_sweep);
     EXPECT_EQ(p.stats.unpaired_after_initial, r.stats.unpaired_after_initial);
     EXPECT_TRUE(verify_perfect_partners(rows, p.partner).ok());
     for (NodeId v = 0; v < plate.node_count(); ++v)
       ASSERT_EQ(p.partner[v], plate.other_end(r.matching.mate_edge[v], v));
   }
-  // Not asked, or a numbering that is not local: PS pairs, as before.
-  EXPECT_FALSE(perfect_matching(plate, {.bipartite_exact = false, .ordered_sweep = false})
-                   .stats.ordered_sweep);
+  // Paper PS, or a numbering that is not local: PS pairs (with Schrijver's matching turned off,
+  // as on a graph that is not bipartite).
+  EXPECT_FALSE(perfect_matching(plate, {.algorithm = Algorithm::ps}).stats.ordered_sweep);
   const CubicGraph mixed = shuffled(plate, 9);
-  const Result ps = perfect_matching(mixed, {.bipartite_exact = false});
+  NeighbourTable mixed_table(mixed);
+  Matching by_ps(mixed.node_count());
+  const PsPlace place = pair_in_ps_place(mixed_table, &by_ps.mate_edge, {.bipartite_exact = false});
+  EXPECT_FALSE(place.ordered_sweep);
+  EXPECT_FALSE(place.schrijver);
+  EXPECT_EQ(place.unpaired, by_ps.unmatched_count());
+  EXPECT_TRUE(verify_matching(mixed, by_ps).ok());
+  const Result ps = perfect_matching(mixed);
   EXPECT_FALSE(ps.stats.ordered_sweep);
   EXPECT_TRUE(verify_perfect_matching(mixed, ps.matching).ok());
   // The Petersen graph (not bipartite, ten nodes: any numbering is local) goes to the sweep.
@@ -364,6 +374,31 @@ TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
   EXPECT_FALSE(petersen.stats.schrijver);
   EXPECT_TRUE(petersen.stats.ordered_sweep);
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), petersen.matching).ok());
+}
+
+TEST(Algorithms, AutoPairsInPSsPlaceAndPsRunsThePapersPSAlone) {
+  // auto: the sweep on the plate in its generator's order, Schrijver's walk on it shuffled.
+  // ps: the paper's PS on both (its pairing is puli_segal's for the same seed), never the others.
+  const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
+  const CubicGraph mixed = shuffled(plate, 3);
+  EXPECT_TRUE(perfect_matching(plate, {.algorithm = Algorithm::automatic}).stats.ordered_sweep);
+  EXPECT_TRUE(perfect_matching(mixed, {.algorithm = Algorithm::automatic}).stats.schrijver);
+  for (const CubicGraph* g : {&plate, &mixed}) {
+    const Result r = perfect_matching(*g, {.algorithm = Algorithm::ps, .seed = 7});
+    EXPECT_FALSE(r.stats.ordered_sweep);
+    EXPECT_FALSE(r.stats.schrijver);
+    EXPECT_TRUE(verify_perfect_matching(*g, r.matching).ok());
+    NeighbourTable table(*g);
+    Matching by_ps(g->node_count());
+    EXPECT_EQ(r.stats.unpaired_after_initial, puli_segal(table, &by_ps.mate_edge, 7));
+    const HugeVector<NodeId> rows = CubicGraph(*g).into_neighbour_rows();
+    const PartnerResult p = perfect_partners(rows, {.algorithm = Algorithm::ps, .seed = 7});
+    EXPECT_FALSE(p.stats.ordered_sweep);
+    EXPECT_FALSE(p.stats.schrijver);
+    EXPECT_EQ(p.stats.unpaired_after_initial, r.stats.unpaired_after_initial);
+  }
+  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  EXPECT_THROW(perfect_partners(rows, {.algorithm = Algorithm::sg}), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Exact minimum-cost matching (issue 14): every answer's certificate goes through the
+// Exact minimum-cost matching: every answer's certificate goes through the
 // independent verifier, and its cost is compared with brute force on tiny graphs and with
 // LEMON's MaxWeightedPerfectMatching on generated cubic bridgeless and general graphs; the
 // verifier rejects perturbed answers.
@@ -206,10 +206,10 @@ RC_GTEST_PROP(MinCostMaximum, SizeEqualsLemonMaximumAndIsCertified, ()) {
   if (2 * r.size == n) RC_ASSERT(testing::lemon_min_cost_perfect(n, edges, costs) == r.total_cost);
 }
 
-// Found by fuzz/match_fuzzer.cpp. The unmatched-node cost K bounds a matching's size by the
-// edges and the nodes they touch, not by n: one edge among 60,000 isolated nodes, at a cost
-// near 2^40, was refused (K past 2^52). And the doubled graph's own total, K for each of the
-// thousands of free nodes, passed 2^63 (signed overflow) though nothing read it.
+// A case from fuzz/match_fuzzer.cpp. The unmatched-node cost K bounds a matching's size by the
+// edges and the nodes they touch, not by n: one edge among 60,000 isolated nodes, at a cost near
+// 2^40, must not be refused (a bound by n takes K past 2^52). And the doubled graph's own total,
+// K for each of the thousands of free nodes, passes 2^63, so it must not be summed in 64 bits.
 TEST(MinCostMaximum, FewEdgesAmongManyFreeNodesAndFarApartCosts) {
   {
     const std::uint32_t n = 60000;
@@ -271,7 +271,7 @@ RC_GTEST_PROP(MinCostVerifier, RejectsACostlierPerfectMatching, ()) {
   const CubicGraph g = any_cubic_bridgeless();
   const std::vector<Cost> costs = random_costs(g.edge_count(), 0, 1000);
   const MinCostResult r = min_cost_perfect_matching(g, costs);
-  const Result other = perfect_matching(g, {.algorithm = Algorithm::ps});
+  const Result other = perfect_matching(g, {.algorithm = Algorithm::automatic});
   Cost other_cost = 0;
   for (EdgeId e = 0; e < g.edge_count(); ++e)
     if (other.matching.mate_edge[g.endpoints(e)[0]] == e) other_cost += costs[e];

@@ -22,14 +22,16 @@ HugeVector<NodeId> rows_of(CubicGraph g) {
   return std::move(g).into_neighbour_rows();
 }
 
-RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsPsDoes, ()) {
+RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsAutoAndPsDo, ()) {
   const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   const HugeVector<NodeId> rows = rows_of(g);
+  const Algorithm algorithm = *rc::gen::element(Algorithm::automatic, Algorithm::ps);
   for (Augment augment : {Augment::local, Augment::faithful}) {
     const Result full = perfect_matching(
-        g, {.algorithm = Algorithm::ps, .augment = augment, .seed = seed, .validate = false});
-    const PartnerResult lean = perfect_partners(rows, {.augment = augment, .seed = seed});
+        g, {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
+    const PartnerResult lean =
+        perfect_partners(rows, {.algorithm = algorithm, .augment = augment, .seed = seed});
     RC_ASSERT(verify_perfect_partners(rows, lean.partner).ok());
     for (NodeId v = 0; v < g.node_count(); ++v)
       RC_ASSERT(lean.partner[v] == g.other_end(full.matching.mate_edge[v], v));
@@ -37,6 +39,8 @@ RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsPsDoes, ()) {
     RC_ASSERT(lean.stats.augmenting_paths == full.stats.augmenting_paths);
     RC_ASSERT(lean.stats.blossoms == full.stats.blossoms);
     RC_ASSERT(lean.stats.nodes_labelled == full.stats.nodes_labelled);
+    RC_ASSERT(lean.stats.ordered_sweep == full.stats.ordered_sweep);
+    RC_ASSERT(lean.stats.schrijver == full.stats.schrijver);
   }
 }
 

@@ -21,7 +21,7 @@ TEST(SharedMeshes, SgAndPsMakePerfectMatchings) {
     ASSERT_EQ(g.node_count(), mesh.triangles);
     EXPECT_EQ(testing::lemon_matching_size(g.node_count(), testing::edge_list(g)),
               g.node_count() / 2);
-    for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps}) {
+    for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps, Algorithm::automatic}) {
       for (Augment augment : {Augment::local, Augment::faithful}) {
         // Faithful SG costs O(k·n) with k ≈ 12 % of n: keep it to the small meshes.
         if (algorithm == Algorithm::sg && augment == Augment::faithful && mesh.triangles > 20'000)

@@ -2,8 +2,8 @@
 #include <rapidcheck/gtest.h>
 
 #include "peers.hpp"
-#include "petersen/graph/connectivity.hpp"
 #include "petersen/generators/graph_generators.hpp"
+#include "petersen/graph/connectivity.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
@@ -54,10 +54,12 @@ TEST(Verifier, NamesAnEdgeOutOfRangeOrNotIncident) {
 }
 
 TEST(Algorithms, NamesRoundTrip) {
-  for (Algorithm a : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::frink,
-                      Algorithm::lrs, Algorithm::lemon}) {
+  for (Algorithm a : {Algorithm::automatic, Algorithm::sg, Algorithm::ps, Algorithm::ds,
+                      Algorithm::gw, Algorithm::frink, Algorithm::lrs, Algorithm::lemon}) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }
+  EXPECT_EQ(to_string(Algorithm::automatic), "auto");
+  EXPECT_EQ(Options{}.algorithm, Algorithm::automatic);
   EXPECT_FALSE(parse_algorithm("blossom").has_value());
   EXPECT_EQ(parse_augment("faithful"), Augment::faithful);
 }

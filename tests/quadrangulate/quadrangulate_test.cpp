@@ -27,9 +27,9 @@ using testing::check_quad_result;
 
 constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
 
-constexpr Algorithm kAlgorithms[] = {Algorithm::sg, Algorithm::ps,    Algorithm::ds,
-                                     Algorithm::gw, Algorithm::frink, Algorithm::lemon,
-                                     Algorithm::lrs};
+constexpr Algorithm kAlgorithms[] = {Algorithm::automatic, Algorithm::sg, Algorithm::ps,
+                                     Algorithm::ds,        Algorithm::gw, Algorithm::frink,
+                                     Algorithm::lemon,     Algorithm::lrs};
 
 PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
                     std::vector<std::vector<VertexId>> faces) {
@@ -73,10 +73,10 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
   expect_correct(mesh);
 }
 
-// ps on a regular plate, whose dual is bipartite: in the generator's order the ordered sweep pairs
-// every triangle; with the triangles shuffled, Schrijver's exact matching does (nothing left to
-// augment either way); on the same plate made irregular (odd cycles in the dual) PS runs, and the
-// summary says which ran.
+// auto on a regular plate, whose dual is bipartite: in the generator's order the ordered sweep
+// pairs every triangle; with the triangles shuffled, Schrijver's exact matching does (nothing left
+// to augment either way); on the same plate made irregular (odd cycles in the dual) PS runs, and
+// the summary says which ran.
 TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
   const PolygonMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
   const QuadResult in_order = quadrangulate(plate);
@@ -195,7 +195,7 @@ TEST(Quadrangulate, ClosedMeshesArePerfect) {
 }
 
 // Non-orientable closed surfaces: every graph algorithm pairs them perfectly (their dual is cubic
-// and bridgeless); lrs, which needs an orientable manifold, hands them to ps and says so.
+// and bridgeless); lrs, which needs an orientable manifold, hands them to auto and says so.
 TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
   for (const PolygonMesh& mesh : {klein_bottle(7, 9), projective_plane(2)}) {
     expect_correct(mesh);
@@ -216,8 +216,8 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
 
 // A whole closed mesh whose pairable graph is its dual goes to lrs on that graph; one with a
 // pinched vertex (a cylinder of 2 x 4 squares whose end circles are closed by cones with one apex,
-// vertex 12) is refused there and paired by ps on the graph made again: the same quads as ps.
-TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToPs) {
+// vertex 12) is refused there and paired by auto on the graph made again: the same quads as auto.
+TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
   std::vector<std::array<double, 3>> positions;
   for (VertexId row = 0; row < 3; ++row) {
     for (VertexId i = 0; i < 4; ++i) {
@@ -239,20 +239,20 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToPs) {
   }
   const PolygonMesh pinched = mesh_of(positions, faces);
   const QuadResult lrs = quadrangulate(pinched, {.algorithm = Algorithm::lrs});
-  const QuadResult ps = quadrangulate(pinched, {.algorithm = Algorithm::ps});
+  const QuadResult by_auto = quadrangulate(pinched, {.algorithm = Algorithm::automatic});
   EXPECT_EQ(lrs.stats.lrs_fallback_components, 1u);
   EXPECT_EQ(lrs.stats.lrs_fallback_reason,
             "pinched vertex 12 (its triangles form more than one fan)");
   EXPECT_EQ(lrs.stats.pairs, 12u);
-  EXPECT_EQ(lrs.mesh.corners, ps.mesh.corners);
-  EXPECT_EQ(lrs.sources, ps.sources);
+  EXPECT_EQ(lrs.mesh.corners, by_auto.mesh.corners);
+  EXPECT_EQ(lrs.sources, by_auto.sources);
   EXPECT_EQ(check_quad_result(pinched, lrs, false, true), "");
   // The consuming door without sources lets lrs free the corners once its triangulation has read
-  // them: the pinch is refused before that, and ps pairs the corners as they were.
+  // them: the pinch is refused before that, and auto pairs the corners as they were.
   const QuadResult consumed =
       quadrangulate(PolygonMesh(pinched), {.algorithm = Algorithm::lrs, .sources = false});
   EXPECT_EQ(consumed.stats.lrs_fallback_components, 1u);
-  EXPECT_EQ(consumed.mesh.corners, ps.mesh.corners);
+  EXPECT_EQ(consumed.mesh.corners, by_auto.mesh.corners);
   // Without the pinch (vertex 12 split into one apex per cone) lrs pairs it, with flips allowed.
   positions.push_back({0, 0, 1.5});
   for (VertexId i = 0; i < 4; ++i) faces[16 + 2 * i + 1][2] = 13;
@@ -665,8 +665,10 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
   // The summary's initial pairing: what the greedy passes left, each augmenting path pairing two
-  // of them (ps and sg: their paths are the only step after the initial pairing).
-  if ((algorithm == Algorithm::ps || algorithm == Algorithm::sg) && objective == Objective::pairs) {
+  // of them (auto, ps and sg: their paths are the only step after the initial pairing).
+  if ((algorithm == Algorithm::automatic || algorithm == Algorithm::ps ||
+       algorithm == Algorithm::sg) &&
+      objective == Objective::pairs) {
     RC_ASSERT(result.stats.matching.unpaired_after_initial ==
               result.stats.triangles_left + 2 * result.stats.matching.augmenting_paths);
   }

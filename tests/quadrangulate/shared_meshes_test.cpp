@@ -71,9 +71,9 @@ TEST_P(EveryAlgorithm, ConvertsTheMesh) {
   const std::string& file = GetParam();
   const PolygonMesh mesh = read_bare_mesh(*dir + "/" + file);
   const bool small = full_run() || mesh.face_count() <= kAllAlgorithmsUpTo;
-  for (Algorithm algorithm : {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw,
-                              Algorithm::frink, Algorithm::lemon, Algorithm::lrs}) {
-    if (!small && algorithm != Algorithm::ps && algorithm != Algorithm::lrs) continue;
+  for (Algorithm algorithm : {Algorithm::automatic, Algorithm::sg, Algorithm::ps, Algorithm::ds,
+                              Algorithm::gw, Algorithm::frink, Algorithm::lemon, Algorithm::lrs}) {
+    if (!small && algorithm != Algorithm::automatic && algorithm != Algorithm::lrs) continue;
     if (algorithm == Algorithm::frink && mesh.face_count() > kFrinkUpTo) continue;
     SCOPED_TRACE(std::string(to_string(algorithm)));
     const QuadResult result =

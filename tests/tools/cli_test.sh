@@ -35,6 +35,18 @@ for algorithm in "$@"; do
   grep -q "faces by corners: 4: 1550$" "$work/out" || {
     failed=$((failed + 1)); echo "FAILED: $algorithm did not write 1550 quads"; cat "$work/out"; }
 done
+# auto pairs in PS's place by the ordered sweep or Schrijver's exact matching (a voxel plate's
+# dual is bipartite, in a local order); ps runs the paper's PS alone and reports neither.
+check "generate a plate" "$petersen" generate "$work/plate.off"
+for algorithm in auto ps; do
+  check "quad --algorithm $algorithm on the plate" "$petersen" quad "$work/plate.off" \
+    "$work/plate-$algorithm.off" --algorithm "$algorithm" --stats-json "$work/plate-$algorithm.json"
+done
+grep -qE '"(ordered_sweep|schrijver)": true' "$work/plate-auto.json" || {
+  failed=$((failed + 1)); echo "FAILED: auto reports neither the sweep nor Schrijver's"; }
+grep -q '"ordered_sweep": false' "$work/plate-ps.json" &&
+  grep -q '"schrijver": false' "$work/plate-ps.json" || {
+  failed=$((failed + 1)); echo "FAILED: ps reports the sweep or Schrijver's"; }
 for format in off ply obj.gz; do
   check "quad to .$format" "$petersen" quad "$example" "$work/q.$format"
 done

@@ -318,8 +318,8 @@ class AlternatingForest {
 
   // Makes the odd nodes between base u and base b even, bridged by e with `side` on their side.
   // The bridge takes the odd node's link (its pred edge, which collect() finds again among its
-  // edges, from its mate's link), so a shrink writes only slots: a separate bridge array was an
-  // n-sized array faulted in page by page during the search.
+  // edges, from its mate's link), so a shrink writes only slots: a separate bridge array would
+  // be an n-sized array faulted in page by page during the search.
   void bridge(NodeId u, NodeId b, NodeId side, EdgeId e) {
     const std::uint32_t side_bit = graph_.endpoints(e)[1] == side ? kSide : 0;
     while (u != b) {

@@ -6,6 +6,7 @@
 
 #include "neighbour_table.hpp"
 #include "petersen/matching/matching.hpp"
+#include "petersen/matching/options.hpp"
 
 namespace petersen {
 
@@ -50,12 +51,20 @@ std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<Edg
 /// Θ(n) time; extra memory: the walk's path, 8 bytes per node on it (at most n).
 bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh);
 
+/// What pairs in PS's place. Algorithm::automatic turns both on, Algorithm::ps both off (the
+/// paper's PS alone); tests turn them on one at a time.
 struct PsPlaceOptions {
-  bool ordered_sweep = true;                               ///< as Options::ordered_sweep
-  bool bipartite_exact = true;                             ///< as Options::bipartite_exact
+  bool ordered_sweep = true;                               ///< the sweep where the order is local
+  bool bipartite_exact = true;                             ///< Schrijver's where the sweep leaves
   std::uint64_t seed = 1;                                  ///< PS's
   std::uint32_t sweep_repair_budget = kSweepRepairBudget;  ///< the sweep's (tests turn it off)
 };
+
+/// The options of pair_in_ps_place for a front door's algorithm (automatic or ps).
+inline PsPlaceOptions ps_place_options(Algorithm algorithm, std::uint64_t seed) {
+  const bool automatic = algorithm == Algorithm::automatic;
+  return {.ordered_sweep = automatic, .bipartite_exact = automatic, .seed = seed};
+}
 
 /// What made the initial pairing in PS's place, and what it left.
 struct PsPlace {
@@ -64,13 +73,13 @@ struct PsPlace {
   std::uint32_t unpaired = 0;
 };
 
-/// The initial pairing of `ps` (paper §3.1, PS's place), as both front doors make it over a table
+/// The initial pairing of `auto` (paper §3.1, PS's place), as both front doors make it over a table
 /// whose search state it writes fresh (and, with `mate_edge`, all kNoEdge on entry, the mate
 /// edges): the ordered sweep where the numbering is local; where it leaves a node unpaired or does
 /// not run, Schrijver's exact matching, which pairs a bipartite graph perfectly; where neither
 /// stands, PS. The sweep goes first because it pairs every node of the bipartite plates (A1,
-/// D0-D6) in 0.8-2.0 times a BFS's time, where Schrijver's walk took 2.3-3.2 (bench/RESULTS.md,
-/// "Stop 18", old and new alternated); where it leaves nodes on a graph that is not bipartite,
+/// D0-D6) in 0.8-2.0 times a BFS's time, where Schrijver's walk takes 2.3-3.2 (bench/RESULTS.md,
+/// the two orders alternated); where it leaves nodes on a graph that is not bipartite,
 /// Schrijver's walk starts from the sweep's fresh state and gives up at its first odd cycle.
 PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
                          const PsPlaceOptions& options);

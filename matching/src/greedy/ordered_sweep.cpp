@@ -8,20 +8,20 @@
 //   path over at most kSweepRepairBudget (64) even nodes, and stays unpaired if none is found.
 // Why the repair: a node is stranded just behind the front, where a free node a few steps ahead
 // is usually at the end of a short alternating path, which costs a few dozen reads there and a
-// tree growing through the graph in the augmentation. Measured (petersen_bench, labels of the
-// augmentation; bench/RESULTS.md, "Stop 19"): nodes left on A2 230 -> 136, A5 88 -> 12, B5
-// 92 -> 2, B3 422 -> 216, a 16M-triangle irregular plate 62,396 -> 3,534; the augmentation's
-// labels summed over A2-A5 and B2-B5 7.0M -> 4.0M (budgets 48, 96 and 128: 6.0M, 5.1M, 6.7M;
-// the few nodes left are far apart, and how far decides the labels, so more budget is not
-// better). B2 alone is no better (514 -> 284 nodes, 2.3M -> 2.8M labels): the nodes its sweep
-// strands need paths no local search finds.
+// tree growing through the graph in the augmentation. Without and with the repair
+// (petersen_bench, labels of the augmentation; bench/RESULTS.md): nodes left on A2 230 and 136,
+// A5 88 and 12, B5 92 and 2, B3 422 and 216, a 16M-triangle irregular plate 62,396 and 3,534;
+// the augmentation's labels summed over A2-A5 and B2-B5 7.0M and 4.0M (budgets 48, 96 and 128:
+// 6.0M, 5.1M, 6.7M; the few nodes left are far apart, and how far decides the labels, so more
+// budget is not better). B2 alone is no better (514 and 284 nodes, 2.3M and 2.8M labels): the
+// nodes its sweep strands need paths no local search finds.
 // Why: PS's pass costs about two BFS passes (its priority sets, random draws and a rescan of each
 // node leaving priority 0; a flat profile, no one hot spot), while the sweep reads each node's
 // row and its neighbours' state bytes once, in the order of the rows. Where that order is local
 // the pairing front is a line moving over the surface and strands no more nodes than PS (A2: 230
-// against 690; B2: 514 against 550). petersen_bench, old and new alternated twice at load 4-5
-// (bench/RESULTS.md, "Stop 17"): A2 0.288 and 0.311 s with PS against 0.082 and 0.133, B2 0.510
-// and 0.434 against 0.135 and 0.132.
+// against 690; B2: 514 against 550). petersen_bench, PS and the sweep alternated twice at load
+// 4-5 (bench/RESULTS.md): A2 0.288 and 0.311 s with PS against 0.082 and 0.133, B2 0.510 and
+// 0.434 against 0.135 and 0.132.
 // Where the order jumps about (a subdivided mesh numbers each level's triangles after the
 // coarser ones: fertility-sub3's median neighbour gap is 0.75 n), the front breaks into pieces
 // everywhere and strands 1-3 % of the nodes (armadillo-sub2 17,174 against PS's 390), so the
@@ -50,10 +50,10 @@ constexpr std::uint8_t kStart = 3;
 constexpr std::uint8_t kSeen = 1 << 6;  // reached by the current repair's search
 constexpr std::uint32_t kNoParent = ~0u;
 
-// The order counts as local up to this many √n of median largest gap. Measured (bench/RESULTS.md,
-// "Stop 17"): the plates 0.01-1.9, where the sweep beat PS by 1.3-3.7x; homer 3.65, rocker-arm 1.2,
-// fandisk 0.7, where it beat PS warm by 1.2-1.9x; nefertiti 4.62, where it left 544 nodes against
-// PS's 82 and lost warm (15 against 12 ms); bunny 9.0, where it lost too.
+// The order counts as local up to this many √n of median largest gap (bench/RESULTS.md): the
+// plates 0.01-1.9, where the sweep beats PS by 1.3-3.7x; homer 3.65, rocker-arm 1.2, fandisk 0.7,
+// where it beats PS warm by 1.2-1.9x; nefertiti 4.62, where it leaves 544 nodes against PS's 82
+// and loses warm (15 against 12 ms); bunny 9.0, where it loses too.
 constexpr double kLocalGap = 4.0;
 constexpr std::uint32_t kSamples = 1024;
 
@@ -109,9 +109,9 @@ class OrderedSweep {
 
   // Pairs v, in play, with its free neighbour of fewest free neighbours; on ties, the one of
   // smallest id: the nearest to the front (every node before the sweep's position is out), so the
-  // front stays straight. The first in the row instead left 2,938 nodes on B2 against 514, and
+  // front stays straight. The first in the row would leave 2,938 nodes on B2 against 514, and
   // 12,642 on A2 against 230 (labels 13.1M and 1.49M against 2.3M and 1.18M; on the generated
-  // plates the same within 10 %: bench/RESULTS.md, "Stop 17").
+  // plates the same within 10 %: bench/RESULTS.md).
   void pair_from(NodeId v) {
     int best = -1;
     int best_free = kStart + 1;

@@ -4,8 +4,8 @@ namespace petersen::reduction {
 
 DsChooser::DsChooser(const CubicGraph& graph, std::uint32_t edge_capacity)
     : connectivity_(graph.node_count(), edge_capacity), forest_(graph.node_count()) {
-  // One bulk insertion, the same forest as inserting the edges one by one in id order: that was
-  // 12 % of ds on armadillo-sub2's dual (perf), 2M connectivity queries and 0.7M links.
+  // One bulk insertion, the same forest as inserting the edges one by one in id order: that
+  // would be 12 % of ds on armadillo-sub2's dual, 2M connectivity queries and 0.7M links.
   connectivity_.insert_all(graph.edge_ends());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     if (!connectivity_.is_tree_edge(e)) continue;

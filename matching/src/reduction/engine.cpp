@@ -6,8 +6,8 @@
 #include <vector>
 
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "reduction/brute_force.hpp"
-#include "stopwatch.hpp"
 
 namespace petersen::reduction {
 

@@ -10,12 +10,12 @@
 
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
 #include "reduction/frink_chooser.hpp"
 #include "reduction/gw_chooser.hpp"
 #include "reduction/reduction_graph.hpp"
-#include "stopwatch.hpp"
 
 namespace petersen::reduction {
 
@@ -27,13 +27,13 @@ namespace {
 // reduction graph walk with few cache misses whatever the input order was. One pass, O(n); the
 // components come out as runs of ids. The same pass finds what gw's set-up needs, the depth-first
 // tree and each tree edge's cover (the back edge reaching highest from below it, by low points:
-// a node's preorder number is its new id). gw's own depth-first pass over the copy followed the
-// same tree; doing it here saved 16 % of gw's set-up instructions and 14 % of its D1 read misses
-// (Callgrind, fertility-sub3's dual); see bench/RESULTS.md.
+// a node's preorder number is its new id). A depth-first pass of gw's own over the copy would
+// follow the same tree; doing it here saves 16 % of gw's set-up instructions and 14 % of its D1
+// read misses (fertility-sub3's dual; see bench/RESULTS.md).
 //
 // The copy's arrays become the reduction graph's own (its edge ends reserved with room for the
 // edges the reductions add) instead of being copied: 24 bytes per node less fresh memory (gw's
-// peak on armadillo-sub2's dual 224 -> 192 MiB) and 9 % fewer LL misses (Callgrind).
+// peak on armadillo-sub2's dual 192 MiB against 224) and 9 % fewer LL misses.
 struct DepthFirstCopy {
   HugeVector<EdgeId> node_edges;  // as CubicGraph::node_edges()
   HugeVector<NodeId> edge_ends;   // as CubicGraph::edge_ends(), with capacity for n more edges
@@ -55,7 +55,7 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
   node_edges.resize(3 * std::size_t{n});
   // A reduction adds at most two edges per two nodes. Edge ids are given in the order the ends
   // are written, so they are appended, as is `low`: zero-filling the two first (9.2 MB on
-  // fertility-sub3's dual) was 4.6 % of gw's LL misses there (Callgrind, 32 MiB LL).
+  // fertility-sub3's dual) would be 4.6 % of gw's LL misses there (with a 32 MiB LL).
   edge_ends.reserve(2 * (std::size_t{m} + n));
   copy.old_node.reserve(n);
   copy.old_edge.reserve(m);

@@ -9,10 +9,10 @@
 //
 // The rows are written as the search visits each node: it has just read the node's edges and
 // their far ends (at random places of the input, whatever the order), so the rows cost only the
-// edges' costs more. Built after the search instead, in the new order, they read all of it again
-// at random. Set-up to the first greedy step (petersen_weighted_speed, old and new binaries
-// alternated three times, nine solves each), median: armadillo-sub2's dual 0.41 -> 0.30 s,
-// rocker-arm-sub3's 0.34 -> 0.23 s.
+// edges' costs more. Built after the search instead, in the new order, they would read all of it
+// again at random: set-up to the first greedy step (petersen_weighted_speed, medians of nine
+// solves) takes 0.30 s on armadillo-sub2's dual against 0.41, 0.23 s on rocker-arm-sub3's
+// against 0.34.
 
 #include <algorithm>
 #include <array>
@@ -41,8 +41,8 @@ struct BreadthFirstAdjacency {
   /// New node v's slots, sorted by edge id (the order scans meet ties in then does not depend on
   /// the order the input lists a node's edges in): [first_slot[v], first_slot[v + 1]), or
   /// [d·v, d·v + d) when every node has degree d = uniform_degree (the dual of a closed mesh), and
-  /// then first_slot is empty: the offset was a cache miss before every scan's slots, a third of
-  /// the even scans' samples on armadillo-sub2's dual (perf).
+  /// then first_slot is empty: the offset would be a cache miss before every scan's slots, a
+  /// third of the even scans' samples on armadillo-sub2's dual.
   HugeVector<Slot> slots;
   HugeVector<std::size_t> first_slot;
   std::uint32_t uniform_degree = 0;
@@ -87,8 +87,8 @@ BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<cons
     for (NodeId head = order.new_node[root]; head < visited; ++head) {
       // The node 8 places ahead in the queue has its costs and its neighbours' new ids
       // requested now, which the visit below would otherwise wait for one miss at a time:
-      // the search 0.095 -> 0.077 s on rocker-arm-sub3's dual, 5.5 -> 4.5 ms on armadillo's
-      // (medians of five; 4, 16 and 32 places ahead did about as well).
+      // the search takes 0.077 s on rocker-arm-sub3's dual against 0.095 without, 4.5 ms on
+      // armadillo's against 5.5 (medians of five; 4, 16 and 32 places ahead do about as well).
       if (head + kAhead < visited) {
         const NodeId ahead = old_node[head + kAhead];
         for (EdgeId e : graph.incident_edges(ahead)) {

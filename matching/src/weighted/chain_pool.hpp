@@ -2,8 +2,8 @@
 // Many short lists in one pool: each list is a chain of links through one array, and links freed
 // by clearing a list are reused by the next pushes. The solver keeps a list per alternating tree
 // (its labelled blossoms, the edges parked with it); with a std::vector per tree, growing and
-// freeing 145k vectors on armadillo-sub2's dual cost 18 % of the solver's instructions in malloc,
-// free and the copies of regrowth (callgrind, armadillo's dual).
+// freeing 145k vectors on armadillo-sub2's dual would cost 18 % of the solver's instructions in
+// malloc, free and the copies of regrowth.
 
 #include <cstdint>
 #include <vector>

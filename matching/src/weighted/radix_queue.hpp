@@ -6,13 +6,13 @@
 // takes the first non-empty bucket (a bitmap finds it): on the lowest digit all its keys are
 // equal and it becomes bucket 0 whole, higher up its items move around its smallest key (kept
 // per bucket) to buckets of lower digits. An item moves at most once per digit: 2 moves per item
-// taken with 4-bit digits instead of 6 with one bucket per bit (armadillo-sub2's dual), where the
-// moves, the scans for the first non-empty bucket and for a bucket's smallest key were 17 % of
-// the solver's instructions (callgrind, armadillo's dual). 6-bit digits against 4 (callgrind,
-// fertility-sub3's dual): 5.7 % fewer of the solver's instructions, 1.7 % more D1 and 1 % more
-// last-level read misses; 8-bit: 9.1 % fewer instructions, 4.6 % and 3.4 % more misses. The
-// buckets are read sequentially: the binary heap before them missed the cache on every level of
-// a 3M-entry heap (27 % of the time on fertility-sub3's dual).
+// taken with 4-bit digits against 6 with one bucket per bit (armadillo-sub2's dual), where the
+// moves, the scans for the first non-empty bucket and for a bucket's smallest key are 17 % of
+// the solver's instructions (armadillo's dual). 6-bit digits against 4 (fertility-sub3's dual):
+// 5.7 % fewer of the solver's instructions, 1.7 % more D1 and 1 % more last-level read misses;
+// 8-bit: 9.1 % fewer instructions, 4.6 % and 3.4 % more misses. The buckets are read
+// sequentially, where a binary heap misses the cache on every level of a 3M-entry heap (27 % of
+// the time on fertility-sub3's dual).
 
 #include <array>
 #include <bit>
@@ -70,8 +70,8 @@ class RadixQueue {
   // empty bucket counts as a full block (fill_ = kBlockEntries, no top), so that one test tells
   // a push when to take a block. Freed blocks go to a shared free list: a bucket grows without
   // copying what it holds. With a std::vector per bucket, the growth copies (a bucket's items
-  // moving to buckets of lower digits refill them from empty again and again) were 5 % of the
-  // solver's instructions and 60 % of its last-level write misses on armadillo's dual (callgrind).
+  // moving to buckets of lower digits refill them from empty again and again) would be 5 % of the
+  // solver's instructions and 60 % of its last-level write misses on armadillo's dual.
   struct Block {
     Block* below = nullptr;
     std::array<Entry, kBlockEntries> entries;

@@ -31,17 +31,16 @@ CertificateCheck fail(std::string problem) {
   return {std::move(problem)};
 }
 
-// The perfect-matching check with a 128-bit claimed total (the doubled graph's may pass 2^63).
-CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_ends,
-                               std::span<const Cost> costs, const Matching& matching,
-                               Wide total_cost, const MatchingCertificate& certificate) {
+// The matching: perfect and consistent, of total cost `total_cost`; its cost goes to `primal`.
+CertificateCheck check_matching(std::uint32_t n, std::span<const NodeId> edge_ends,
+                                std::span<const Cost> costs, const Matching& matching,
+                                Wide total_cost, Wide& primal) {
   const std::size_t m = edge_ends.size() / 2;
   if (edge_ends.size() % 2 != 0) return fail("odd number of edge ends");
   if (costs.size() != m)
     return fail("costs: " + std::to_string(costs.size()) + " for " + std::to_string(m) + " edges");
-  // The matching: perfect and consistent.
   if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
-  Wide primal = 0;
+  primal = 0;
   for (NodeId v = 0; v < n; ++v) {
     const EdgeId e = matching.mate_edge[v];
     if (e >= m)
@@ -59,10 +58,22 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
   if (primal != total_cost) {
     return fail("the matched edges cost " + str(primal) + ", not " + str(total_cost));
   }
+  return {};
+}
 
-  // The sets: a forest by their parents (any family of sets given this way is laminar), each
-  // odd, of 3+ nodes, with a value >= 0, and none equal to its only child.
-  const MatchingCertificate& c = certificate;
+// The certificate's laminar family, as check_sets reads it: each set's depth, the sets by
+// depth (parents before children), its node count, the values of it and every set above it,
+// and its outermost ancestor.
+struct Laminar {
+  std::vector<std::uint32_t> depth, order;
+  std::vector<std::uint64_t> size;
+  std::vector<Wide> chain;
+  std::vector<std::uint32_t> outermost;
+};
+
+// The sets: a forest by their parents (any family of sets given this way is laminar), each
+// odd, of 3+ nodes, with a value >= 0, and none equal to its only child.
+CertificateCheck check_sets(std::uint32_t n, const MatchingCertificate& c, Laminar& family) {
   if (c.node_dual.size() != n || c.node_set.size() != n)
     return fail("node arrays have the wrong size");
   const std::size_t sets = c.set_dual.size();
@@ -77,7 +88,8 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
   // Depths, walking each set up to a set of known depth; a walk longer than the number of sets
   // is a cycle.
   constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
-  std::vector<std::uint32_t> depth(sets, kUnknown);
+  std::vector<std::uint32_t>& depth = family.depth;
+  depth.assign(sets, kUnknown);
   std::vector<std::uint32_t> walk;
   for (std::size_t s = 0; s < sets; ++s) {
     walk.clear();
@@ -91,11 +103,14 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
     std::uint32_t d = at == kNoSet ? 0 : depth[at] + 1;
     for (std::size_t i = walk.size(); i-- > 0;) depth[walk[i]] = d++;
   }
-  std::vector<std::uint32_t> order(sets);
+  std::vector<std::uint32_t>& order = family.order;
+  order.resize(sets);
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
-  std::vector<std::uint64_t> size(sets, 0), largest_child(sets, 0);
+  std::vector<std::uint64_t>& size = family.size;
+  size.assign(sets, 0);
+  std::vector<std::uint64_t> largest_child(sets, 0);
   for (NodeId v = 0; v < n; ++v) {
     if (innermost[v] == kNoSet) continue;
     if (innermost[v] >= sets)
@@ -114,18 +129,31 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
       largest_child[parent[s]] = std::max(largest_child[parent[s]], size[s]);
     }
   }
-  std::vector<Wide> chain(sets, 0);  // the values of s and every set above it
-  std::vector<std::uint32_t> outermost(sets);
+  std::vector<Wide>& chain = family.chain;
+  chain.assign(sets, 0);
+  std::vector<std::uint32_t>& outermost = family.outermost;
+  outermost.resize(sets);
   for (std::uint32_t s : order) {
     chain[s] = c.set_dual[s] + (parent[s] == kNoSet ? 0 : chain[parent[s]]);
     outermost[s] = parent[s] == kNoSet ? s : outermost[parent[s]];
   }
+  return {};
+}
 
+// Complementary slackness: every reduced cost >= 0, matched edges tight, every set of positive
+// value holding (size - 1) / 2 matched edges, and the values summing to twice the cost.
+CertificateCheck check_duals(std::uint32_t n, std::span<const NodeId> edge_ends,
+                             std::span<const Cost> costs, const Matching& matching, Wide primal,
+                             const MatchingCertificate& c, const Laminar& family) {
+  const std::size_t m = edge_ends.size() / 2;
+  const std::size_t sets = c.set_dual.size();
+  const std::vector<std::uint32_t>& parent = c.set_parent;
+  const std::vector<std::uint32_t>& innermost = c.node_set;
+  const auto& [depth, order, size, chain, outermost] = family;
   // The smallest set holding both u and v (kNoSet: none). Sets under different outermost ones
   // share none, nor does a set with no set: most edges leaving a set are settled so, where the
-  // walk up from the deeper end made the whole check 2.2-2.4x slower on the duals of
-  // fertility-sub3 and rocker-arm-sub3 (0.152 -> 0.064 s, 0.365 -> 0.150 s), whose blossoms
-  // nest deeply.
+  // walk up from the deeper end would make the whole check 2.2-2.4x slower on the duals of
+  // fertility-sub3 and rocker-arm-sub3, whose blossoms nest deeply.
   auto common = [&](NodeId u, NodeId v) {
     std::uint32_t a = innermost[u], b = innermost[v];
     if (a == b) return a;
@@ -171,6 +199,19 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
   if (dual != 2 * primal)
     return fail("the values sum to " + str(dual) + ", not 2·cost = " + str(2 * primal));
   return {};
+}
+
+// The perfect-matching check with a 128-bit claimed total (the doubled graph's may pass 2^63).
+CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_ends,
+                               std::span<const Cost> costs, const Matching& matching,
+                               Wide total_cost, const MatchingCertificate& certificate) {
+  Wide primal = 0;
+  if (CertificateCheck check = check_matching(n, edge_ends, costs, matching, total_cost, primal);
+      !check.ok())
+    return check;
+  Laminar family;
+  if (CertificateCheck check = check_sets(n, certificate, family); !check.ok()) return check;
+  return check_duals(n, edge_ends, costs, matching, primal, certificate, family);
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #pragma once
-// Components of a graph given by its edge list, by disjoint sets: the pairable graph's (which
-// closed components the algorithms match), a surface's (its genus, with chosen cuts joined back),
-// a triangulation's dual (one component for LRS).
+// The project's disjoint sets (union-find), over dense node ids: the components of a graph given
+// by its edge list (the pairable graph's closed components, a surface's genus with chosen cuts
+// joined back, a triangulation's dual for LRS), or sets joined one pair at a time (unite).
 
 #include <algorithm>
 #include <cstdint>
@@ -12,28 +12,40 @@
 
 namespace petersen {
 
-/// Disjoint sets over the graph's edges: each node's parent, a root being its own. On huge pages,
-/// so that a run takes it from the pool's freed ranges rather than from fresh memory.
+/// Disjoint sets of nodes 0..n-1: each node's parent, a root being its own, and every root the
+/// smallest node of its set (a join hangs the larger root under the smaller), so that roots
+/// come out in the order of the sets' first nodes. find halves the path it walks: O(log n)
+/// amortised per find. On huge pages, so that a run takes it from the pool's freed ranges rather
+/// than from fresh memory.
 class ComponentForest {
  public:
-  /// The forest of the graph on `node_count` nodes whose edge e joins edge_ends[2e] and
+  /// `node_count` singletons.
+  explicit ComponentForest(std::uint32_t node_count) : parent_(node_count) {
+    for (NodeId v = 0; v < node_count; ++v) parent_[v] = v;
+  }
+  /// The components of the graph on `node_count` nodes whose edge e joins edge_ends[2e] and
   /// edge_ends[2e + 1].
   ComponentForest(std::uint32_t node_count, std::span<const NodeId> edge_ends)
-      : parent_(node_count) {
-    for (NodeId v = 0; v < node_count; ++v) parent_[v] = v;
+      : ComponentForest(node_count) {
     join(edge_ends);
   }
   /// Joins the ends of more edges, given the same way.
   void join(std::span<const NodeId> edge_ends) {
-    for (std::size_t i = 0; i < edge_ends.size(); i += 2) {
-      const NodeId a = find(edge_ends[i]), b = find(edge_ends[i + 1]);
-      if (a != b) parent_[std::max(a, b)] = std::min(a, b);
-    }
+    for (std::size_t i = 0; i < edge_ends.size(); i += 2) unite(edge_ends[i], edge_ends[i + 1]);
   }
+  /// Joins the sets of a and b; false when they were one set already.
+  bool unite(NodeId a, NodeId b) {
+    a = find(a), b = find(b);
+    if (a == b) return false;
+    parent_[std::max(a, b)] = std::min(a, b);
+    return true;
+  }
+  /// The root of v's set: its smallest node.
   NodeId find(NodeId v) {
     while (parent_[v] != v) v = parent_[v] = parent_[parent_[v]];
     return v;
   }
+  /// The number of sets.
   std::uint32_t root_count() const {
     std::uint32_t roots = 0;
     for (NodeId v = 0; v < parent_.size(); ++v) roots += parent_[v] == v;

@@ -72,8 +72,8 @@ class DynamicConnectivity {
   // at the vertex's node of that level.
   std::vector<std::uint32_t> next_, prev_, head_;
   // Per vertex its nodes at levels 0..k, per edge its arcs at levels 0..level: blocks in a pool.
-  // A block's start and size side by side: one cache miss per lookup instead of two (the vertex
-  // lookups had 13 % of ds's D1 read misses with separate arrays, Callgrind on armadillo's dual).
+  // A block's start and size side by side: one cache miss per lookup instead of two (with
+  // separate arrays the vertex lookups have 13 % of ds's D1 read misses on armadillo's dual).
   struct Block {
     std::uint32_t base = 0, capacity = 0;
   };
@@ -81,7 +81,7 @@ class DynamicConnectivity {
   std::vector<std::uint32_t> pool_;
   std::array<std::vector<std::uint32_t>, 32> free_blocks_;  // bases of free blocks of size 2^i
   // Room for index i, moving the block if not. The check inline, the move not: a call per arc
-  // and vertex lookup was 3 % of ds's instructions (Callgrind, armadillo's dual).
+  // and vertex lookup would be 3 % of ds's instructions (armadillo's dual).
   void reserve_block(Block& block, std::uint32_t i) {
     if (i >= block.capacity) [[unlikely]]
       grow_block(block, i);

@@ -34,8 +34,8 @@ void release(void* range, std::size_t bytes);
 
 /// Turns the pool on for this process: released ranges, up to `retained_bytes` in all, are kept
 /// for reuse, because on virtual machines a fresh page is expensive: here the host backs guest
-/// memory lazily and takes freed memory back, so filling fresh memory ran at 0.25-1.2 GB/s
-/// against 15 GB/s for reused huge pages (a touch loop on the development VM, 256 MB at a time);
+/// memory lazily and takes freed memory back, so filling fresh memory runs at 0.25-1.2 GB/s
+/// against 15 GB/s for reused huge pages (a touch loop on such a machine, 256 MB at a time);
 /// bench/RESULTS.md has what the pool buys end to end. The first call installs a fork handler
 /// (pthread_atfork): a forked child drops the ranges its parent kept, as writing them would copy
 /// every page. Off by default: a program that never calls this gets plain mappings, keeps no

@@ -1,5 +1,5 @@
 #pragma once
-// Exact minimum-cost perfect matching with a certificate of optimality (issue 14), and the
+// Exact minimum-cost perfect matching with a certificate of optimality, and the
 // minimum-cost matching among the maximum ones for graphs without a perfect matching.
 //
 // The certificate is a dual solution of Edmonds' perfect-matching polytope in its odd-cut form:
@@ -103,7 +103,7 @@ struct MinCostResult {
 /// breadth-first renumbering of the graph (meshes' own orders scatter neighbours; the answer is
 /// in the input's ids). In the worst case O(n) augmentations, each after O(n) shrinks and
 /// expansions that rescan up to m edges: O(n² m); in practice the work follows the regions the
-/// trees cover (armadillo's dual, 86k nodes: 0.04 s of CPU time, stop 24).
+/// trees cover (armadillo's dual, 86k nodes: 0.04 s of CPU time).
 /// Iterative throughout. Throws GraphError when the graph has no perfect matching,
 /// std::invalid_argument when costs has the wrong size or a cost out of range, and
 /// std::overflow_error when the total cost passes 2^63 (possible from 2^24 nodes on, with

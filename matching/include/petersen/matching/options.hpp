@@ -10,17 +10,19 @@
 namespace petersen {
 
 enum class Algorithm {
-  sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
-  ps,     ///< Puli–Segal priority greedy (paper §3.1), then augmenting paths; the ordered
-          ///< sweep in its place where the numbering is local (Stats::ordered_sweep), and on a
-          ///< bipartite graph Schrijver's exact matching where that leaves nodes
-          ///< (Stats::schrijver)
-  ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
-  gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
-  frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
-  lemon,  ///< the comparison peer (LEMON's MaxMatching): runs Options::peer, see there
-  lrs,    ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run by
-          ///< quadrangulate (petersen/quadrangulate), not by perfect_matching
+  automatic,  ///< "auto": the fastest pairing in PS's place (the ordered sweep where the numbering
+              ///< is local, Stats::ordered_sweep; Schrijver's exact matching on a bipartite graph
+              ///< where that leaves nodes, Stats::schrijver; PS where neither stands), then
+              ///< augmenting paths
+  sg,         ///< simple greedy pairing (paper §3.1), then augmenting paths
+  ps,         ///< Puli–Segal priority greedy as the paper describes it (§3.1), then augmenting
+              ///< paths
+  ds,         ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
+  gw,         ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
+  frink,      ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
+  lemon,      ///< the comparison peer (LEMON's MaxMatching): runs Options::peer, see there
+  lrs,        ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
+              ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
 };
 
 /// How augmenting paths are searched (paper §3.1, Tarjan's procedure).
@@ -42,19 +44,9 @@ using PeerMatcher = void (*)(std::uint32_t node_count, const std::uint32_t* edge
                              std::uint32_t edge_count, std::uint32_t* mate_edge);
 
 struct Options {
-  Algorithm algorithm = Algorithm::ps;
+  Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
-  /// ps, when the ordered sweep leaves nodes unpaired or does not run: try Schrijver's exact
-  /// matching, which matches a bipartite graph perfectly where PS leaves patches of one colour
-  /// (Stats::schrijver). False runs the paper's PS alone, as the bench's paper-faithful rows do.
-  bool bipartite_exact = true;
-  /// ps: pair by the ordered sweep instead of PS where the node numbering is local
-  /// (Stats::ordered_sweep): each free node in id order with its free neighbour of fewest free
-  /// neighbours, a third to a half of PS's cost there, and on the bipartite plates a perfect
-  /// matching in 0.8-2.0 times a BFS's time. False runs PS always, as the bench's paper-faithful
-  /// rows do.
-  bool ordered_sweep = true;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
   /// The matcher Algorithm::lemon runs. The core links no peer library: a caller that compares
@@ -78,13 +70,14 @@ struct Stats {
   std::uint64_t lift_cases[3] = {0, 0, 0};  ///< Appendix A cases (i), (ii), (iii)
   std::uint64_t replacement_searches = 0;   ///< ds: dynamic-connectivity replacement searches
   std::uint64_t cover_swaps = 0;            ///< gw: tree edges swapped for a covering non-tree edge
-  /// ps: Schrijver's algorithm matched the graph perfectly in PS's place, nothing left to augment.
+  /// automatic: Schrijver's algorithm matched the graph perfectly in PS's place, nothing left to
+  /// augment.
   /// It runs where the ordered sweep leaves nodes or does not run, and matches every bipartite
   /// graph (where PS leaves patches of one colour, bench/RESULTS.md); it gives up at the first
   /// odd cycle its walk meets, and the sweep's pairing or PS's stands.
   bool schrijver = false;
-  /// ps: the ordered sweep's pairing is the initial one (Options::ordered_sweep): the numbering
-  /// was local, and the sweep paired every node or the graph was not bipartite.
+  /// automatic: the ordered sweep's pairing is the initial one: the numbering was local, and the
+  /// sweep paired every node or the graph was not bipartite.
   bool ordered_sweep = false;
 
   double matching_seconds() const { return initial_seconds + augment_seconds; }  ///< (e)

@@ -11,10 +11,11 @@
 namespace petersen {
 
 struct PartnerOptions {
+  /// Algorithm::automatic or Algorithm::ps (what perfect_matching runs for them); any other
+  /// throws std::invalid_argument.
+  Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
-  bool bipartite_exact = true;  ///< as Options::bipartite_exact
-  bool ordered_sweep = true;    ///< as Options::ordered_sweep
 };
 
 struct PartnerResult {
@@ -24,18 +25,19 @@ struct PartnerResult {
   Stats stats;
 };
 
-/// PS and Tarjan's augmenting paths (Algorithm::ps of perfect_matching, the same pairs for the
-/// same seed) on a cubic multigraph given by its neighbour rows, `rows[3v..3v+2]` being v's
-/// neighbours (CubicGraph::into_neighbour_rows); the rows are read, never copied. It holds the
-/// rows (12 bytes per node, the caller's) and the search state (16) where perfect_matching holds
-/// the graph (24), its table (28) and the mate edges (4): what lets quadrangulate stay within 64
-/// bytes per triangle. The rows are trusted to be a loop-free cubic graph (each node in the row
-/// of each neighbour as often as that neighbour is in its own); no bridge test is made. Check the
-/// answer with verify_perfect_partners. Θ(n) for PS; the augmentation's cost follows the regions
-/// its searches explore. As in perfect_matching, the ordered sweep pairs in PS's place where the
-/// numbering is local (stats.ordered_sweep), and where it leaves nodes a bipartite graph is
-/// matched by Schrijver's algorithm instead (Θ(n), stats.schrijver; its walk's path takes 8 bytes
-/// per node on it, about 10^4 nodes on the 4M-node plates).
+/// PS and Tarjan's augmenting paths (Algorithm::automatic or ps of perfect_matching, the same
+/// pairs for the same seed) on a cubic multigraph given by its neighbour rows, `rows[3v..3v+2]`
+/// being v's neighbours (CubicGraph::into_neighbour_rows); the rows are read, never copied. It
+/// holds the rows (12 bytes per node, the caller's) and the search state (16) where
+/// perfect_matching holds the graph (24), its table (28) and the mate edges (4): what lets
+/// quadrangulate stay within 64 bytes per triangle. The rows are trusted to be a loop-free cubic
+/// graph (each node in the row of each neighbour as often as that neighbour is in its own); no
+/// bridge test is made. Check the answer with verify_perfect_partners. Θ(n) for PS; the
+/// augmentation's cost follows the regions its searches explore. As in perfect_matching,
+/// Algorithm::automatic pairs by the ordered sweep in PS's place where the numbering is local
+/// (stats.ordered_sweep), and where it leaves nodes a bipartite graph is matched by Schrijver's
+/// algorithm instead (Θ(n), stats.schrijver; its walk's path takes 8 bytes per node on it, about
+/// 10^4 nodes on the 4M-node plates).
 PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOptions& options = {});
 
 /// Tarjan's augmenting paths (augment_matching's, the same searches) from a pairing the caller

@@ -41,11 +41,11 @@ std::string_view to_string(Objective objective);
 std::optional<Objective> parse_objective(std::string_view name);
 
 struct QuadOptions {
-  /// The algorithm for the closed components: sg, ps, ds, gw, frink, lemon or lrs. lrs works on
-  /// each closed, connected, orientable manifold component (it flips edges, see LrsResult); a
-  /// closed component it cannot take (pinched vertex, non-orientable) is matched by ps instead
+  /// The algorithm for the closed components: auto, sg, ps, ds, gw, frink, lemon or lrs. lrs works
+  /// on each closed, connected, orientable manifold component (it flips edges, see LrsResult); a
+  /// closed component it cannot take (pinched vertex, non-orientable) is matched by auto instead
   /// and counted in QuadStats::lrs_fallback_components.
-  Algorithm algorithm = Algorithm::ps;
+  Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
   /// Turn every triangle left unpaired into a quad too, by splitting edges: two leftover
