@@ -38,7 +38,7 @@ Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
 // petersen's own algorithms, through the front door (the graph was validated once, up front).
 Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augment augment,
                             std::uint64_t seed) {
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       input.dual.graph,
       {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
   require_perfect(input.dual.graph, result.matching);

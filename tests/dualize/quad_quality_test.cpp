@@ -112,7 +112,7 @@ TEST(QuadQuality, DualEdgeCostIsTheCostOfTheQuadsFromMatching) {
   const Dual dual = build_dual(mesh);
   const HugeVector<double> cost = dual_edge_quality(mesh, dual);
   ASSERT_EQ(cost.size(), dual.graph.edge_count());
-  const Result r = perfect_matching(dual.graph);
+  const PerfectMatchingResult r = perfect_matching(dual.graph);
   const QuadMesh quads = quads_from_matching(mesh, dual.graph, r.matching);
   std::size_t q = 0;
   std::size_t checked = 0;

@@ -38,7 +38,7 @@ TEST(Quads, KeepTheOrientationOfBothTriangles) {
 TEST(Quads, LemonMatchingGivesAValidQuadMesh) {
   const TriangleMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const QuadMesh quads = quads_from_matching(mesh, dual, result.matching);
   EXPECT_EQ(quads.quads.size(), 4u);

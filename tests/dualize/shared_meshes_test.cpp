@@ -52,7 +52,7 @@ TEST(SharedMeshes, ClosedOnesConvertThroughLemon) {
     const TriangleMesh mesh = read_triangle_mesh(*dir + "/" + expected.file);
     const CubicGraph dual = dual_graph(mesh);
     EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-    const Result result = perfect_matching(
+    const PerfectMatchingResult result = perfect_matching(
         dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
     ASSERT_TRUE(verify_perfect_matching(dual, result.matching).ok());
     const QuadCheck check = check_quad_mesh(mesh, quads_from_matching(mesh, dual, result.matching));
@@ -102,7 +102,7 @@ TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
   }
   const CubicGraph dual = dual_graph(cow);
   EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const QuadCheck check = check_quad_mesh(cow, quads_from_matching(cow, dual, result.matching));
   EXPECT_TRUE(check.ok()) << check.problem;
