@@ -135,7 +135,7 @@ std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
                                                        {Algorithm::sg, Augment::faithful},
                                                        {Algorithm::automatic, Augment::local},
                                                        {Algorithm::ps, Augment::faithful}};
-  for (const auto [algorithm, augment] : greedy_rows) {
+  for (const auto& [algorithm, augment] : greedy_rows) {
     const std::string name =
         std::string(to_string(algorithm)) + "-" + std::string(to_string(augment));
     list.push_back({name, algorithm == Algorithm::sg ? "SG" : "PS", true, false, 0xFFFFFFFFu,
