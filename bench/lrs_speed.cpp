@@ -52,7 +52,8 @@ void compare_with_ps(const std::string& name, const PolygonMesh& mesh) {
   const CubicGraph dual = dual_graph(mesh);
   double ps_best = 0;
   for (int r = 0; r < 3; ++r) {
-    const Stats ps = perfect_matching(dual, {.algorithm = Algorithm::automatic}).stats;
+    const PerfectMatchingStats ps =
+        perfect_matching(dual, {.algorithm = Algorithm::automatic}).stats;
     if (r == 0 || ps.matching_seconds() < ps_best) ps_best = ps.matching_seconds();
   }
   std::printf(

@@ -40,8 +40,8 @@ double median(std::vector<double> values) {
   return values[values.size() / 2];
 }
 
-Result run_checked(const CubicGraph& g, Algorithm algorithm, Augment augment) {
-  Result r = perfect_matching(
+PerfectMatchingResult run_checked(const CubicGraph& g, Algorithm algorithm, Augment augment) {
+  PerfectMatchingResult r = perfect_matching(
       g, {.algorithm = algorithm, .augment = augment, .seed = 1, .validate = false});
   if (!verify_perfect_matching(g, r.matching).ok()) {
     std::printf("%s+%s: NOT PERFECT\n", std::string(to_string(algorithm)).c_str(),
@@ -51,8 +51,8 @@ Result run_checked(const CubicGraph& g, Algorithm algorithm, Augment augment) {
   return r;
 }
 
-void print_row(const std::string& label, const Stats& s, double seconds, double x_bfs,
-               std::uint32_t n) {
+void print_row(const std::string& label, const PerfectMatchingStats& s, double seconds,
+               double x_bfs, std::uint32_t n) {
   std::printf("%-14s %9.4f %9.4f %9.4f %9.2f %8u %9.4f %9llu %8llu\n", label.c_str(),
               s.initial_seconds, s.augment_seconds, seconds, x_bfs, s.unpaired_after_initial,
               s.paired_percent(n), (unsigned long long)s.nodes_labelled,
@@ -70,7 +70,7 @@ void measure(const std::string& name, const CubicGraph& g) {
   constexpr Algorithm kGreedy[] = {Algorithm::automatic, Algorithm::sg};
   std::vector<double> bfs;
   std::vector<double> seconds[2], ratio[2], initial[2], augment[2];
-  Result local[2];
+  PerfectMatchingResult local[2];
   for (int round = 0; round < kRounds; ++round) {
     bfs.push_back(seconds_of([&] { petersen::bench::bfs_floor(g); }));
     for (int a = 0; a < 2; ++a) {
@@ -89,14 +89,14 @@ void measure(const std::string& name, const CubicGraph& g) {
   double faithful_per_search = 0;
   for (int a = 0; a < 2; ++a) {
     const std::string algorithm(to_string(kGreedy[a]));
-    Stats medians = local[a].stats;
+    PerfectMatchingStats medians = local[a].stats;
     medians.initial_seconds = median(initial[a]);
     medians.augment_seconds = median(augment[a]);
     print_row(algorithm + "+local", medians, median(seconds[a]), median(ratio[a]), n);
     const std::uint32_t unpaired = local[a].stats.unpaired_after_initial;
     double faithful_seconds = 0;
     if (0.5 * unpaired * double(n) <= kFaithfulBudget) {
-      const Result r = run_checked(g, kGreedy[a], Augment::faithful);
+      const PerfectMatchingResult r = run_checked(g, kGreedy[a], Augment::faithful);
       faithful_seconds = r.stats.matching_seconds();
       if (r.stats.augmenting_paths > 0)
         faithful_per_search = r.stats.augment_seconds / double(r.stats.augmenting_paths);
@@ -118,7 +118,7 @@ void measure(const std::string& name, const CubicGraph& g) {
     std::printf("%-14s local is %.0fx faster than faithful\n", "",
                 faithful_seconds / median(seconds[a]));
   }
-  Result lemon = perfect_matching(
+  PerfectMatchingResult lemon = perfect_matching(
       g, {.algorithm = Algorithm::lemon, .validate = false, .peer = &lemon_peer::maximum_matching});
   const double lemon_seconds = lemon.stats.matching_seconds();
   std::printf("%-14s %9.4f %9s %9.4f %9.2f   (PS+local %.1fx faster, SG+local %.1fx faster)\n",

@@ -58,7 +58,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (graph.node_count > (1u << 16)) return 0;
   constexpr Algorithm kAlgorithms[] = {Algorithm::automatic, Algorithm::ps, Algorithm::sg,
                                        Algorithm::ds,        Algorithm::gw, Algorithm::frink};
-  Options options;
+  PerfectMatchingOptions options;
   options.algorithm = kAlgorithms[data[size - 1] % 6];
   const AnyGraphMatching maximum = match_any_graph(graph.node_count, graph.edges, options);
   REQUIRE(checked_size(graph, maximum.mate_edge) == maximum.size);

@@ -80,7 +80,7 @@ void write_stats_json(const MatchReport& r) {
                std::uint64_t{r.graph.node_count} - 2 * std::uint64_t{r.size},
                r.written ? "true" : "false");
   if (r.matched) {  // the run by --algorithm, when there was one
-    const Stats& s = r.matched->stats;
+    const PerfectMatchingStats& s = r.matched->stats;
     std::fprintf(out, "  \"cubic_bridgeless\": %s,\n  \"note\": %s,\n",
                  r.matched->cubic_bridgeless ? "true" : "false",
                  json_string(r.matched->note).c_str());

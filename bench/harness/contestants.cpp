@@ -38,7 +38,7 @@ Measures breadth_first_search(const BenchInput& input, std::uint64_t) {
 // petersen's own algorithms, through the front door (the graph was validated once, up front).
 Measures petersen_algorithm(const BenchInput& input, Algorithm algorithm, Augment augment,
                             std::uint64_t seed) {
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       input.dual.graph,
       {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
   require_perfect(input.dual.graph, result.matching);
@@ -137,7 +137,7 @@ std::vector<Contestant> all_contestants(std::uint32_t frink_max_nodes) {
                                                        {Algorithm::sg, Augment::faithful},
                                                        {Algorithm::automatic, Augment::local},
                                                        {Algorithm::ps, Augment::faithful}};
-  for (const auto [algorithm, augment] : greedy_rows) {
+  for (const auto& [algorithm, augment] : greedy_rows) {
     const std::string name =
         std::string(to_string(algorithm)) + "-" + std::string(to_string(augment));
     list.push_back({name, algorithm == Algorithm::sg ? "SG" : "PS", true, false, 0xFFFFFFFFu,

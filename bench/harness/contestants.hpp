@@ -19,7 +19,7 @@ struct BenchInput {
 };
 
 struct Contestant {
-  std::string name;        ///< e.g. "ps-local", "lemon", "bfs"
+  std::string name;        ///< e.g. "auto-local", "lemon", "bfs"
   std::string paper_name;  ///< the paper's name for it ("SG", "PS", "DS", "LRS"), or empty
   bool seeded = false;     ///< runs differ by seed (randomized order), as SG and PS in the paper
   bool floor = false;      ///< the BFS every total is compared with

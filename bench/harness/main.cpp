@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
   app.add_flag("--no-meshes", no_meshes, "leave out the shared meshes");
   app.add_option("--families", families, "family members, e.g. A5,B5 (overrides the set's)");
   app.add_option("--doubling", doubling, "steps of the doubling series (65,536 triangles x 2^k)");
-  app.add_option("--only", only, "contestants to run, e.g. bfs,ps-local,lemon (default: all)");
+  app.add_option("--only", only, "contestants to run, e.g. bfs,auto-local,lemon (default: all)");
   app.add_option("--runs", options.runs, "runs per contestant and input (median reported)");
   app.add_option("--cap", options.cap_seconds, "seconds per run before it is killed ('> cap')");
   app.add_option("--budget", budget, "no more repeats once a contestant's runs add up to this (s)");

@@ -1,7 +1,7 @@
 // Micro-benchmarks of the greedy initial pairings SG and PS (paper §3.1), and of auto's pairing in
 // PS's place (on these plates, in their generator's local order, the ordered sweep). They run
-// through the front door; only the initial pairing's own time (Stats::initial_seconds) is
-// reported.
+// through the front door; only the initial pairing's own time
+// (PerfectMatchingStats::initial_seconds) is reported.
 
 #include <benchmark/benchmark.h>
 
@@ -17,7 +17,7 @@ void greedy(benchmark::State& state, Algorithm algorithm) {
   std::uint64_t seed = 1;
   double unpaired = 0;
   for (auto _ : state) {
-    const Result result =
+    const PerfectMatchingResult result =
         perfect_matching(graph, {.algorithm = algorithm, .seed = seed++, .validate = false});
     state.SetIterationTime(result.stats.initial_seconds);
     unpaired += result.stats.unpaired_after_initial;

@@ -17,7 +17,8 @@ void reductions(benchmark::State& state, Algorithm chooser) {
   double count = 0;
   for (auto _ : state) {
     try {
-      const Result result = perfect_matching(graph, {.algorithm = chooser, .validate = false});
+      const PerfectMatchingResult result =
+          perfect_matching(graph, {.algorithm = chooser, .validate = false});
       state.SetIterationTime(result.stats.initial_seconds);
       count += double(result.stats.reductions);
     } catch (const std::invalid_argument& e) {

@@ -37,9 +37,10 @@ std::optional<std::string> not_cubic(std::uint32_t node_count,
   return std::nullopt;
 }
 
-// Options::algorithm on a cubic graph, verified; false (and the bridge in `note`) if it has one.
+// PerfectMatchingOptions::algorithm on a cubic graph, verified; false (and the bridge in `note`) if
+// it has one.
 bool match_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 2>>& edges,
-                 const Options& options, AnyGraphMatching& result) {
+                 const PerfectMatchingOptions& options, AnyGraphMatching& result) {
   const CubicGraph graph = CubicGraph::from_edges(node_count, edges);
   Stopwatch validate;
   if (const std::optional<EdgeId> bridge = find_bridge(graph)) {
@@ -47,9 +48,9 @@ bool match_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 
     return false;
   }
   const double validate_seconds = validate.seconds();
-  Options without_check = options;
+  PerfectMatchingOptions without_check = options;
   without_check.validate = false;
-  Result matched = perfect_matching(graph, without_check);
+  PerfectMatchingResult matched = perfect_matching(graph, without_check);
   if (MatchingCheck check = verify_perfect_matching(graph, matched.matching); !check.ok()) {
     throw std::logic_error("internal error: " + std::string(to_string(options.algorithm)) +
                            " returned a matching that is not perfect: " + check.message);
@@ -64,7 +65,7 @@ bool match_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 
 
 // A maximum matching of the loop-free part, with its witness, verified.
 void match_general(std::uint32_t node_count, const std::vector<std::array<NodeId, 2>>& edges,
-                   const Options& options, AnyGraphMatching& result) {
+                   const PerfectMatchingOptions& options, AnyGraphMatching& result) {
   std::vector<std::array<NodeId, 2>> loop_free;
   std::vector<EdgeId> id_of;  // the input's id of each loop-free edge
   for (EdgeId e = 0; e < edges.size(); ++e) {
@@ -110,7 +111,7 @@ void check_edge_list(std::uint32_t node_count,
 
 AnyGraphMatching match_any_graph(std::uint32_t node_count,
                                  const std::vector<std::array<std::uint32_t, 2>>& edges,
-                                 const Options& options) {
+                                 const PerfectMatchingOptions& options) {
   check_edge_list(node_count, edges);
   AnyGraphMatching result;
   if (std::optional<std::string> why = not_cubic(node_count, edges)) {

@@ -23,7 +23,7 @@ constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::loca
 
 // The caller's peer (LEMON's MaxMatching from petersen::lemon_peer) on the graph's own arrays:
 // a one-step algorithm, so all of it is "initial".
-void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) {
+void match_with_peer(const CubicGraph& graph, PeerMatcher peer, PerfectMatchingResult& result) {
   Stopwatch clock;
   peer(graph.node_count(), graph.edge_ends().data(), graph.edge_count(),
        result.matching.mate_edge.data());
@@ -36,7 +36,8 @@ void match_with_peer(const CubicGraph& graph, PeerMatcher peer, Result& result) 
 // pair_in_ps_place (greedy.hpp): the ordered sweep, Schrijver's exact matching where the sweep
 // leaves nodes (on a bipartite graph PS leaves patches of one colour that cost the augmentation
 // 20 BFS passes: the regular plates), PS where neither stands; Algorithm::ps runs PS alone.
-void match_greedily_then_augment(const CubicGraph& graph, const Options& options, Result& result) {
+void match_greedily_then_augment(const CubicGraph& graph, const PerfectMatchingOptions& options,
+                                 PerfectMatchingResult& result) {
   Stopwatch initial;
   std::optional<NeighbourTable> table;
   if (options.algorithm == Algorithm::sg) {
@@ -61,7 +62,8 @@ void match_greedily_then_augment(const CubicGraph& graph, const Options& options
 }
 
 // Frink's reductions (paper §3.2, Appendix A): a one-step algorithm, all of it "initial".
-void match_by_reductions(const CubicGraph& graph, const Options& options, Result& result) {
+void match_by_reductions(const CubicGraph& graph, const PerfectMatchingOptions& options,
+                         PerfectMatchingResult& result) {
   const ReductionChooser chooser = options.algorithm == Algorithm::frink ? ReductionChooser::frink
                                    : options.algorithm == Algorithm::ds  ? ReductionChooser::ds
                                                                          : ReductionChooser::gw;
@@ -101,7 +103,8 @@ std::optional<Augment> parse_augment(std::string_view name) {
   return std::nullopt;
 }
 
-Result perfect_matching(const CubicGraph& graph, const Options& options) {
+PerfectMatchingResult perfect_matching(const CubicGraph& graph,
+                                       const PerfectMatchingOptions& options) {
   if (options.algorithm == Algorithm::lrs) {
     throw std::invalid_argument(
         "perfect_matching: lrs contracts and flips a triangulation, so it needs a mesh "
@@ -109,10 +112,11 @@ Result perfect_matching(const CubicGraph& graph, const Options& options) {
   }
   if (options.algorithm == Algorithm::lemon && options.peer == nullptr) {
     throw std::invalid_argument(
-        "perfect_matching: lemon is a comparison peer the core does not link; set Options::peer "
+        "perfect_matching: lemon is a comparison peer the core does not link; set "
+        "PerfectMatchingOptions::peer "
         "(petersen::lemon_peer::maximum_matching, target petersen::lemon_peer)");
   }
-  Result result{Matching(graph.node_count()), {}};
+  PerfectMatchingResult result{Matching(graph.node_count()), {}};
   if (options.validate) {
     Stopwatch clock;
     validate_bridgeless(graph);

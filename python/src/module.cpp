@@ -246,9 +246,9 @@ std::vector<std::int64_t> matched_edges(const std::vector<std::array<NodeId, 2>>
 }
 
 // The options of perfect_matching and maximum_matching; lemon runs the peer.
-Options graph_options(const std::string& algorithm, const std::string& augment,
-                      std::uint64_t seed) {
-  Options options;
+PerfectMatchingOptions graph_options(const std::string& algorithm, const std::string& augment,
+                                     std::uint64_t seed) {
+  PerfectMatchingOptions options;
   options.algorithm = algorithm_of(algorithm);
   options.augment = augment_of(augment);
   options.seed = seed;
@@ -259,13 +259,13 @@ Options graph_options(const std::string& algorithm, const std::string& augment,
 py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle& edges,
                                               const std::string& algorithm,
                                               const std::string& augment, std::uint64_t seed) {
-  const Options options = graph_options(algorithm, augment, seed);
+  const PerfectMatchingOptions options = graph_options(algorithm, augment, seed);
   const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
   std::vector<std::int64_t> matched;
   {
     py::gil_scoped_release release;
     const CubicGraph graph = CubicGraph::from_edges(n, list);
-    const Result result = perfect_matching(graph, options);
+    const PerfectMatchingResult result = perfect_matching(graph, options);
     const MatchingCheck check = verify_perfect_matching(graph, result.matching);
     if (!check.ok()) throw std::logic_error("the matching failed the verifier: " + check.message);
     matched = matched_edges(list, result.matching.mate_edge);
@@ -279,7 +279,7 @@ py::array_t<std::int64_t> perfect_matching_py(std::uint32_t n, const py::handle&
 py::tuple maximum_matching_py(std::uint32_t n, const py::handle& edges,
                               const std::string& algorithm, const std::string& augment,
                               std::uint64_t seed) {
-  const Options options = graph_options(algorithm, augment, seed);
+  const PerfectMatchingOptions options = graph_options(algorithm, augment, seed);
   const std::vector<std::array<NodeId, 2>> list = node_pairs(n, edges);
   std::vector<std::int64_t> matched;
   AnyGraphMatching result;

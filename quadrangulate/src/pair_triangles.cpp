@@ -19,7 +19,7 @@ namespace petersen::quad_detail {
 
 namespace {
 
-void add_run(Stats& total, const Stats& run) {
+void add_run(PerfectMatchingStats& total, const PerfectMatchingStats& run) {
   total.initial_seconds += run.initial_seconds;
   total.augment_seconds += run.augment_seconds;
   total.unpaired_after_initial += run.unpaired_after_initial;
@@ -133,11 +133,11 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
   if (costs.empty()) {
     // No bridge test: a bridge would leave a set of triangles whose only boundary is one edge,
     // but a boundary (mod 2) has no ends, and one edge has two.
-    Result result = perfect_matching(cubic, {.algorithm = algorithm,
-                                             .augment = options.augment,
-                                             .seed = options.seed,
-                                             .validate = false,
-                                             .peer = options.peer});
+    PerfectMatchingResult result = perfect_matching(cubic, {.algorithm = algorithm,
+                                                            .augment = options.augment,
+                                                            .seed = options.seed,
+                                                            .validate = false,
+                                                            .peer = options.peer});
     add_run(stats.matching, result.stats);
     matching = std::move(result.matching);
     clock.lap();

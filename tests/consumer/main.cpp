@@ -11,7 +11,7 @@ int check_rapidcheck_property() {
   const bool ok =
       rc::check("every arbitrary cubic bridgeless graph has a verified perfect matching",
                 [](const petersen::CubicGraph& g) {
-                  const petersen::Result r = petersen::perfect_matching(g);
+                  const petersen::PerfectMatchingResult r = petersen::perfect_matching(g);
                   RC_ASSERT(petersen::verify_perfect_matching(g, r.matching).ok());
                 });
   return ok ? 0 : 1;

@@ -30,7 +30,7 @@ void check_pipeline(const PolygonMesh& mesh, std::uint32_t genus) {
       RC_ASSERT(dual.side(e, 0) == 3 * t + k || dual.side(e, 1) == 3 * t + k);
     }
   }
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       dual.graph, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const MatchingCheck matching = verify_perfect_matching(dual.graph, result.matching);
   RC_ASSERT(matching.ok());

@@ -120,7 +120,7 @@ TEST(QuadQuality, PairableEdgeCostIsTheCostOfTheQuadsFromAMatchingOfTheDual) {
     ASSERT_EQ(graph.edge_ends[2 * e + 1], dual.graph.endpoints(e)[1]);
   }
   const HugeVector<double> cost = pairable_edge_quality(graph, mesh);
-  const Result r = perfect_matching(dual.graph);
+  const PerfectMatchingResult r = perfect_matching(dual.graph);
   const PolygonMesh quads = testing::quads_of_matching(mesh, dual.graph, r.matching);
   std::size_t q = 0;
   std::size_t checked = 0;

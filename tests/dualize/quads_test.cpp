@@ -44,7 +44,7 @@ TEST(Quads, KeepTheOrientationOfBothTriangles) {
 TEST(Quads, LemonMatchingGivesAValidQuadMesh) {
   const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   const PolygonMesh quads = quads_of_matching(mesh, dual, result.matching);
   EXPECT_EQ(quads.face_count(), 4u);

@@ -53,7 +53,7 @@ TEST(SharedMeshes, ClosedOnesConvertThroughLemon) {
     const PolygonMesh mesh = read_mesh(*dir + "/" + expected.file);
     const CubicGraph dual = dual_graph(mesh);
     EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-    const Result result = perfect_matching(
+    const PerfectMatchingResult result = perfect_matching(
         dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
     ASSERT_TRUE(verify_perfect_matching(dual, result.matching).ok());
     EXPECT_EQ(
@@ -105,7 +105,7 @@ TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
   }
   const CubicGraph dual = dual_graph(cow);
   EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-  const Result result = perfect_matching(
+  const PerfectMatchingResult result = perfect_matching(
       dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   EXPECT_EQ(testing::quad_mesh_problem(cow, testing::quads_of_matching(cow, dual, result.matching)),
             "");

@@ -34,7 +34,7 @@ void expect(bool ok, const char* what) {
 // A perfect matching of a graph whose arrays are several huge pages each, checked.
 bool match_a_large_graph() {
   const petersen::CubicGraph graph = petersen::random_cubic_bridgeless(1u << 18, 7);
-  const petersen::Result result = petersen::perfect_matching(graph);
+  const petersen::PerfectMatchingResult result = petersen::perfect_matching(graph);
   return petersen::verify_perfect_matching(graph, result.matching).ok();
 }
 

@@ -30,7 +30,8 @@ RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
   for (Algorithm algorithm : kGreedy) {
     for (Augment augment : kVariants) {
-      Result r = perfect_matching(g, {.algorithm = algorithm, .augment = augment, .seed = seed});
+      PerfectMatchingResult r =
+          perfect_matching(g, {.algorithm = algorithm, .augment = augment, .seed = seed});
       MatchingCheck check = verify_perfect_matching(g, r.matching);
       RC_ASSERT(check.ok());
       RC_ASSERT(g.node_count() / 2 == lemon);
@@ -41,12 +42,12 @@ RC_GTEST_PROP(GreedyThenAugment, IsPerfectAndAsLargeAsLemonAndBoost, ()) {
 
 RC_GTEST_PROP(GreedyThenAugment, SameSeedSameMatching, ()) {
   CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
-  const Options options{
+  const PerfectMatchingOptions options{
       .algorithm = *rc::gen::element(Algorithm::sg, Algorithm::ps, Algorithm::automatic),
       .augment = *rc::gen::element(Augment::local, Augment::faithful),
       .seed = *rc::gen::arbitrary<std::uint64_t>()};
-  Result first = perfect_matching(g, options);
-  Result second = perfect_matching(g, options);
+  PerfectMatchingResult first = perfect_matching(g, options);
+  PerfectMatchingResult second = perfect_matching(g, options);
   RC_ASSERT(verify_perfect_matching(g, first.matching).ok());
   RC_ASSERT(first.matching.mate_edge == second.matching.mate_edge);
 }

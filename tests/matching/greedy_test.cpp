@@ -201,7 +201,8 @@ RC_GTEST_PROP(Schrijver, BipartiteGraphsArePairedPerfectlyBeforeAugmentingAtBoth
   // By the sweep where the numbering is local and it pairs every node, else by Schrijver's walk:
   // nothing is left to augment either way, and both doors choose alike.
   const CubicGraph g = *bipartite_cubic_graphs();
-  const Result r = perfect_matching(g, {.algorithm = Algorithm::automatic, .validate = false});
+  const PerfectMatchingResult r =
+      perfect_matching(g, {.algorithm = Algorithm::automatic, .validate = false});
   RC_ASSERT(r.stats.schrijver != r.stats.ordered_sweep);
   RC_ASSERT(r.stats.unpaired_after_initial == 0u);
   RC_ASSERT(r.stats.augmenting_paths == 0u);
@@ -232,7 +233,7 @@ TEST(Schrijver, TakesOverWhereTheSweepLeavesNodesOfABipartiteGraph) {
     EXPECT_TRUE(place.schrijver);
     EXPECT_FALSE(place.ordered_sweep);
     EXPECT_TRUE(verify_perfect_matching(g, m).ok());
-    const Result r = perfect_matching(g, {.validate = false});
+    const PerfectMatchingResult r = perfect_matching(g, {.validate = false});
     EXPECT_EQ(r.stats.unpaired_after_initial, 0u);
     EXPECT_EQ(r.stats.augmenting_paths, 0u);
     EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok());
@@ -247,16 +248,16 @@ TEST(Schrijver, MatchesAShuffledPlateAndLeavesThePetersenGraphToTheSweep) {
   // In the generator's order the sweep pairs it perfectly; shuffled, the sweep refuses the order
   // and Schrijver's walk matches it.
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const Result in_order = perfect_matching(plate);
+  const PerfectMatchingResult in_order = perfect_matching(plate);
   EXPECT_TRUE(in_order.stats.ordered_sweep);
   EXPECT_EQ(in_order.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_matching(plate, in_order.matching).ok());
   const CubicGraph mixed = shuffled(plate, 3);
-  const Result r = perfect_matching(mixed);
+  const PerfectMatchingResult r = perfect_matching(mixed);
   EXPECT_TRUE(r.stats.schrijver);
   EXPECT_EQ(r.stats.augmenting_paths, 0u);
   EXPECT_TRUE(verify_perfect_matching(mixed, r.matching).ok());
-  const Result p = perfect_matching(petersen_graph());
+  const PerfectMatchingResult p = perfect_matching(petersen_graph());
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), p.matching).ok());
 }
@@ -264,7 +265,7 @@ TEST(Schrijver, MatchesAShuffledPlateAndLeavesThePetersenGraphToTheSweep) {
 // Algorithm::ps runs the paper's PS alone: on the plate it leaves nodes to augment.
 TEST(Schrijver, IsSkippedByPaperPS) {
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const Result r = perfect_matching(plate, {.algorithm = Algorithm::ps});
+  const PerfectMatchingResult r = perfect_matching(plate, {.algorithm = Algorithm::ps});
   EXPECT_FALSE(r.stats.schrijver);
   EXPECT_GT(r.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
@@ -344,7 +345,7 @@ TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
   const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
   for (const std::uint64_t seed : {1u, 2u}) {
-    const Result r = perfect_matching(plate, {.seed = seed});
+    const PerfectMatchingResult r = perfect_matching(plate, {.seed = seed});
     EXPECT_TRUE(r.stats.ordered_sweep);
     EXPECT_FALSE(r.stats.schrijver);
     EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
@@ -366,11 +367,11 @@ TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
   EXPECT_FALSE(place.schrijver);
   EXPECT_EQ(place.unpaired, by_ps.unmatched_count());
   EXPECT_TRUE(verify_matching(mixed, by_ps).ok());
-  const Result ps = perfect_matching(mixed);
+  const PerfectMatchingResult ps = perfect_matching(mixed);
   EXPECT_FALSE(ps.stats.ordered_sweep);
   EXPECT_TRUE(verify_perfect_matching(mixed, ps.matching).ok());
   // The Petersen graph (not bipartite, ten nodes: any numbering is local) goes to the sweep.
-  const Result petersen = perfect_matching(petersen_graph());
+  const PerfectMatchingResult petersen = perfect_matching(petersen_graph());
   EXPECT_FALSE(petersen.stats.schrijver);
   EXPECT_TRUE(petersen.stats.ordered_sweep);
   EXPECT_TRUE(verify_perfect_matching(petersen_graph(), petersen.matching).ok());
@@ -384,7 +385,7 @@ TEST(Algorithms, AutoPairsInPSsPlaceAndPsRunsThePapersPSAlone) {
   EXPECT_TRUE(perfect_matching(plate, {.algorithm = Algorithm::automatic}).stats.ordered_sweep);
   EXPECT_TRUE(perfect_matching(mixed, {.algorithm = Algorithm::automatic}).stats.schrijver);
   for (const CubicGraph* g : {&plate, &mixed}) {
-    const Result r = perfect_matching(*g, {.algorithm = Algorithm::ps, .seed = 7});
+    const PerfectMatchingResult r = perfect_matching(*g, {.algorithm = Algorithm::ps, .seed = 7});
     EXPECT_FALSE(r.stats.ordered_sweep);
     EXPECT_FALSE(r.stats.schrijver);
     EXPECT_TRUE(verify_perfect_matching(*g, r.matching).ok());

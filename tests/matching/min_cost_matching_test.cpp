@@ -271,7 +271,7 @@ RC_GTEST_PROP(MinCostVerifier, RejectsACostlierPerfectMatching, ()) {
   const CubicGraph g = any_cubic_bridgeless();
   const std::vector<Cost> costs = random_costs(g.edge_count(), 0, 1000);
   const MinCostResult r = min_cost_perfect_matching(g, costs);
-  const Result other = perfect_matching(g, {.algorithm = Algorithm::automatic});
+  const PerfectMatchingResult other = perfect_matching(g, {.algorithm = Algorithm::automatic});
   Cost other_cost = 0;
   for (EdgeId e = 0; e < g.edge_count(); ++e)
     if (other.matching.mate_edge[g.endpoints(e)[0]] == e) other_cost += costs[e];

@@ -28,7 +28,7 @@ RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsAutoAndPsDo, ()) {
   const HugeVector<NodeId> rows = rows_of(g);
   const Algorithm algorithm = *rc::gen::element(Algorithm::automatic, Algorithm::ps);
   for (Augment augment : {Augment::local, Augment::faithful}) {
-    const Result full = perfect_matching(
+    const PerfectMatchingResult full = perfect_matching(
         g, {.algorithm = algorithm, .augment = augment, .seed = seed, .validate = false});
     const PartnerResult lean =
         perfect_partners(rows, {.algorithm = algorithm, .augment = augment, .seed = seed});

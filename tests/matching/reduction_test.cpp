@@ -100,7 +100,7 @@ TEST(Reductions, EveryEdgeOfTheSmallFamiliesCanBeForbidden) {
 TEST(Reductions, FrontDoorMatchesDisconnectedGraphs) {
   const CubicGraph g = disjoint_union(petersen_graph(), necklace(3));
   for (Algorithm algorithm : {Algorithm::frink, Algorithm::ds, Algorithm::gw}) {
-    Result r = perfect_matching(g, {.algorithm = algorithm});
+    PerfectMatchingResult r = perfect_matching(g, {.algorithm = algorithm});
     EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok());
     EXPECT_EQ(r.stats.reductions, (g.node_count() - 4) / 2);
   }

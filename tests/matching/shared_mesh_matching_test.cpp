@@ -26,7 +26,8 @@ TEST(SharedMeshes, SgAndPsMakePerfectMatchings) {
         // Faithful SG costs O(k·n) with k ≈ 12 % of n: keep it to the small meshes.
         if (algorithm == Algorithm::sg && augment == Augment::faithful && mesh.triangles > 20'000)
           continue;
-        Result r = perfect_matching(g, {.algorithm = algorithm, .augment = augment, .seed = 3});
+        PerfectMatchingResult r =
+            perfect_matching(g, {.algorithm = algorithm, .augment = augment, .seed = 3});
         EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok())
             << to_string(algorithm) << "+" << to_string(augment);
         const double paired = r.stats.paired_percent(g.node_count());

@@ -59,7 +59,7 @@ TEST(Algorithms, NamesRoundTrip) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }
   EXPECT_EQ(to_string(Algorithm::automatic), "auto");
-  EXPECT_EQ(Options{}.algorithm, Algorithm::automatic);
+  EXPECT_EQ(PerfectMatchingOptions{}.algorithm, Algorithm::automatic);
   EXPECT_FALSE(parse_algorithm("blossom").has_value());
   EXPECT_EQ(parse_augment("faithful"), Augment::faithful);
 }
@@ -92,7 +92,7 @@ TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
 RC_GTEST_PROP(PerfectMatching, LemonIsPerfectAndAgreesWithBoost, ()) {
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 150) * 2;
   CubicGraph g = random_cubic_bridgeless(n, *rc::gen::arbitrary<std::uint64_t>());
-  Result result =
+  PerfectMatchingResult result =
       perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
   MatchingCheck check = verify_perfect_matching(g, result.matching);
   RC_ASSERT(check.ok());

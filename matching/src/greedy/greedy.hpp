@@ -68,8 +68,9 @@ inline PsPlaceOptions ps_place_options(Algorithm algorithm, std::uint64_t seed) 
 
 /// What made the initial pairing in PS's place, and what it left.
 struct PsPlace {
-  bool ordered_sweep = false;  ///< the sweep's pairing stands (Stats::ordered_sweep)
-  bool schrijver = false;      ///< Schrijver's perfect matching replaced it (Stats::schrijver)
+  bool ordered_sweep = false;  ///< the sweep's pairing stands (PerfectMatchingStats::ordered_sweep)
+  bool schrijver =
+      false;  ///< Schrijver's perfect matching replaced it (PerfectMatchingStats::schrijver)
   std::uint32_t unpaired = 0;
 };
 

@@ -71,9 +71,9 @@ struct IndexedEdges {
 /// edges then number fewer than 3 makes the graph non-cubic, as it should). Copies the graph into
 /// an edge list: O(n + m) time and memory beside match_any_graph (any_graph.hpp).
 template <class Graph, class MateMap, class VertexIndexMap,
-          std::enable_if_t<!std::is_convertible_v<VertexIndexMap, Options>, int> = 0>
+          std::enable_if_t<!std::is_convertible_v<VertexIndexMap, PerfectMatchingOptions>, int> = 0>
 bool perfect_matching(const Graph& g, MateMap mate, VertexIndexMap vertex_index,
-                      const Options& options = {}) {
+                      const PerfectMatchingOptions& options = {}) {
   const adaptor_detail::IndexedEdges<Graph, VertexIndexMap> indexed(g, vertex_index);
   const AnyGraphMatching matched =
       match_any_graph(static_cast<std::uint32_t>(indexed.vertex_of.size()), indexed.edges, options);
@@ -83,7 +83,7 @@ bool perfect_matching(const Graph& g, MateMap mate, VertexIndexMap vertex_index,
 
 /// The same with the graph's own vertex_index property map (as Boost's matching has).
 template <class Graph, class MateMap>
-bool perfect_matching(const Graph& g, MateMap mate, const Options& options = {}) {
+bool perfect_matching(const Graph& g, MateMap mate, const PerfectMatchingOptions& options = {}) {
   return perfect_matching(g, mate, get(boost::vertex_index, g), options);
 }
 

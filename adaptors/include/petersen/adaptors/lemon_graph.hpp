@@ -60,7 +60,7 @@ struct LemonIndexedEdges {
 /// and memory beside match_any_graph (any_graph.hpp).
 template <class GR>
 bool perfect_matching(const GR& g, typename GR::template NodeMap<typename GR::Arc>& mate,
-                      const Options& options = {}) {
+                      const PerfectMatchingOptions& options = {}) {
   const adaptor_detail::LemonIndexedEdges<GR> indexed(g);
   const AnyGraphMatching matched =
       match_any_graph(static_cast<std::uint32_t>(indexed.node_of.size()), indexed.edges, options);

@@ -17,8 +17,8 @@ struct AnyGraphMatching {
   std::vector<std::uint32_t> mate_edge;
   std::uint32_t size = 0;  ///< matched edges
   bool perfect = false;    ///< every node matched
-  /// The graph is cubic and bridgeless (Petersen's theorem), so Options::algorithm found a
-  /// perfect matching. Otherwise the matching is a maximum one and `note` says why.
+  /// The graph is cubic and bridgeless (Petersen's theorem), so PerfectMatchingOptions::algorithm
+  /// found a perfect matching. Otherwise the matching is a maximum one and `note` says why.
   bool cubic_bridgeless = false;
   /// Why the graph is not cubic and bridgeless: its first node whose degree is not 3 (a loop
   /// counts twice), its first loop, or a bridge. Empty when it is.
@@ -27,9 +27,10 @@ struct AnyGraphMatching {
   /// ids) for which the matching leaves exactly odd(G − A) − |A| nodes free
   /// (verify_maximum_matching, tutte_berge.hpp). Empty for a cubic bridgeless graph.
   std::vector<std::uint32_t> tutte_set;
-  /// Of Options::algorithm on a cubic bridgeless graph. On any other graph augment_seconds is
-  /// the whole maximum matching (its greedy start included) and the counts are the augmentation's.
-  Stats stats;
+  /// Of PerfectMatchingOptions::algorithm on a cubic bridgeless graph. On any other graph
+  /// augment_seconds is the whole maximum matching (its greedy start included) and the counts are
+  /// the augmentation's.
+  PerfectMatchingStats stats;
 };
 
 /// A perfect matching by `options.algorithm` when the (multi)graph is cubic and bridgeless, and
@@ -42,7 +43,7 @@ struct AnyGraphMatching {
 /// algorithm.
 AnyGraphMatching match_any_graph(std::uint32_t node_count,
                                  const std::vector<std::array<std::uint32_t, 2>>& edges,
-                                 const Options& options = {});
+                                 const PerfectMatchingOptions& options = {});
 
 /// What cheapest_matching_any_graph found, in the edge list's own ids.
 struct AnyGraphCheapestMatching {

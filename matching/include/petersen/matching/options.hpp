@@ -1,7 +1,7 @@
 #pragma once
 // What perfect_matching is asked to do and what it reports: the algorithms, the options and the
 // statistics. C++17, like everything it includes, so that the LEMON adaptor (whose Debian headers
-// do not compile as C++20) can take an Options.
+// do not compile as C++20) can take a PerfectMatchingOptions.
 
 #include <cstdint>
 #include <optional>
@@ -11,18 +11,19 @@ namespace petersen {
 
 enum class Algorithm {
   automatic,  ///< "auto": the fastest pairing in PS's place (the ordered sweep where the numbering
-              ///< is local, Stats::ordered_sweep; Schrijver's exact matching on a bipartite graph
-              ///< where that leaves nodes, Stats::schrijver; PS where neither stands), then
-              ///< augmenting paths
-  sg,         ///< simple greedy pairing (paper §3.1), then augmenting paths
-  ps,         ///< Puli–Segal priority greedy as the paper describes it (§3.1), then augmenting
-              ///< paths
-  ds,         ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
-  gw,         ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
-  frink,      ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
-  lemon,      ///< the comparison peer (LEMON's MaxMatching): runs Options::peer, see there
-  lrs,        ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
-              ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
+              ///< is local, PerfectMatchingStats::ordered_sweep; Schrijver's exact matching on a
+              ///< bipartite graph where that leaves nodes, PerfectMatchingStats::schrijver; PS
+              ///< where neither stands), then augmenting paths
+  sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
+  ps,     ///< Puli–Segal priority greedy as the paper describes it (§3.1), then augmenting
+          ///< paths
+  ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
+  gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
+  frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
+  lemon,  ///< the comparison peer (LEMON's MaxMatching): runs PerfectMatchingOptions::peer, see
+          ///< there
+  lrs,    ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
+          ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
 };
 
 /// How augmenting paths are searched (paper §3.1, Tarjan's procedure).
@@ -43,7 +44,7 @@ std::optional<Augment> parse_augment(std::string_view name);
 using PeerMatcher = void (*)(std::uint32_t node_count, const std::uint32_t* edge_ends,
                              std::uint32_t edge_count, std::uint32_t* mate_edge);
 
-struct Options {
+struct PerfectMatchingOptions {
   Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
@@ -58,7 +59,7 @@ struct Options {
 };
 
 /// Statistics of one run, in the columns of the paper's Table 4.3 plus per-algorithm counts.
-struct Stats {
+struct PerfectMatchingStats {
   double validate_seconds = 0;
   double initial_seconds = 0;  ///< (a) initial pairing, or the whole one-step algorithm
   std::uint32_t unpaired_after_initial = 0;  ///< (c)

@@ -6,15 +6,16 @@
 
 namespace petersen {
 
-struct Result {
+struct PerfectMatchingResult {
   Matching matching;
-  Stats stats;
+  PerfectMatchingStats stats;
 };
 
 /// A perfect matching of a cubic bridgeless (multi)graph, by the chosen algorithm. Components are
 /// matched independently. Throws GraphError if `options.validate` and the graph has a bridge,
 /// std::invalid_argument for Algorithm::lrs (which works on a triangulation, not a graph) and for
 /// Algorithm::lemon without `options.peer`.
-Result perfect_matching(const CubicGraph& graph, const Options& options = {});
+PerfectMatchingResult perfect_matching(const CubicGraph& graph,
+                                       const PerfectMatchingOptions& options = {});
 
 }  // namespace petersen

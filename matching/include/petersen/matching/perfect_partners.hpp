@@ -22,7 +22,7 @@ struct PartnerResult {
   /// partner[v]: the node matched to v; kNoNode for a node left free (only when the graph is not
   /// bridgeless: Petersen's theorem matches every node of a cubic bridgeless graph).
   HugeVector<NodeId> partner;
-  Stats stats;
+  PerfectMatchingStats stats;
 };
 
 /// PS and Tarjan's augmenting paths (Algorithm::automatic or ps of perfect_matching, the same

@@ -82,8 +82,9 @@ struct QuadOptions {
   /// pairs cross it. Any other cause throws std::invalid_argument: the mesh's structure and the
   /// caller's own cuts are never crossed.
   std::vector<CutCause> cross = {};
-  /// The matcher Algorithm::lemon runs (Options::peer): petersen::lemon_peer::maximum_matching
-  /// for the comparison with LEMON; left empty, Algorithm::lemon throws std::invalid_argument.
+  /// The matcher Algorithm::lemon runs (PerfectMatchingOptions::peer):
+  /// petersen::lemon_peer::maximum_matching for the comparison with LEMON; left empty,
+  /// Algorithm::lemon throws std::invalid_argument.
   PeerMatcher peer = nullptr;
   /// Threads for the phases that split into independent parts (grouping the halfedges and
   /// classifying the edges, the quads' measure, the minimum-cost matching's short searches); 0:
@@ -126,7 +127,7 @@ struct QuadStats {
   std::uint64_t nonconvex_quads = 0;
   /// Of `algorithm` on the closed components (the paper's columns), plus the augmentation of the
   /// other components in augmenting_paths, blossoms and nodes_labelled.
-  Stats matching;
+  PerfectMatchingStats matching;
   std::uint64_t flipped_edges = 0;         ///< lrs: edges of K that are not input edges
   std::uint64_t irreducible_vertices = 0;  ///< lrs: |T′|, summed over components
   std::uint64_t lrs_fallback_components = 0;

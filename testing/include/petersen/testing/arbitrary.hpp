@@ -3,7 +3,7 @@
 //
 //   #include <petersen/testing/arbitrary.hpp>
 //   RC_GTEST_PROP(MyMatching, IsPerfect, (const petersen::CubicGraph& g)) {
-//     const petersen::Result r = petersen::perfect_matching(g);
+//     const petersen::PerfectMatchingResult r = petersen::perfect_matching(g);
 //     RC_ASSERT(petersen::verify_perfect_matching(g, r.matching).ok());
 //   }
 //
