@@ -1,6 +1,5 @@
 #include "match_command.hpp"
 
-#include <chrono>
 #include <cinttypes>
 #include <cstdio>
 #include <memory>
@@ -10,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "petersen/io/file_bytes.hpp"
 #include "json_text.hpp"
+#include "petersen/graph/stopwatch.hpp"
+#include "petersen/io/file_bytes.hpp"
 #include "petersen/io/read_graph.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
@@ -19,10 +19,6 @@
 namespace petersen::cli {
 
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
 
 // The matched edges as "u v" lines in the input's ids, at their first ends in node order.
 std::string matched_edge_lines(const GraphFile& graph, std::span<const EdgeId> mate_edge) {
@@ -137,7 +133,7 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
 }
 
 int run_match(const MatchArgs& args) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Stopwatch();
   std::optional<GraphFormat> format;
   if (!args.format.empty()) {
     format = parse_graph_format(args.format);
@@ -162,8 +158,8 @@ int run_match(const MatchArgs& args) {
     throw GraphError(args.input +
                      ": --objective cost needs a cost on every edge line ('e U V C' or 'U V C')");
   }
-  const double read_seconds = seconds_since(start);
-  auto clock = std::chrono::steady_clock::now();
+  const double read_seconds = start.seconds();
+  auto clock = Stopwatch();
   // The matching by --algorithm, unless only the cheapest is wanted (it finds the maximum size
   // itself): with --objective cost, only to tell first whether a perfect one exists. Both
   // verify what they return (a perfect matching; a maximum one by its Tutte-Berge witness; the
@@ -177,12 +173,12 @@ int run_match(const MatchArgs& args) {
                                .peer = &lemon_peer::maximum_matching});
   }
   std::optional<AnyGraphCheapestMatching> cheapest;
-  const auto cost_clock = std::chrono::steady_clock::now();
+  const auto cost_clock = Stopwatch();
   if (by_cost && (!matched || matched->perfect)) {
     cheapest = cheapest_matching_any_graph(graph.node_count, graph.edges, graph.costs, 0);
   }
-  const double cost_seconds = seconds_since(cost_clock);
-  const double match_seconds = seconds_since(clock);
+  const double cost_seconds = cost_clock.seconds();
+  const double match_seconds = clock.seconds();
   const std::uint32_t size = cheapest ? cheapest->size : matched->size;
   const bool perfect = cheapest ? cheapest->perfect : matched->perfect;
   const std::uint64_t unmatched = std::uint64_t{graph.node_count} - 2 * std::uint64_t{size};
@@ -194,13 +190,13 @@ int run_match(const MatchArgs& args) {
                  args.input.c_str(), matched->note.c_str(), size, unmatched);
   }
   const bool write = perfect || !args.require_perfect;
-  clock = std::chrono::steady_clock::now();
+  clock = Stopwatch();
   if (write) {
     write_file_bytes(args.output, cheapest ? matched_edge_lines(graph, cheapest->mate_edge)
                                            : matched_edge_lines(graph, matched->mate_edge));
   }
-  const double write_seconds = seconds_since(clock);
-  const double total_seconds = seconds_since(start);
+  const double write_seconds = clock.seconds();
+  const double total_seconds = start.seconds();
 
   std::printf("input       %s (%s, %" PRIu32 " nodes, %zu edges)\n", args.input.c_str(),
               std::string(to_string(format ? *format : graph_format_of(args.input))).c_str(),

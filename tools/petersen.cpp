@@ -1,7 +1,6 @@
 // petersen: any mesh -> its triangles paired into quads on the same vertices; graphs -> matchings.
 
 #include <CLI/CLI.hpp>
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -10,14 +9,15 @@
 
 #include "keep_edges.hpp"
 #include "match_command.hpp"
-#include "petersen/mesh/mesh_report.hpp"
-#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/io/read_mesh.hpp"
+#include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/io/write_mesh.hpp"
 #include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/stopwatch.hpp"
+#include "petersen/io/read_mesh.hpp"
+#include "petersen/io/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
 #include "petersen/version.hpp"
@@ -25,19 +25,6 @@
 
 namespace petersen::cli {
 namespace {
-
-class Clock {
- public:
-  double lap() {
-    auto now = std::chrono::steady_clock::now();
-    double s = std::chrono::duration<double>(now - last_).count();
-    last_ = now;
-    return s;
-  }
-
- private:
-  std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
-};
 
 // Prints on stderr what a reader read past or a writer had no place for, one warning per kind of
 // thing, naming the file.
@@ -148,7 +135,7 @@ int quad(const QuadArgs& args) {
   // The tool writes the mesh and the stats, never the quads' sources: not asking for them lets
   // lrs free the input's corners early (12 bytes per triangle at its peak).
   report.options.sources = false;
-  Clock total, clock;
+  Stopwatch total, clock;
   PolygonMesh mesh = read_mesh_warning(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}

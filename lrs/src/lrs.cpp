@@ -1,6 +1,5 @@
 #include "petersen/lrs/lrs.hpp"
 
-#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -8,6 +7,7 @@
 #include "dual_rows.hpp"
 #include "expansion_step.hpp"
 #include "petersen/dualize/quad_of.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/perfect_partners.hpp"
 #include "triangles_by_corner.hpp"
 #include "triangulation.hpp"
@@ -15,12 +15,6 @@
 namespace petersen {
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double since(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
 
 // Contraction to T′ and expansion to K with M (paper §3.3, Algorithms 3.1–3.4), then K as its
 // dual's rows, M's partners and its triangles, the triangulation freed on the way. The
@@ -32,41 +26,41 @@ lrs::DualRows contract_and_expand(lrs::Triangulation tri, LrsStats& stats) {
   stats.faces = tri.live_faces();
   lrs::ExpansionResult expansion;
   {
-    auto start = Clock::now();
+    auto start = Stopwatch();
     const lrs::ContractionResult contraction = lrs::contract_to_irreducible(tri);
-    stats.contraction_seconds = since(start);
+    stats.contraction_seconds = start.seconds();
     stats.contractions = contraction.stack.size();
     stats.irreducible_vertices = tri.live_vertices();
     stats.irreducible_faces = tri.live_faces();
-    start = Clock::now();
+    start = Stopwatch();
     expansion = lrs::expand_and_match(tri, contraction.stack);
-    stats.expansion_seconds = since(start);
+    stats.expansion_seconds = start.seconds();
   }
-  const auto start = Clock::now();
+  const auto start = Stopwatch();
   stats.flipped_edges = expansion.flipped_edges;
   stats.unflips = expansion.unflips;
   for (int c = 0; c < 4; ++c) stats.expansion_cases[c] = expansion.cases[c];
   lrs::DualRows k = lrs::into_dual_rows(std::move(tri), std::move(expansion));
   stats.unpaired_after_expansion = k.unpaired;
-  stats.expansion_seconds += since(start);
+  stats.expansion_seconds += start.seconds();
   return k;
 }
 
 // Tarjan's augmenting paths pair the ℓ faces M leaves (§3.4); the matching is then verified
 // perfect on K's dual.
 void augment_and_verify(lrs::DualRows& k, Augment augment, LrsStats& stats) {
-  auto start = Clock::now();
+  auto start = Stopwatch();
   const AugmentStats augmented = augment_partners(k.rows, k.partner, augment);
   stats.augmenting_paths = augmented.augmenting_paths;
   stats.blossoms = augmented.blossoms;
   stats.nodes_labelled = augmented.nodes_labelled;
-  stats.augment_seconds = since(start);
-  start = Clock::now();
+  stats.augment_seconds = start.seconds();
+  start = Stopwatch();
   if (MatchingCheck check = verify_perfect_partners(k.rows, k.partner); !check.ok()) {
     throw std::logic_error("internal error: lrs returned a matching that is not perfect: " +
                            check.message);
   }
-  stats.verify_seconds = since(start);
+  stats.verify_seconds = start.seconds();
 }
 
 // One quad per pair of K's triangles, by quad_of: K is simplicial, so two of its triangles share
@@ -121,40 +115,40 @@ HugeVector<LrsQuad> pair_triangulation(lrs::Triangulation tri, std::span<const V
                                        LrsStats& stats) {
   lrs::DualRows k = contract_and_expand(std::move(tri), stats);
   augment_and_verify(k, options.augment, stats);
-  const auto start = Clock::now();
+  const auto start = Stopwatch();
   HugeVector<LrsQuad> quads = quads_of(std::move(k));
   if (options.sources) find_sources(corners, vertex_count, quads);
-  stats.quads_seconds = since(start);
+  stats.quads_seconds = start.seconds();
   return quads;
 }
 
 }  // namespace
 
 LrsPairing pair_closed_component_by_lrs(const PolygonMesh& component, const LrsOptions& options) {
-  const auto begin = Clock::now();
+  const auto begin = Stopwatch();
   LrsPairing pairing;
   lrs::Triangulation tri =
       lrs::Triangulation::from_mesh(component, lrs::Triangulation::Numbering::spatial);
-  pairing.stats.setup_seconds = since(begin);
+  pairing.stats.setup_seconds = begin.seconds();
   pairing.quads = pair_triangulation(std::move(tri), component.corners, component.positions.size(),
                                      options, pairing.stats);
-  pairing.stats.total_seconds = since(begin);
+  pairing.stats.total_seconds = begin.seconds();
   return pairing;
 }
 
 LrsPairing pair_closed_component_by_lrs(LrsDualInput input, const LrsOptions& options) {
-  const auto begin = Clock::now();
+  const auto begin = Stopwatch();
   LrsPairing pairing;
   lrs::Triangulation tri = lrs::Triangulation::from_dual(
       input.positions, input.corners, std::move(input.node_edges), std::move(input.edge_ends),
       input.connected ? lrs::Triangulation::Connectivity::connected
                       : lrs::Triangulation::Connectivity::unknown,
       options.sources ? std::function<void()>() : input.corners_read, options.threads);
-  pairing.stats.setup_seconds = since(begin);
+  pairing.stats.setup_seconds = begin.seconds();
   pairing.quads = pair_triangulation(std::move(tri), input.corners, input.positions.size(), options,
                                      pairing.stats);
   if (options.sources && input.corners_read) input.corners_read();
-  pairing.stats.total_seconds = since(begin);
+  pairing.stats.total_seconds = begin.seconds();
   return pairing;
 }
 

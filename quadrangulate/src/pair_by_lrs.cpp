@@ -102,7 +102,7 @@ void add_lrs_stats(const LrsStats& lrs, double elapsed, QuadStats& stats) {
 bool pair_component_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
                            std::span<const NodeId> nodes, HugeVector<VertexId>* releasable_corners,
                            const QuadOptions& options, std::vector<VertexId>& local,
-                           TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                           TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   if (mesh.attributes.has_corner_attributes() || mesh.attributes.has_face_attributes()) {
     // A triangle lrs's flips make has no input corners or face to take these from.
     refuse(stats,

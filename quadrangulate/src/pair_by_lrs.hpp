@@ -5,8 +5,8 @@
 #include <span>
 #include <vector>
 
-#include "lap_clock.hpp"
 #include "pair_triangles.hpp"
+#include "petersen/graph/stopwatch.hpp"
 
 namespace petersen::quad_detail {
 
@@ -25,6 +25,6 @@ namespace petersen::quad_detail {
 bool pair_component_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
                            std::span<const NodeId> nodes, HugeVector<VertexId>* releasable_corners,
                            const QuadOptions& options, std::vector<VertexId>& local,
-                           TrianglePairing& pairing, QuadStats& stats, LapClock& clock);
+                           TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock);
 
 }  // namespace petersen::quad_detail

@@ -4,11 +4,11 @@
 #include <chrono>
 #include <stdexcept>
 
-#include "lap_clock.hpp"
 #include "pair_by_lrs.hpp"
 #include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/graph/parallel.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_partners.hpp"
@@ -99,7 +99,7 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
 // certified total to the pairing's objective.
 Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost> costs,
                                    const QuadOptions& options, TrianglePairing& pairing,
-                                   QuadStats& stats, LapClock& clock) {
+                                   QuadStats& stats, Stopwatch& clock) {
   MinCostResult result = min_cost_perfect_matching(cubic, costs, {.threads = options.threads});
   stats.matching.initial_seconds += result.stats.init_seconds;
   stats.matching.unpaired_after_initial += result.stats.free_after_init;
@@ -126,7 +126,7 @@ Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost
 template <class BesideVerifier>
 void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
                  std::span<const Cost> costs, const QuadOptions& options, Algorithm algorithm,
-                 TrianglePairing& pairing, QuadStats& stats, LapClock& clock,
+                 TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock,
                  BesideVerifier beside_verifier) {
   Matching matching;
   std::string name(to_string(algorithm));
@@ -182,7 +182,7 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 // not before: each is a single-threaded pass of random reads, and the forest (4 bytes per node) is
 // still gone before the matching's peak.
 void pair_by_partners(CubicGraph cubic, Algorithm algorithm, const QuadOptions& options,
-                      TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                      TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   const std::uint32_t node_count = cubic.node_count();
   const HugeVector<NodeId> rows =
       std::move(cubic).into_neighbour_rows(options.threads, [&](std::span<const NodeId> edge_ends) {
@@ -206,7 +206,7 @@ void pair_by_partners(CubicGraph cubic, Algorithm algorithm, const QuadOptions& 
 // cubic dual itself, taken over.
 void pair_closed_whole_mesh(PairableGraph& graph, std::span<const Cost> costs,
                             const QuadOptions& options, Algorithm algorithm,
-                            TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                            TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   CubicGraph cubic =
       CubicGraph::from_valid_incidence(std::move(graph.node_edges), std::move(graph.edge_ends));
   if ((algorithm == Algorithm::automatic || algorithm == Algorithm::ps) && costs.empty()) {
@@ -229,7 +229,7 @@ std::vector<NodeId> pair_closed_components_by_lrs(PairableGraph& graph, const Po
                                                   std::span<const NodeId> closed_nodes,
                                                   const QuadOptions& options,
                                                   TrianglePairing& pairing, QuadStats& stats,
-                                                  LapClock& clock) {
+                                                  Stopwatch& clock) {
   std::vector<NodeId> by_component(closed_nodes.begin(), closed_nodes.end());
   std::stable_sort(by_component.begin(), by_component.end(), [&](NodeId a, NodeId b) {
     return components.of_node[a] < components.of_node[b];
@@ -256,7 +256,7 @@ std::vector<NodeId> pair_closed_components_by_lrs(PairableGraph& graph, const Po
 void pair_closed_components(const PairableGraph& graph, std::vector<NodeId> closed_nodes,
                             std::span<const Cost> costs, const QuadOptions& options,
                             Algorithm algorithm, TrianglePairing& pairing, QuadStats& stats,
-                            LapClock& clock) {
+                            Stopwatch& clock) {
   Subgraph sub = induced(graph, std::move(closed_nodes));
   HugeVector<EdgeId> node_edges(3 * sub.nodes.size());
   std::vector<EdgeId> local_edge(graph.edge_count(), kNoEdge);
@@ -281,7 +281,7 @@ void pair_closed_components(const PairableGraph& graph, std::vector<NodeId> clos
 // certified total to the pairing's objective.
 Matching cheapest_maximum_matching(const CsrGraph& open, std::span<const EdgeId> edge_of,
                                    std::span<const Cost> costs, const QuadOptions& options,
-                                   TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                                   TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   HugeVector<Cost> local_costs;
   for (EdgeId e : edge_of) local_costs.push_back(costs[e]);
   MinCostMaximumResult cheapest =
@@ -304,7 +304,7 @@ Matching cheapest_maximum_matching(const CsrGraph& open, std::span<const EdgeId>
 // added to all of them.
 void pair_open_components(PairableGraph& graph, std::vector<NodeId> open_nodes,
                           std::span<const Cost> costs, const QuadOptions& options,
-                          TrianglePairing& pairing, QuadStats& stats, LapClock& clock) {
+                          TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   Subgraph sub = induced(graph, std::move(open_nodes));
   graph.node_edges = HugeVector<EdgeId>();
   graph.edge_ends = HugeVector<NodeId>();
@@ -361,7 +361,7 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
                                HugeVector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats) {
-  LapClock clock;
+  Stopwatch clock;
   TrianglePairing pairing;
   const Algorithm closed_algorithm =
       options.algorithm == Algorithm::lrs ? Algorithm::automatic : options.algorithm;

@@ -9,13 +9,13 @@
 #include "all_quad.hpp"
 #include "attribute_cuts.hpp"
 #include "carry_attributes.hpp"
-#include "lap_clock.hpp"
 #include "pair_triangles.hpp"
 #include "petersen/dualize/quad_of.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/graph/parallel.hpp"
+#include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "shape_cuts.hpp"
 
@@ -358,7 +358,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
   if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
     throw std::invalid_argument("max_corner_deviation is NaN");
   }
-  quad_detail::LapClock total, clock;
+  Stopwatch total, clock;
   QuadRun run{.mesh = mesh, .options = options, .movable = movable};
   for (const Step& step : kSteps) {
     if (step.applies != nullptr && !step.applies(run)) continue;
