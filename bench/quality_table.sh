@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench/quality_table.sh [MESH...]: issue 14's quality table (bench/quality_table.cpp) for each
+# bench/quality_table.sh [MESH...]: the quality table (bench/quality_table.cpp) for each
 # mesh (default: the shared meshes below), with Blender's Tris to Quads beside petersen when
 # `blender` is on the PATH (Debian: apt-get install blender; bench/blender_tris_to_quads.py runs
 # headless). Writes bench/out/quality/table.md and one SVG of the distributions per mesh.

@@ -98,7 +98,7 @@ INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryAlgorithm, ::testing::ValuesIn(all_s
                            return name;
                          });
 
-// Issue 13's case: fandisk's creases kept with a 30-degree fold threshold, a maximum pairing of
+// Fandisk's creases kept with a 30-degree fold threshold, a maximum pairing of
 // what is left, and all quads on request.
 TEST(SharedMeshes, FandiskKeepsItsCreases) {
   const auto dir = testing::shared_mesh_dir();
@@ -137,7 +137,7 @@ TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
   }
 }
 
-// Issue 13 on a real textured mesh: spot's 288 UV seams cut, every triangle still paired, every
+// Attribute cuts on a real textured mesh: spot's 288 UV seams cut, every triangle still paired, every
 // quad corner with its triangle corner's texture coordinates, and all quads on request.
 TEST(SharedMeshes, SpotKeepsItsTextureCoordinates) {
   const auto dir = testing::shared_mesh_dir();
