@@ -19,9 +19,9 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
+#include "petersen/mesh/mesh_report.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
 #include "require.hpp"

@@ -137,8 +137,8 @@ TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
   }
 }
 
-// Attribute cuts on a real textured mesh: spot's 288 UV seams cut, every triangle still paired, every
-// quad corner with its triangle corner's texture coordinates, and all quads on request.
+// Attribute cuts on a real textured mesh: spot's 288 UV seams cut, every triangle still paired,
+// every quad corner with its triangle corner's texture coordinates, and all quads on request.
 TEST(SharedMeshes, SpotKeepsItsTextureCoordinates) {
   const auto dir = testing::shared_mesh_dir();
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";

@@ -43,5 +43,4 @@ Dual build_dual(const PolygonMesh& mesh);
 /// The dual graph alone (see build_dual for the numbering and the errors).
 CubicGraph dual_graph(const PolygonMesh& mesh);
 
-
 }  // namespace petersen

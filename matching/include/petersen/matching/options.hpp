@@ -14,16 +14,16 @@ enum class Algorithm {
               ///< is local, PerfectMatchingStats::ordered_sweep; Schrijver's exact matching on a
               ///< bipartite graph where that leaves nodes, PerfectMatchingStats::schrijver; PS
               ///< where neither stands), then augmenting paths
-  sg,     ///< simple greedy pairing (paper §3.1), then augmenting paths
-  ps,     ///< Puli–Segal priority greedy as the paper describes it (§3.1), then augmenting
-          ///< paths
-  ds,     ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
-  gw,     ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
-  frink,  ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
-  lemon,  ///< the comparison peer (LEMON's MaxMatching): runs PerfectMatchingOptions::peer, see
-          ///< there
-  lrs,    ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
-          ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
+  sg,         ///< simple greedy pairing (paper §3.1), then augmenting paths
+  ps,         ///< Puli–Segal priority greedy as the paper describes it (§3.1), then augmenting
+              ///< paths
+  ds,         ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
+  gw,         ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
+  frink,      ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
+  lemon,      ///< the comparison peer (LEMON's MaxMatching): runs PerfectMatchingOptions::peer, see
+              ///< there
+  lrs,        ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
+              ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
 };
 
 /// How augmenting paths are searched (paper §3.1, Tarjan's procedure).

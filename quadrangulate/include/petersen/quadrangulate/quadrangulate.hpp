@@ -75,12 +75,12 @@ struct QuadOptions {
   /// edge different values; compared by value, so two `vt` entries with equal coordinates make
   /// no seam; and flat shading is no seam: where both triangles are flat shaded, each corner's
   /// normal along its own triangle's normal within kFlatShadingCosine, their edge is not cut,
-  /// while a hard edge between smooth-shaded triangles is), nor a border between different materials, groups, objects, smoothing groups or
-  /// face property values (all of a face's property columns together; names compared as
-  /// strings). Each applies where `cuts` leaves its span empty; name its cause here
-  /// (CutCause::uv_seam, normal_seam, material, group, object, smoothing, face_property) to let
-  /// pairs cross it. Any other cause throws std::invalid_argument: the mesh's structure and the
-  /// caller's own cuts are never crossed.
+  /// while a hard edge between smooth-shaded triangles is), nor a border between different
+  /// materials, groups, objects, smoothing groups or face property values (all of a face's property
+  /// columns together; names compared as strings). Each applies where `cuts` leaves its span empty;
+  /// name its cause here (CutCause::uv_seam, normal_seam, material, group, object, smoothing,
+  /// face_property) to let pairs cross it. Any other cause throws std::invalid_argument: the mesh's
+  /// structure and the caller's own cuts are never crossed.
   std::vector<CutCause> cross = {};
   /// The matcher Algorithm::lemon runs (PerfectMatchingOptions::peer):
   /// petersen::lemon_peer::maximum_matching for the comparison with LEMON; left empty,
