@@ -74,7 +74,7 @@ HugeVector<LrsQuad> quads_of(lrs::DualRows&& k) {
   for (FaceId f = 0; f < faces; ++f) {
     const NodeId g = k.partner[f];
     if (g < f) continue;
-    quads.push_back({quad_of(k.triangles[f], k.triangles[g]), {kNoSourceFace, kNoSourceFace}});
+    quads.push_back({quad_of(k.triangles[f], k.triangles[g]), {kNoFace, kNoFace}});
   }
   k = lrs::DualRows();
   return quads;

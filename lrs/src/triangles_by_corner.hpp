@@ -41,7 +41,7 @@ class TrianglesByCorner {
   void prefetch_start(VertexId low) const { __builtin_prefetch(&start_[low]); }
   void prefetch_bucket(VertexId low) const { __builtin_prefetch(entry_.data() + start_[low]); }
 
-  /// The input triangle with corners {a, b, c} (distinct), or kNoSourceFace.
+  /// The input triangle with corners {a, b, c} (distinct), or kNoFace.
   FaceId find(VertexId a, VertexId b, VertexId c) const {
     const VertexId low = std::min({a, b, c});
     const VertexId x = a == low ? b : a, y = c == low ? b : c;
@@ -49,7 +49,7 @@ class TrianglesByCorner {
       const Entry& t = entry_[j];
       if ((t.u == x && t.w == y) || (t.u == y && t.w == x)) return t.face;
     }
-    return kNoSourceFace;
+    return kNoFace;
   }
 
  private:

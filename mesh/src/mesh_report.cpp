@@ -205,7 +205,6 @@ std::uint64_t count_pieces(const PolygonMesh& mesh, const PolygonHalfedges& half
   report.components = face_roots();
   report.vertex_components = report.components;
   if (report.pinched_vertices.empty()) return extra_fans;
-  constexpr FaceId kNoFace = 0xFFFFFFFFu;
   std::vector<FaceId> face_at(mesh.positions.size(), kNoFace);
   for_each_corner([&](FaceId f, std::uint32_t c) {
     const VertexId v = mesh.corners[c];

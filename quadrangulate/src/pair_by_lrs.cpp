@@ -9,8 +9,6 @@
 
 namespace petersen::quad_detail {
 
-static_assert(kNoSourceFace == kNoFace, "lrs's quads name no input face as quadrangulate does");
-
 namespace {
 
 // A closed component as a mesh of triangles on its own vertices, for lrs.

@@ -93,7 +93,7 @@ TEST(Lrs, WithoutSourcesTheCornersAreReleasedOnce) {
   EXPECT_EQ(calls, 1);
   EXPECT_EQ(2 * result.quads.size(), mesh.face_count());
   for (const LrsQuad& quad : result.quads) {
-    EXPECT_EQ(quad.sources, (std::array<FaceId, 2>{kNoSourceFace, kNoSourceFace}));
+    EXPECT_EQ(quad.sources, (std::array<FaceId, 2>{kNoFace, kNoFace}));
   }
 }
 
@@ -105,7 +105,7 @@ TEST(Lrs, EveryExpansionCaseRunsOnAnIrregularSphere) {
   EXPECT_EQ(lrs::testing::quad_problem(mesh, result), "");
   // A flipped triangle is no input triangle: some quads name fewer than two sources.
   EXPECT_TRUE(std::any_of(result.quads.begin(), result.quads.end(), [](const LrsQuad& quad) {
-    return quad.sources[0] == kNoSourceFace || quad.sources[1] == kNoSourceFace;
+    return quad.sources[0] == kNoFace || quad.sources[1] == kNoFace;
   }));
 }
 

@@ -64,7 +64,7 @@ inline std::string quad_problem(const PolygonMesh& input, const LrsPairing& pair
   for (FaceId q = 0; q < pairing.quads.size(); ++q) {
     const LrsQuad& quad = pairing.quads[q];
     for (const FaceId s : quad.sources) {
-      if (s == kNoSourceFace) continue;
+      if (s == kNoFace) continue;
       if (s >= input.face_count() || !named.insert(s).second) {
         return "source " + std::to_string(s) + " named twice or out of range";
       }
@@ -74,7 +74,7 @@ inline std::string quad_problem(const PolygonMesh& input, const LrsPairing& pair
         }
       }
     }
-    if (quad.sources[0] != kNoSourceFace && quad.sources[1] != kNoSourceFace &&
+    if (quad.sources[0] != kNoFace && quad.sources[1] != kNoFace &&
         quad_of(input.face(quad.sources[0]), input.face(quad.sources[1])) != quad.corners) {
       return "quad " + std::to_string(q) + " is not the quad of its two sources";
     }

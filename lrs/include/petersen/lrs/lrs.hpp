@@ -21,15 +21,12 @@
 
 namespace petersen {
 
-/// LrsQuad::sources where a triangle of K is no input triangle.
-inline constexpr FaceId kNoSourceFace = 0xFFFFFFFFu;
-
 struct LrsOptions {
   /// How the ℓ faces left unpaired by the expansion are paired (Tarjan's augmenting paths).
   Augment augment = Augment::local;
   /// Whether each quad names the input triangles behind it (LrsQuad::sources): a lookup of K's
   /// triangles among the input's by their vertices, after K is freed. Without, every source is
-  /// kNoSourceFace and the input's corners are not read once the triangulation is built.
+  /// kNoFace and the input's corners are not read once the triangulation is built.
   bool sources = true;
   /// Threads for the fan check of the dual input (two at most; 0: as many as the machine has).
   std::uint32_t threads = 1;
@@ -87,7 +84,7 @@ struct LrsStats {
 /// triangle's orientation, the second's corner off the shared side second.
 struct LrsQuad {
   std::array<VertexId, 4> corners;
-  /// The input triangles (face ids) behind the quad's two triangles, kNoSourceFace for one the
+  /// The input triangles (face ids) behind the quad's two triangles, kNoFace for one the
   /// flips made (or every one without LrsOptions::sources). When both are set, the quad is exactly
   /// those two input triangles: they are partners.
   std::array<FaceId, 2> sources;

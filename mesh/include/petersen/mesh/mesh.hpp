@@ -15,6 +15,8 @@ namespace petersen {
 
 using VertexId = std::uint32_t;
 using FaceId = std::uint32_t;
+/// No face: a source that is no input face, a slot that names none.
+inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
 
 /// Vertex positions; like every large array of the library, on huge pages once large
 /// (petersen/graph/huge_pages.hpp), so that meshes, graphs and scratch arrays recycle one

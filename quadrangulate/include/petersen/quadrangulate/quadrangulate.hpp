@@ -30,8 +30,6 @@ namespace petersen {
 /// for normals written with four decimals).
 inline constexpr double kFlatShadingCosine = 0.9999;
 
-inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
-
 /// What the pairing optimises besides its size (always the maximum).
 enum class Objective {
   pairs,    ///< nothing else: the algorithm's pairing, fastest
