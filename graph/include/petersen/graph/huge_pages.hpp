@@ -66,7 +66,14 @@ std::size_t retained_bytes();
 
 }  // namespace huge_pages
 
-/// Allocates arrays of at least kPageBytes through huge_pages, smaller ones with operator new.
+/// Arrays from this size on go through huge_pages (rounded up to whole huge pages of address
+/// space, resident only as far as they are written); smaller ones through operator new. Below a
+/// huge page the pool still pays: an array of the duals of a 10^5-triangle mesh is about 1 MiB,
+/// which malloc maps afresh or trims back to the kernel between calls, so every call would fault
+/// its pages in again (on virtual machines that fault-in costs more than the search that uses it).
+inline constexpr std::size_t kPooledBytes = std::size_t{64} << 10;
+
+/// Allocates arrays of at least kPooledBytes through huge_pages, smaller ones with operator new.
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
@@ -77,13 +84,13 @@ struct HugePageAllocator {
 
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes < huge_pages::kPageBytes)
+    if (bytes < kPooledBytes)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
     return static_cast<T*>(huge_pages::acquire(round_up(bytes), bytes));
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
-    if (bytes < huge_pages::kPageBytes) {
+    if (bytes < kPooledBytes) {
       ::operator delete (p, std::align_val_t{alignof(T)});
       return;
     }
@@ -120,7 +127,7 @@ HugeArray<T> make_huge_array(std::size_t size) {
 /// Shrinks `array` (of array.get_deleter().size elements) to its first `size`, giving back at once
 /// the whole huge pages past them, released as the array's own are (kept by the pool or unmapped):
 /// for an array whose tail is dead while its head lives on. Nothing is given back when either
-/// size is below a huge page (operator new's blocks).
+/// size is below a huge page.
 template <class T>
 void shrink_huge_array(HugeArray<T>& array, std::size_t size) {
   const std::size_t had = array.get_deleter().size * sizeof(T), keep = size * sizeof(T);
