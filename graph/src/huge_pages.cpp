@@ -4,7 +4,9 @@
 #include <atomic>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <mutex>
+#include <new>
 #include <string_view>
 #include <vector>
 
@@ -177,6 +179,43 @@ void release(void* range, std::size_t bytes) {
   munmap(range, bytes);
 }
 
+namespace {
+// A block's first 64 bytes say where it came from, so that release_block() gives it back there
+// whatever the pool's state is by then.
+constexpr std::size_t kBlockHeader = 64;
+constexpr std::uint64_t kFromHeap = 0x68656170, kFromPool = 0x706f6f6c;
+
+std::size_t pool_range_bytes(std::size_t bytes) {
+  return (bytes + kBlockHeader + kPageBytes - 1) / kPageBytes * kPageBytes;
+}
+}  // namespace
+
+void* acquire_block(std::size_t bytes) {
+  char* base;
+  std::uint64_t tag;
+  if (pool_on.load(std::memory_order_acquire)) {
+    base = static_cast<char*>(acquire(pool_range_bytes(bytes), bytes + kBlockHeader));
+    tag = kFromPool;
+  } else {
+    base =
+        static_cast<char*>(::operator new (bytes + kBlockHeader, std::align_val_t{kBlockHeader}));
+    tag = kFromHeap;
+  }
+  std::memcpy(base, &tag, sizeof tag);
+  return base + kBlockHeader;
+}
+
+void release_block(void* block, std::size_t bytes) {
+  char* const base = static_cast<char*>(block) - kBlockHeader;
+  std::uint64_t tag;
+  std::memcpy(&tag, base, sizeof tag);
+  if (tag == kFromPool) {
+    release(base, pool_range_bytes(bytes));
+  } else {
+    ::operator delete (base, std::align_val_t{kBlockHeader});
+  }
+}
+
 void enable_pool(std::size_t retained_bytes) {
   Retained& kept = retained();
   static const bool installed = [] {
@@ -253,6 +292,12 @@ void* acquire(std::size_t bytes, std::size_t) {
 }
 void release(void* range, std::size_t) {
   std::free(range);
+}
+void* acquire_block(std::size_t bytes) {
+  return ::operator new (bytes, std::align_val_t{64});
+}
+void release_block(void* block, std::size_t) {
+  ::operator delete (block, std::align_val_t{64});
 }
 void enable_pool(std::size_t) {}
 void enable_pool_unless_switched_off() {}

@@ -53,6 +53,29 @@ TEST(HugePages, ThePoolKeepsNoMoreThanItsLimit) {
   huge_pages::disable_pool();
 }
 
+TEST(HugePages, MidSizeBlocksComeFromThePoolOnlyWhenItIsOn) {
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  void* heap_block = huge_pages::acquire_block(kBlock);  // pool off: a heap block
+  std::memset(heap_block, 0xCD, kBlock);
+  {
+    const PoolOn pool;
+    void* pooled = huge_pages::acquire_block(kBlock);
+    std::memset(pooled, 0xAB, kBlock);
+    huge_pages::release_block(pooled, kBlock);
+    EXPECT_EQ(huge_pages::retained_bytes(), huge_pages::kPageBytes);  // kept whole
+    void* again = huge_pages::acquire_block(kBlock);
+    EXPECT_EQ(again, pooled);  // the kept range handed out again, its pages already in
+    EXPECT_TRUE(all_bytes(again, kBlock, 0xAB));
+    // Taken from the heap before the pool was on, given back to the heap: the pool keeps no more.
+    huge_pages::release_block(heap_block, kBlock);
+    EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+    heap_block = again;
+  }
+  // Taken from the pool, given back with the pool off: unmapped, and nothing kept.
+  huge_pages::release_block(heap_block, kBlock);
+  EXPECT_EQ(huge_pages::retained_bytes(), 0u);
+}
+
 TEST(HugePages, ReleasedRangeIsHandedOutAgain) {
   const PoolOn pool;
   void* first = huge_pages::acquire(kRange, kRange);

@@ -32,6 +32,13 @@ void* acquire(std::size_t bytes, std::size_t used);
 /// the next acquire() while the pool holds less than its limit (the rest goes back to the kernel).
 void release(void* range, std::size_t bytes);
 
+/// A block of `bytes` (below kPageBytes) for an array of that size, aligned to 64 bytes: with the
+/// pool on, the start of a kept range (a fresh one if none is kept), so that a mid-size array
+/// reuses pages already faulted in; with it off, a heap block (operator new), as for any other
+/// allocation. Either way release_block() gives it back the way it was taken, even when the pool
+/// was switched in between. Throws std::bad_alloc.
+void* acquire_block(std::size_t bytes);
+void release_block(void* block, std::size_t bytes);
 /// Turns the pool on for this process: released ranges, up to `retained_bytes` in all, are kept
 /// for reuse, because on virtual machines a fresh page is expensive: here the host backs guest
 /// memory lazily and takes freed memory back, so filling fresh memory runs at 0.25-1.2 GB/s
@@ -66,14 +73,16 @@ std::size_t retained_bytes();
 
 }  // namespace huge_pages
 
-/// Arrays from this size on go through huge_pages (rounded up to whole huge pages of address
-/// space, resident only as far as they are written); smaller ones through operator new. Below a
-/// huge page the pool still pays: an array of the duals of a 10^5-triangle mesh is about 1 MiB,
-/// which malloc maps afresh or trims back to the kernel between calls, so every call would fault
-/// its pages in again (on virtual machines that fault-in costs more than the search that uses it).
+/// Arrays from this size up to a huge page are blocks of huge_pages::acquire_block (from the pool
+/// when it is on); smaller ones come from operator new. Below a huge page the pool still pays: an
+/// array of a 10^5-triangle mesh's dual is about 1 MiB, which malloc maps afresh or trims back to
+/// the kernel between calls, so each call would fault its pages in again (on virtual machines
+/// that costs more than the search that writes them: armadillo's lrs augmentation, 14 ms of
+/// faults for 0.2 ms of search).
 inline constexpr std::size_t kPooledBytes = std::size_t{64} << 10;
 
-/// Allocates arrays of at least kPooledBytes through huge_pages, smaller ones with operator new.
+/// Allocates arrays of at least kPageBytes through huge_pages::acquire, mid-size ones (from
+/// kPooledBytes) through huge_pages::acquire_block, smaller ones with operator new.
 template <class T>
 struct HugePageAllocator {
   using value_type = T;
@@ -86,15 +95,18 @@ struct HugePageAllocator {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kPooledBytes)
       return static_cast<T*>(::operator new (bytes, std::align_val_t{alignof(T)}));
+    if (bytes < huge_pages::kPageBytes) return static_cast<T*>(huge_pages::acquire_block(bytes));
     return static_cast<T*>(huge_pages::acquire(round_up(bytes), bytes));
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kPooledBytes) {
       ::operator delete (p, std::align_val_t{alignof(T)});
-      return;
+    } else if (bytes < huge_pages::kPageBytes) {
+      huge_pages::release_block(p, bytes);
+    } else {
+      huge_pages::release(p, round_up(bytes));
     }
-    huge_pages::release(p, round_up(bytes));
   }
   static std::size_t round_up(std::size_t bytes) {
     return (bytes + huge_pages::kPageBytes - 1) / huge_pages::kPageBytes * huge_pages::kPageBytes;
