@@ -173,7 +173,7 @@ class FaceCutter {
     }
     const bool crossed = s > mesh_.arity(f);
     const bool try_centre = best.kind == Cut::Kind::none ||
-                            (options_.centres_where_better && crossed && mesh_.arity(f) <= 4);
+                            (options_.centres_where_better && crossed && mesh_.arity(f) == 4);
     if (try_centre) {
       centre_ = centre_of(f);
       for (std::uint32_t t = 0; t < 2; ++t) {

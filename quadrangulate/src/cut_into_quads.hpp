@@ -12,8 +12,9 @@
 namespace petersen::quad_detail {
 
 struct CutIntoQuadsOptions {
-  /// Objective::quality: a crossed triangle or quad is cut around a new centre vertex where that
-  /// gives a smaller worst corner than every fan. Otherwise only fans, no new vertex.
+  /// Objective::quality: a crossed quad is cut around a new centre vertex (the average of its four
+  /// corners, as carry_attributes blends them) where that gives a smaller worst corner than
+  /// every fan. Otherwise only fans, no new vertex.
   bool centres_where_better = false;
 };
 
