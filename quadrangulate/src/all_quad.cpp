@@ -66,8 +66,8 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   }
   const PolygonHalfedges half(mesh);
   const EdgeGroups groups = half.group();
-  const SplitPlan plan =
-      plan_splits(mesh, half, groups, kinds, result.sources, options.keep_polygons);
+  const SplitPlan plan = plan_splits(mesh, half, groups, kinds, result.sources,
+                                     options.keep_polygons, options.threads);
   const std::size_t input_vertices = mesh.positions.size();
   // With attributes: what each new vertex is made from.
   const bool carry = !mesh.attributes.empty();

@@ -90,7 +90,7 @@ void check_parity(const TJoinGraph& graph) {
 
 }  // namespace
 
-TJoinResult minimum_t_join(const TJoinGraph& graph) {
+TJoinResult minimum_t_join(const TJoinGraph& graph, std::uint32_t threads) {
   check_parity(graph);
   TJoinResult result;
   result.certified = graph.edges.empty();  // no T nodes: the empty join, trivially least
@@ -118,7 +118,8 @@ TJoinResult minimum_t_join(const TJoinGraph& graph) {
   }
 
   const CsrGraph matched_graph = CsrGraph::from_edges(gadget.node_count(), gadget.edges());
-  const MinCostResult solved = min_cost_perfect_matching(matched_graph, gadget.costs());
+  const MinCostResult solved =
+      min_cost_perfect_matching(matched_graph, gadget.costs(), {.threads = threads});
   const CertificateCheck check = verify_min_cost_perfect_matching(
       gadget.node_count(), matched_graph.edge_ends(), gadget.costs(), solved.matching,
       solved.total_cost, solved.certificate);

@@ -35,7 +35,8 @@ struct TJoinResult {
 /// verify_min_cost_perfect_matching checks its certificate, which proves |join| minimal.
 /// Throws std::invalid_argument when a connected component holds an odd number of T nodes (no
 /// T-join exists), std::logic_error when the certificate fails (a bug). The matching's cost:
-/// O(n² m) in the worst case, near-linear on meshes' duals.
-TJoinResult minimum_t_join(const TJoinGraph& graph);
+/// O(n² m) in the worst case; on the shared meshes' threshold runs (a quarter of the faces in T)
+/// it is most of --all-quad's time. `threads`: the matching's short searches (0: every core).
+TJoinResult minimum_t_join(const TJoinGraph& graph, std::uint32_t threads = 1);
 
 }  // namespace petersen::quad_detail

@@ -105,9 +105,9 @@ class Planner {
     }
   }
 
-  SplitPlan plan() && {
+  SplitPlan plan(std::uint32_t threads) && {
     split_non_manifold_edges();
-    split_minimum_t_join();
+    split_minimum_t_join(threads);
     return std::move(plan_);
   }
 
@@ -184,7 +184,7 @@ class Planner {
 
   // A minimum T-join of the dual over the components that hold T faces; the sink is one node,
   // whose parity makes its component's even.
-  void split_minimum_t_join() {
+  void split_minimum_t_join(std::uint32_t threads) {
     const std::vector<std::uint8_t> parity = component_parity();
     std::vector<std::uint8_t> has_odd(faces_ + 1, 0);
     for (FaceId f = 0; f < faces_; ++f) has_odd[forest_.find(f)] |= odd_[f];
@@ -203,7 +203,7 @@ class Planner {
       graph.edges.push_back({node[a], node[b]});
       dual_edge.push_back(i);
     }
-    const TJoinResult join = minimum_t_join(graph);
+    const TJoinResult join = minimum_t_join(graph, threads);
     for (EdgeId e : join.join) {
       const auto& halfedges = edges_.dual[dual_edge[e]];
       add_split({halfedges.data(), std::size_t(halfedges[1] == kNoNode ? 1 : 2)});
@@ -226,8 +226,9 @@ class Planner {
 
 SplitPlan plan_splits(const PolygonMesh& mesh, const PolygonHalfedges& half,
                       const EdgeGroups& groups, std::span<const FaceKind> kinds,
-                      std::span<const std::array<FaceId, 2>> sources, bool keep_polygons) {
-  return Planner(mesh, half, groups, kinds, sources, keep_polygons).plan();
+                      std::span<const std::array<FaceId, 2>> sources, bool keep_polygons,
+                      std::uint32_t threads) {
+  return Planner(mesh, half, groups, kinds, sources, keep_polygons).plan(threads);
 }
 
 }  // namespace petersen::quad_detail

@@ -37,6 +37,7 @@ struct SplitPlan {
 /// all-quad mesh refines those faces (their total side count stays odd). O(H) plus the solvers.
 SplitPlan plan_splits(const PolygonMesh& mesh, const PolygonHalfedges& half,
                       const EdgeGroups& groups, std::span<const FaceKind> kinds,
-                      std::span<const std::array<FaceId, 2>> sources, bool keep_polygons);
+                      std::span<const std::array<FaceId, 2>> sources, bool keep_polygons,
+                      std::uint32_t threads);
 
 }  // namespace petersen::quad_detail
