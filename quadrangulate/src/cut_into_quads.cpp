@@ -32,6 +32,7 @@ struct Cut {
 };
 
 constexpr VertexId kCentreVertex = kNoNode - 1;  // the centre while it is only a candidate
+constexpr std::uint32_t kMaxFanRoots = 32;       // fans tried on one face
 
 std::uint64_t edge_key(VertexId a, VertexId b) {
   return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
@@ -167,7 +168,11 @@ class FaceCutter {
     if (const std::uint32_t i = straight_crossing(f); i != kNoNode && is_free(at(i), at(i + 3))) {
       return {Cut::Kind::fan, i, 0};
     }
-    for (std::uint32_t r = 0; r < s; ++r) {
+    // Every corner of a small face; kMaxFanRoots spread around a large one, so that a face of
+    // s sides costs O(s), not O(s²).
+    const std::uint32_t roots = std::min(s, kMaxFanRoots);
+    for (std::uint32_t i = 0; i < roots; ++i) {
+      const std::uint32_t r = static_cast<std::uint32_t>(std::uint64_t{i} * s / roots);
       const double worst = fan_worst(r);
       if (worst < best.worst) best = {Cut::Kind::fan, r, worst};
     }

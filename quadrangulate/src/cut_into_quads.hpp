@@ -31,13 +31,14 @@ struct QuadPieces {
 /// Cuts every face of `mesh` with an even side count once the midpoints are in (midpoint[h]:
 /// the vertex on halfedge h's edge, or kNoNode) into quads; a kept face, or a quad with no
 /// midpoint, stays as it is. A triangle with one midpoint is that quad. A face of s ≥ 6 sides is
-/// cut by a fan of s/2 − 1 quads from one of its s corners, the one whose worst corner
-/// (quad_corner_deviation) is least among the fans whose diagonals are no edge of the mesh yet;
+/// cut by a fan of s/2 − 1 quads from one of its corners (all s of them, or 32 spread around a
+/// larger face), the one whose worst corner (quad_corner_deviation) is least among the fans whose
+/// diagonals are no edge of the mesh yet;
 /// a quad crossed straight through (midpoints on opposite sides) by the segment joining them.
 /// A centre vertex with s/2 quads around it (spokes to every other corner) is used where
 /// `options` asks and it is better, and where no fan is free; it lies at the average of the
 /// face's corners (of four spread corners beyond four), each appended to mesh.positions and,
-/// with `new_vertices`, its blend. O(Σ s²) for the candidate fans.
+/// with `new_vertices`, its blend. O(Σ s) per candidate, at most 32 candidates per face.
 QuadPieces cut_into_quads(PolygonMesh& mesh, const PolygonHalfedges& half, const EdgeGroups& groups,
                           std::span<const VertexId> midpoint, std::span<const std::uint8_t> kept,
                           std::span<const std::array<FaceId, 2>> sources,

@@ -24,10 +24,15 @@ struct SplittableEdges {
 };
 
 bool repeats_a_vertex(std::span<const VertexId> corners) {
-  for (std::size_t i = 0; i < corners.size(); ++i)
-    for (std::size_t j = i + 1; j < corners.size(); ++j)
-      if (corners[i] == corners[j]) return true;
-  return false;
+  if (corners.size() <= 8) {  // the usual faces: no allocation
+    for (std::size_t i = 0; i < corners.size(); ++i)
+      for (std::size_t j = i + 1; j < corners.size(); ++j)
+        if (corners[i] == corners[j]) return true;
+    return false;
+  }
+  std::vector<VertexId> sorted(corners.begin(), corners.end());
+  std::sort(sorted.begin(), sorted.end());
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
 }
 
 // Per face: kept as it is. A face that repeats a vertex cannot be cut into quads without a

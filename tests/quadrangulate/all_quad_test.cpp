@@ -36,13 +36,19 @@ void expect_all_quad(const PolygonMesh& mesh, const QuadResult& result,
   for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
     const bool kept = options.keep_polygons && result.sources[o][1] == kNoFace &&
                       mesh.arity(result.sources[o][0]) != 3;
-    if (!kept) EXPECT_EQ(result.mesh.arity(o), 4u) << "face " << o;
+    if (!kept) {
+      EXPECT_EQ(result.mesh.arity(o), 4u) << "face " << o;
+    }
   }
   EXPECT_EQ(result.mesh.positions.size(), mesh.positions.size() + s.added_vertices);
   EXPECT_EQ(s.added_vertices, s.split_edges + s.centre_vertices);
   EXPECT_LE(s.added_vertices_minimum, s.split_edges);
-  if (s.all_quad_certified) EXPECT_EQ(s.split_edges, s.added_vertices_minimum);
-  if (options.objective == Objective::pairs) EXPECT_EQ(s.centre_vertices, 0u);
+  if (s.all_quad_certified) {
+    EXPECT_EQ(s.split_edges, s.added_vertices_minimum);
+  }
+  if (options.objective == Objective::pairs) {
+    EXPECT_EQ(s.centre_vertices, 0u);
+  }
   EXPECT_LE(s.split_quality_median, s.split_quality_p95);
 }
 
@@ -168,6 +174,28 @@ TEST(AllQuad, PentagonsAmongQuads) {
   EXPECT_TRUE(kept.stats.all_quad_certified);
 }
 
+// Even polygons are cut by a fan of quads, no vertex added; an odd one takes one midpoint on the
+// boundary. A polygon of many sides tries a few fans only, and still ends as s/2 − 1 quads.
+TEST(AllQuad, PolygonsAreFannedWithoutNewVertices) {
+  for (std::uint32_t sides : {6u, 7u, 1000u, 1001u}) {
+    SCOPED_TRACE(sides);
+    std::vector<std::array<double, 3>> p;
+    std::vector<VertexId> polygon;
+    for (std::uint32_t k = 0; k < sides; ++k) {
+      const double angle = 2 * M_PI * k / sides;
+      p.push_back({std::cos(angle), std::sin(angle), 0});
+      polygon.push_back(k);
+    }
+    const PolygonMesh mesh = mesh_of(p, {polygon});
+    const QuadOptions options{.all_quad = true};
+    const QuadResult result = quadrangulate(mesh, options);
+    expect_all_quad(mesh, result, options);
+    EXPECT_TRUE(result.stats.all_quad_certified);
+    EXPECT_EQ(result.stats.added_vertices, sides % 2);
+    EXPECT_EQ(result.mesh.face_count(), (sides + sides % 2) / 2 - 1);
+  }
+}
+
 // Three triangles on one edge, every other side of each bordered by a quad. With the quads kept
 // each triangle is alone with an odd side count: only the non-manifold edge, whose midpoint all
 // three take, makes them even (and the minimum is then not certified as a T-join alone).
@@ -242,8 +270,9 @@ RC_GTEST_PROP(AllQuad, EveryMeshAllQuadsOrAParityProof, ()) {
   } catch (const MeshError& e) {
     const std::string message = e.what();
     RC_ASSERT(message.find("--all-quad") != std::string::npos);
-    RC_TAG(message.find("repeats a vertex") != std::string::npos ? "repeats a vertex"
-                                                                 : "parity proof");
+    RC_TAG(
+        message.find("repeats a vertex") != std::string::npos ? "repeats a vertex" : "parity proof",
+        options.keep_polygons ? "polygons kept" : "polygons split");
     return;
   }
   RC_ASSERT(check_quad_result(mesh, result, true, false) == "");
