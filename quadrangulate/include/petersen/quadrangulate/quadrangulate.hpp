@@ -54,15 +54,17 @@ struct QuadOptions {
   /// minimum-cost perfect matching whose certificate is checked (all_quad_certified). Then every
   /// face is cut into quads: a triangle with one midpoint is a quad; a face of 6 or more sides is
   /// cut by the fan of quads, from one of its corners, whose worst corner is least (no new
-  /// vertex: added_vertices = added_vertices_minimum), with Objective::quality by s/2 quads
-  /// around a new centre vertex where that is better (centre_vertices); a quad crossed straight
-  /// through becomes two quads. Parity on a component enclosed by non-manifold edges (or by the
-  /// polygons keep_polygons keeps) may force splits of non-manifold edges, each adding a midpoint
-  /// to all of its faces: they are chosen first, by elimination over GF(2), and the minimum is
-  /// then the T-join's given them (all_quad_certified is false). Input vertices never move and
-  /// the surface's topology is unchanged. Throws MeshError only with a proof that no all-quad
-  /// mesh exists (faces whose total side count stays odd whatever is split, naming an input
-  /// face), or for a face repeating a vertex that would have to change.
+  /// vertex: added_vertices = added_vertices_minimum); with Objective::quality a crossed quad
+  /// becomes three quads around a new centre vertex where that is better (centre_vertices); a
+  /// quad crossed straight through becomes two quads. A face whose every fan would draw a
+  /// diagonal that is already an edge (which would then lie on three faces) gets a centre too.
+  /// Parity on a component enclosed by non-manifold edges (or by the polygons keep_polygons keeps)
+  /// may force splits of non-manifold edges, each adding a midpoint to all of its faces: they are
+  /// chosen first, by elimination over GF(2), and the minimum is then the T-join's given them
+  /// (all_quad_certified is false). Input vertices never move and the surface's topology is
+  /// unchanged. Throws MeshError only with a proof that no all-quad mesh exists (faces whose total
+  /// side count stays odd whatever is split, naming an input face), or for a face repeating a
+  /// vertex that would have to change.
   bool all_quad = false;
   /// With all_quad: the input's faces that are not triangles are kept exactly as they are (never
   /// in T, their edges never split); where that leaves a region of odd total side count, the
