@@ -92,7 +92,7 @@ struct QuadArgs {
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   std::uint32_t threads = 0;
-  bool all_quad = false;
+  bool all_quad = false, keep_polygons = false;
   std::optional<double> sharp_angle, max_corner_deviation;
   std::string keep_edges;
   std::vector<std::string> cross;
@@ -128,6 +128,7 @@ int quad(const QuadArgs& args) {
   report.options.augment = *augment;
   report.options.seed = args.seed;
   report.options.all_quad = args.all_quad;
+  report.options.keep_polygons = args.keep_polygons;
   report.options.objective = *objective;
   report.options.peer = &lemon_peer::maximum_matching;
   report.options.cross = cross;
@@ -303,7 +304,9 @@ int main(int argc, char** argv) {
                    "threads for the phases that split into independent parts (0: every core)")
       ->capture_default_str();
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
-                     "also turn the triangles left into quads, by splitting edges along paths");
+                     "make every face a quad, splitting the fewest edges (certified)");
+  quad_cmd->add_flag("--keep-polygons", quad_args.keep_polygons,
+                     "with --all-quad: keep the input's polygons that are not triangles as they are");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
                        "also write the summary as one JSON object to this file");
 

@@ -20,6 +20,7 @@ def quadrangulate(
     attributes: Optional[Dict[str, Any]],
     cross: List[str],
     threads: int,
+    keep_polygons: bool = False,
 ) -> Dict[str, Any]: ...
 def maximum_matching(
     n: int, edges: npt.ArrayLike, algorithm: str, augment: str, seed: int

@@ -110,7 +110,7 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
                           const std::string& objective, std::optional<double> sharp_angle,
                           const py::handle& keep_edges, std::optional<double> max_corner_deviation,
                           const py::handle& attributes, const py::handle& cross,
-                          std::uint32_t threads) {
+                          std::uint32_t threads, bool keep_polygons) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -128,6 +128,7 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.augment = augment_of(augment);
   options.seed = seed;
   options.all_quad = all_quad;
+  options.keep_polygons = keep_polygons;
   options.objective = objective_of(objective);
   options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
@@ -335,7 +336,8 @@ PYBIND11_MODULE(_petersen, m) {
   m.def("quadrangulate", &quadrangulate_py, py::arg("V"), py::arg("F"), py::arg("algorithm"),
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
         py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"),
-        py::arg("attributes"), py::arg("cross"), py::arg("threads"));
+        py::arg("attributes"), py::arg("cross"), py::arg("threads"),
+        py::arg("keep_polygons") = false);
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
         py::arg("attributes"));

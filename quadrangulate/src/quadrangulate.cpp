@@ -308,11 +308,11 @@ void keep_position_type(QuadRun& run) {
 }
 
 bool wants_all_quad(const QuadRun& run) {
-  return run.options.all_quad && run.result.stats.triangles_left > 0;
+  return run.options.all_quad;
 }
 
 void make_all_quad(QuadRun& run) {
-  quad_detail::split_leftovers(run.result, run.kinds);
+  quad_detail::split_leftovers(run.result, run.kinds, run.options);
 }
 
 bool sources_unwanted(const QuadRun& run) {

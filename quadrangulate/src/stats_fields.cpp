@@ -69,6 +69,15 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   add("optimality_certified", s.optimality_certified);
   d("quads_seconds", s.quads_seconds);
   u("added_vertices", s.added_vertices);
+  if (options.all_quad) {
+    u("split_edges", s.split_edges);
+    u("centre_vertices", s.centre_vertices);
+    u("added_vertices_minimum", s.added_vertices_minimum);
+    add("all_quad_certified", s.all_quad_certified);
+    u("split_quads", s.split_quads);
+    d("split_quality_median", s.split_quality_median);
+    d("split_quality_p95", s.split_quality_p95);
+  }
   d("all_quad_seconds", s.all_quad_seconds);
   if (run.write_seconds) d("write_seconds", *run.write_seconds);
   d("total_seconds", run.total_seconds.value_or(s.total_seconds));

@@ -357,9 +357,8 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
       continue;
     }
     if (g == kNoFace) {
-      // Kept or left: exactly the input face, unless all_quad split a left triangle.
-      const bool split = all_quad && out.size() != input.arity(f);
-      if (!split &&
+      // Kept or left: exactly the input face, unless all_quad split or rebuilt it.
+      if (!all_quad &&
           !std::equal(out.begin(), out.end(), input.face(f).begin(), input.face(f).end())) {
         return "output face " + std::to_string(o) + " differs from its input face " +
                std::to_string(f);

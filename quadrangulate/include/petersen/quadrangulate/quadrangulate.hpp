@@ -46,13 +46,30 @@ struct QuadOptions {
   Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
-  /// Turn every triangle left unpaired into a quad too, by splitting edges: two leftover
-  /// triangles are joined by a shortest path of quads across edges of exactly two faces, and
-  /// every edge on it gets a new midpoint vertex (a crossed quad becomes two quads, or three
-  /// around a new centre vertex when the path turns); a component whose triangle count is odd
-  /// ends its path at a boundary edge instead. Input vertices never move and the surface's
-  /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
+  /// Make every face of the output a quad, adding the fewest vertices this pairing allows. A
+  /// polygon can be cut into quads iff its side count is even, and a midpoint on an edge adds a
+  /// side to every face on it; so the edges to split are a minimum T-join (T: the faces of odd
+  /// side count) of the faces' dual, where every edge of exactly two faces is a dual edge
+  /// whatever its cut cause and boundary edges meet a sink. It is solved exactly by a
+  /// minimum-cost perfect matching whose certificate is checked (all_quad_certified). Then every
+  /// face is cut into quads: a triangle with one midpoint is a quad; a face of 6 or more sides is
+  /// cut by the fan of quads, from one of its corners, whose worst corner is least (no new
+  /// vertex: added_vertices = added_vertices_minimum); with Objective::quality a crossed quad
+  /// becomes three quads around a new centre vertex where that is better (centre_vertices); a
+  /// quad crossed straight through becomes two quads. A face whose every fan would draw a
+  /// diagonal that is already an edge (which would then lie on three faces) gets a centre too.
+  /// Parity on a component enclosed by non-manifold edges (or by the polygons keep_polygons keeps)
+  /// may force splits of non-manifold edges, each adding a midpoint to all of its faces: they are
+  /// chosen first, by elimination over GF(2), and the minimum is then the T-join's given them
+  /// (all_quad_certified is false). Input vertices never move and the surface's topology is
+  /// unchanged. Throws MeshError only with a proof that no all-quad mesh exists (faces whose total
+  /// side count stays odd whatever is split, naming an input face), or for a face repeating a
+  /// vertex that would have to change.
   bool all_quad = false;
+  /// With all_quad: the input's faces that are not triangles are kept exactly as they are (never
+  /// in T, their edges never split); where that leaves a region of odd total side count, the
+  /// MeshError says that --keep-polygons is what makes it impossible.
+  bool keep_polygons = false;
   /// Objective::quality pairs by the exact minimum-cost matching (min_cost_matching.hpp) of the
   /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
   /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
@@ -103,8 +120,20 @@ struct QuadStats {
   std::uint64_t polygons_kept = 0;   ///< faces that are not triangles, kept as they are
   std::uint64_t pairs = 0;           ///< quads made of two input triangles
   std::uint64_t triangles_left = 0;  ///< triangles no maximum pairing can pair (before all_quad)
-  std::uint64_t added_vertices = 0;  ///< by all_quad
-  std::uint64_t split_quads = 0;     ///< faces of the output made by all_quad's splits
+  /// all_quad: every new vertex, split_edges + centre_vertices.
+  std::uint64_t added_vertices = 0;
+  std::uint64_t split_edges = 0;      ///< all_quad: edges given a midpoint
+  std::uint64_t centre_vertices = 0;  ///< all_quad: centres of faces cut around one
+  /// all_quad: the fewest midpoints that make every face even for this pairing (the minimum
+  /// T-join's size, plus the non-manifold splits when parity forced some).
+  std::uint64_t added_vertices_minimum = 0;
+  /// all_quad: the T-join's certificate passed the independent check and no non-manifold edge
+  /// was split, so split_edges = added_vertices_minimum is proved the fewest.
+  bool all_quad_certified = false;
+  std::uint64_t split_quads = 0;  ///< faces of the output made by all_quad's cuts
+  /// The faces all_quad's cuts made, by quad_corner_deviation in degrees: median and 95th
+  /// percentile.
+  double split_quality_median = 0, split_quality_p95 = 0;
   std::uint64_t mesh_edges = 0;
   std::int64_t euler_characteristic = 0;  ///< referenced vertices − edges + faces, of the input
   /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera (the
@@ -172,7 +201,8 @@ struct QuadResult {
 
 /// Pairs the triangles of any polygon mesh (see the top of this file). Throws MeshError naming the
 /// face for a corner out of range or a face of fewer than three corners, MeshError when all_quad
-/// cannot reach a leftover triangle's partner. O(n log d) plus the algorithm's cost.
+/// proves that no all-quad mesh exists (see QuadOptions::all_quad). O(n log d) plus the algorithm's
+/// cost.
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
 /// The same, consuming the mesh: its positions move into the output mesh instead of being copied
 /// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles), and without
