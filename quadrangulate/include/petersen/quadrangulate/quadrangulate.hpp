@@ -53,6 +53,7 @@ struct QuadOptions {
   /// ends its path at a boundary edge instead. Input vertices never move and the surface's
   /// topology is unchanged. Throws MeshError when a leftover triangle has no partner to reach.
   bool all_quad = false;
+  bool keep_polygons = false;
   /// Objective::quality pairs by the exact minimum-cost matching (min_cost_matching.hpp) of the
   /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
   /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
@@ -105,6 +106,11 @@ struct QuadStats {
   std::uint64_t triangles_left = 0;  ///< triangles no maximum pairing can pair (before all_quad)
   std::uint64_t added_vertices = 0;  ///< by all_quad
   std::uint64_t split_quads = 0;     ///< faces of the output made by all_quad's splits
+  std::uint64_t split_edges = 0;
+  std::uint64_t centre_vertices = 0;
+  std::uint64_t added_vertices_minimum = 0;
+  bool all_quad_certified = false;
+  double split_quality_median = 0, split_quality_p95 = 0;
   std::uint64_t mesh_edges = 0;
   std::int64_t euler_characteristic = 0;  ///< referenced vertices − edges + faces, of the input
   /// Of a closed, consistently oriented triangle mesh: the sum of its components' genera (the
