@@ -93,6 +93,18 @@ TEST(FlatShaded, GivesFaceNormalsTextureSeamsAndMaterials) {
   EXPECT_GE(used.size(), 1u);
 }
 
+TEST(ComponentCensus, CountsEachComponentApart) {
+  const PolygonMesh parts[] = {mobius_band(5, 2), random_closed_surface(1, 10, 10, 2),
+                               open_grid(3, 2), klein_bottle(4, 4)};
+  const auto components = testing::component_census(concatenate(parts));
+  using C = testing::ComponentCensus;
+  const std::vector<C> expected = {{.euler = 0, .boundary_loops = 0, .orientable = false},
+                                   {.euler = 0, .boundary_loops = 0, .orientable = true},
+                                   {.euler = 0, .boundary_loops = 1, .orientable = false},
+                                   {.euler = 1, .boundary_loops = 1, .orientable = true}};
+  EXPECT_EQ(components, expected);
+}
+
 // Every class makes well-formed meshes of its kind, the same for the same seed.
 RC_GTEST_PROP(MeshClasses, AreOfTheirClassAndDeterministic, ()) {
   for (testing::MeshClass c : testing::kMeshClasses) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 #include <set>
+#include <span>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -52,6 +53,17 @@ std::vector<VertexId> pre_split_face(const PolygonMesh& input, FaceId f, FaceId 
     return {a, d, b, c};
   }
   return {};
+}
+
+// Whether `face` is `cycle` started at another corner (same direction).
+bool is_rotation_of(std::span<const VertexId> face, const std::vector<VertexId>& cycle) {
+  if (face.size() != cycle.size()) return false;
+  const auto start = std::find(cycle.begin(), cycle.end(), face[0]);
+  if (start == cycle.end()) return false;
+  const std::size_t offset = start - cycle.begin();
+  for (std::size_t k = 0; k < face.size(); ++k)
+    if (face[k] != cycle[(offset + k) % cycle.size()]) return false;
+  return true;
 }
 
 // One pre-split side and what the output made of it: its midpoint, or kNoVertex.
@@ -264,6 +276,16 @@ AllQuadCheck check_all_quad_mesh(const PolygonMesh& input, const QuadResult& res
     if (polygon && exactly && polygons != KeptPolygons::rebuilt) {
       for (std::size_t k = 0; k < cycle.size(); ++k)
         sides.push_back({undirected(cycle[k], cycle[(k + 1) % cycle.size()]), kNoVertex, first});
+      continue;
+    }
+    if (pieces.size() == 1 && is_rotation_of(out_face, cycle)) {
+      // The face as it was (a pair's quad, a polygon): no new vertex, nothing inside.
+      for (std::size_t k = 0; k < cycle.size(); ++k)
+        sides.push_back({undirected(cycle[k], cycle[(k + 1) % cycle.size()]), kNoVertex, first});
+      if (cycle.size() != 4) {
+        counted.problem = face_name(first) + " has " + std::to_string(cycle.size()) + " corners";
+        return counted;
+      }
       continue;
     }
     counted.problem = check_tiling(out, n, pieces, cycle, sides, centres, inner);
