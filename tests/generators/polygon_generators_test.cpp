@@ -1,5 +1,6 @@
 // The generators' claimed topology, checked by counting on their output with plain containers
-// (std::map, union-find), independently of the library's own edge grouping and surface check.
+// (petersen/testing/mesh_census.hpp), independently of the library's own edge grouping and
+// surface check.
 
 #include "petersen/generators/polygon_generators.hpp"
 
@@ -16,6 +17,7 @@
 
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/mesh/mesh_report.hpp"
+#include "petersen/testing/mesh_census.hpp"
 
 namespace petersen {
 namespace {
@@ -29,142 +31,9 @@ std::vector<std::vector<VertexId>> faces_of(const PolygonMesh& mesh) {
   return faces;
 }
 
-struct UnionFind {
-  std::vector<std::size_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  std::size_t find(std::size_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(std::size_t a, std::size_t b) { parent[find(a)] = find(b); }
-};
-
-// What the counting finds. Orientability is judged over the edges of exactly two faces: a BFS
-// gives each face a sign so that two faces on an edge run along it in opposite directions once
-// their signs are applied; the surface is orientable when no edge contradicts the signs.
-struct Census {
-  std::size_t vertices = 0;  // referenced
-  std::size_t edges = 0;
-  std::size_t faces = 0;
-  std::size_t boundary_edges = 0;      // in one face
-  std::size_t non_manifold_edges = 0;  // in three or more faces
-  std::size_t inconsistent_edges = 0;  // two faces run along it the same way
-  std::size_t boundary_loops = 0;      // connected pieces of the boundary edges
-  std::size_t components = 0;          // faces joined through shared vertices
-  std::size_t edge_components = 0;     // faces joined through shared edges
-  std::size_t pinched_vertices = 0;    // faces around it form more than one edge-connected fan
-  std::size_t non_triangles = 0;
-  bool orientable = true;
-  std::int64_t euler() const {
-    return std::int64_t(vertices) - std::int64_t(edges) + std::int64_t(faces);
-  }
-};
-
+using petersen::testing::census;
+using Census = petersen::testing::MeshCensus;
 using Edge = std::pair<VertexId, VertexId>;
-Edge undirected(VertexId a, VertexId b) {
-  return {std::min(a, b), std::max(a, b)};
-}
-
-// For each undirected edge, the faces along it and whether each runs from the smaller vertex.
-std::map<Edge, std::vector<std::pair<std::size_t, bool>>> edge_faces(
-    const std::vector<std::vector<VertexId>>& faces) {
-  std::map<Edge, std::vector<std::pair<std::size_t, bool>>> on_edge;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (std::size_t k = 0; k < faces[f].size(); ++k) {
-      const VertexId a = faces[f][k], b = faces[f][(k + 1) % faces[f].size()];
-      on_edge[undirected(a, b)].push_back({f, a < b});
-    }
-  }
-  return on_edge;
-}
-
-Census census(const PolygonMesh& mesh) {
-  const auto faces = faces_of(mesh);
-  Census c;
-  c.faces = faces.size();
-  std::set<VertexId> referenced;
-  UnionFind surface(mesh.positions.size()), boundary(mesh.positions.size());
-  for (const auto& face : faces) {
-    referenced.insert(face.begin(), face.end());
-    for (VertexId v : face) surface.join(face[0], v);
-    c.non_triangles += face.size() != 3;
-  }
-  c.vertices = referenced.size();
-  std::set<std::size_t> roots;
-  for (VertexId v : referenced) roots.insert(surface.find(v));
-  c.components = roots.size();
-
-  const auto on_edge = edge_faces(faces);
-  c.edges = on_edge.size();
-  std::set<VertexId> boundary_vertices;
-  std::vector<std::vector<std::pair<std::size_t, bool>>> neighbours(faces.size());
-  UnionFind through_edges(faces.size());
-  for (const auto& [edge, along] : on_edge) {
-    for (const auto& [f, from_smaller] : along) through_edges.join(along[0].first, f);
-    if (along.size() == 1) {
-      ++c.boundary_edges;
-      boundary.join(edge.first, edge.second);
-      boundary_vertices.insert(edge.first);
-    }
-    if (along.size() >= 3) ++c.non_manifold_edges;
-    if (along.size() == 2) {
-      const bool same_way = along[0].second == along[1].second;
-      c.inconsistent_edges += same_way;
-      neighbours[along[0].first].push_back({along[1].first, same_way});
-      neighbours[along[1].first].push_back({along[0].first, same_way});
-    }
-  }
-  roots.clear();
-  for (std::size_t f = 0; f < faces.size(); ++f) roots.insert(through_edges.find(f));
-  c.edge_components = roots.size();
-  roots.clear();
-  for (VertexId v : boundary_vertices) roots.insert(boundary.find(v));
-  c.boundary_loops = roots.size();
-
-  std::vector<int> sign(faces.size(), 0);
-  for (std::size_t start = 0; start < faces.size(); ++start) {
-    if (sign[start] != 0) continue;
-    sign[start] = 1;
-    std::queue<std::size_t> queue;
-    queue.push(start);
-    while (!queue.empty()) {
-      const std::size_t f = queue.front();
-      queue.pop();
-      for (const auto& [g, same_way] : neighbours[f]) {
-        const int wanted = same_way ? -sign[f] : sign[f];
-        if (sign[g] == 0) {
-          sign[g] = wanted;
-          queue.push(g);
-        } else if (sign[g] != wanted) {
-          c.orientable = false;
-        }
-      }
-    }
-  }
-
-  // Fans: faces around v joined when they share an edge through v.
-  std::map<VertexId, std::vector<std::size_t>> around;
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    for (VertexId v : faces[f]) around[v].push_back(f);
-  }
-  for (const auto& [v, at_v] : around) {
-    UnionFind fans(faces.size());
-    std::map<Edge, std::size_t> first_on;
-    for (std::size_t f : at_v) {
-      const auto& face = faces[f];
-      for (std::size_t k = 0; k < face.size(); ++k) {
-        const VertexId a = face[k], b = face[(k + 1) % face.size()];
-        if (a != v && b != v) continue;
-        auto [it, inserted] = first_on.try_emplace(undirected(a, b), f);
-        if (!inserted) fans.join(it->second, f);
-      }
-    }
-    std::set<std::size_t> fan_roots;
-    for (std::size_t f : at_v) fan_roots.insert(fans.find(f));
-    c.pinched_vertices += fan_roots.size() > 1;
-  }
-  return c;
-}
 
 // What is wrong with the arrays, or "": corners in range, at least three per face and none
 // repeated, face_start empty exactly when all faces are triangles (and then consistent),
@@ -284,7 +153,7 @@ PolygonMesh closed_surface(std::uint32_t genus, std::uint64_t seed) {
 TEST(KleinBottle, IsAClosedNonOrientableSimplicialSurfaceOfEulerCharacteristic0) {
   for (std::uint32_t u = 3; u <= 7; ++u) {
     for (std::uint32_t v = 3; v <= 7; ++v) {
-      SCOPED_TRACE(testing::Message() << u << " x " << v);
+      SCOPED_TRACE(::testing::Message() << u << " x " << v);
       const PolygonMesh mesh = klein_bottle(u, v);
       EXPECT_EQ(closed_non_orientable_problem(mesh, 0), "");
       EXPECT_EQ(census(mesh).vertices, std::size_t{u} * v);
@@ -324,7 +193,7 @@ TEST(ProjectivePlane, IsAClosedNonOrientableSimplicialSurfaceOfEulerCharacterist
 TEST(OpenGrid, IsAnOrientedDiskWithOneBoundaryLoop) {
   for (std::uint32_t nx = 1; nx <= 5; ++nx) {
     for (std::uint32_t ny = 1; ny <= 5; ++ny) {
-      SCOPED_TRACE(testing::Message() << nx << " x " << ny);
+      SCOPED_TRACE(::testing::Message() << nx << " x " << ny);
       const PolygonMesh mesh = open_grid(nx, ny);
       EXPECT_EQ(malformation(mesh), "");
       const Census c = census(mesh);

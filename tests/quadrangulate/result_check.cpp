@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "all_quad_check.hpp"
 #include "peers.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/csr_graph.hpp"
@@ -302,12 +303,13 @@ std::optional<std::uint32_t> maximum_matching_size(std::uint32_t nodes,
   return maximum;
 }
 
-}  // namespace
-
-std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
-                              bool flips_allowed, const CutOptions& cuts,
-                              std::span<const CutCause> cross,
-                              std::optional<double> max_corner_deviation) {
+// The pairing part of check_quad_result: every input face used once, the pairs pairable, their
+// number a maximum (by the peers), and the witness. With all_quad the pieces of a split face are
+// left to check_all_quad_mesh.
+std::string check_pairing(const PolygonMesh& input, const QuadResult& result, bool all_quad,
+                          bool flips_allowed, const CutOptions& cuts,
+                          std::span<const CutCause> cross,
+                          std::optional<double> max_corner_deviation) {
   const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
   // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
   // repeated vertex, whose union has four vertices.
@@ -433,56 +435,33 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
       return "witness: " + check.message;
     }
   }
-  if (all_quad) {
-    for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
-      const FaceId f = result.sources[o][0];
-      const bool kept_polygon =
-          result.sources[o][1] == kNoFace && f != kNoFace && input.arity(f) != 3;
-      if (!kept_polygon && result.mesh.arity(o) != 4) {
-        return "all-quad output face " + std::to_string(o) + " has " +
-               std::to_string(result.mesh.arity(o)) + " corners";
-      }
-    }
-    // An edge in more than two faces must be an input edge that was, or half of one (a split of a
-    // non-manifold edge at its midpoint, which all of its faces share). Several non-manifold
-    // edges may share a midpoint (coincident copies of a surface): each is kept.
-    const FacesByEdge in_edges(input);
-    std::multimap<std::array<double, 3>, std::pair<Edge, std::size_t>> split_midpoints;
-    for (const auto& [e, fs] : in_edges) {
-      if (fs.size() < 3) continue;
-      const auto& p = input.positions[e.first];
-      const auto& q = input.positions[e.second];
-      split_midpoints.insert(
-          {{(p[0] + q[0]) / 2, (p[1] + q[1]) / 2, (p[2] + q[2]) / 2}, {e, fs.size()}});
-    }
-    for (const auto& [e, fs] : FacesByEdge(result.mesh)) {
-      std::size_t allowed = 2;
-      if (const std::span<const FaceId> in_faces = in_edges.find(e); !in_faces.empty()) {
-        allowed = std::max(allowed, in_faces.size());
-      } else {
-        for (auto [added, kept] : {e, Edge{e.second, e.first}}) {
-          if (added < input.positions.size()) continue;
-          const auto [first, end] = split_midpoints.equal_range(result.mesh.positions[added]);
-          for (auto it = first; it != end; ++it) {
-            if (it->second.first.first == kept || it->second.first.second == kept) {
-              allowed = std::max(allowed, it->second.second);
-            }
-          }
-        }
-      }
-      if (fs.size() > allowed) {
-        return "edge (" + std::to_string(e.first) + ", " + std::to_string(e.second) + ") in " +
-               std::to_string(fs.size()) + " faces";
-      }
-    }
-    if (euler_characteristic(result.mesh) != euler_characteristic(input)) {
-      return "Euler characteristic changed";
-    }
-    for (std::size_t v = 0; v < input.positions.size(); ++v) {
-      if (result.mesh.positions[v] != input.positions[v]) return "an input vertex moved";
-    }
-  }
   return {};
+}
+
+}  // namespace
+
+std::string check_quad_result(const PolygonMesh& input, const QuadResult& result, bool all_quad,
+                              bool flips_allowed, const CutOptions& cuts,
+                              std::span<const CutCause> cross,
+                              std::optional<double> max_corner_deviation) {
+  std::string problem =
+      check_pairing(input, result, all_quad, flips_allowed, cuts, cross, max_corner_deviation);
+  if (problem.empty() && all_quad)
+    problem = check_all_quad_mesh(input, result, KeptPolygons::either, flips_allowed).problem;
+  return problem;
+}
+
+std::string check_quad_result(const PolygonMesh& input, const QuadResult& result,
+                              const QuadOptions& options) {
+  const bool flips_allowed = options.algorithm == Algorithm::lrs;
+  std::string problem = check_pairing(input, result, options.all_quad, flips_allowed, options.cuts,
+                                      options.cross, options.max_corner_deviation);
+  if (!problem.empty() || !options.all_quad) return problem;
+  const AllQuadCheck counted = check_all_quad_mesh(
+      input, result, options.keep_polygons ? KeptPolygons::kept : KeptPolygons::rebuilt,
+      flips_allowed);
+  if (!counted.problem.empty()) return counted.problem;
+  return check_all_quad_counts(input, result, options, counted);
 }
 
 }  // namespace petersen::testing

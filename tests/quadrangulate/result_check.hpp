@@ -12,7 +12,8 @@
 namespace petersen::testing {
 
 /// Empty when `result` is a correct maximum pairing of `input` (or, with all_quad, a correct
-/// all-quad mesh made from one); else the first problem found.
+/// all-quad mesh made from one, see all_quad_check.hpp; the input's polygons may be kept or
+/// rebuilt); else the first problem found.
 /// `cuts` are the extra cuts the run was given, judged here on their own terms; the cuts of the
 /// input's attributes (seams, material and other borders) are judged from the values
 /// themselves, except those whose span `cuts` sets and those `cross` names.
@@ -21,6 +22,12 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
                               bool flips_allowed, const CutOptions& cuts = {},
                               std::span<const CutCause> cross = {},
                               std::optional<double> max_corner_deviation = {});
+
+/// The same check for a run with these options, judged on their own terms: the algorithm (lrs
+/// may flip), the cuts, cross, the threshold, and with all_quad keep_polygons (input polygons kept
+/// exactly, or rebuilt into quads) and the all-quad figures (check_all_quad_counts).
+std::string check_quad_result(const PolygonMesh& input, const QuadResult& result,
+                              const QuadOptions& options);
 
 /// Empty when the output carries the input's attributes: every output corner of an input vertex
 /// has the texture coordinate and normal (values) of that vertex's corner in the output face's
