@@ -12,6 +12,7 @@ the face, edge or node) raised as ``ValueError``.
 
 from __future__ import annotations
 
+import math
 import numbers
 import warnings
 from dataclasses import dataclass, field
@@ -225,10 +226,24 @@ def quadrangulate(
         raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
-        None if sharp_angle is None else float(sharp_angle), keep_edges,
-        None if max_corner_deviation is None else float(max_corner_deviation), attributes,
+        _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
+        _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
         [str(c) for c in cross], _threads(threads))
     return QuadResult(**r)
+
+
+def _degrees(name: str, value: Optional[float], high: float) -> Optional[float]:
+    """An angle option as the library takes it: None, or a finite number of degrees in
+    [0, high]; ``ValueError`` naming the keyword otherwise (NaN fails every comparison)."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a number of degrees, not {value!r}")
+    degrees = float(value)
+    if not (math.isfinite(degrees) and 0.0 <= degrees <= high):
+        raise ValueError(f"{name} must be a finite number of degrees in [0, {high:g}], "
+                         f"not {value!r}")
+    return degrees
 
 
 def _threads(threads: int) -> int:
