@@ -98,9 +98,10 @@ void print_summary(std::FILE* out, const RunReport& r) {
                s.quality_median, s.quality_p95, s.nonconvex_quads, s.objective_total,
                s.optimality_certified ? " (minimum certified)" : "");
   if (r.options.max_corner_deviation) {
-    std::fprintf(out, "threshold   quads of at most %g degrees; %" PRIu64 " pairs over it cut\n",
+    std::fprintf(out, "threshold   quads of at most %g degrees; %" PRIu64 " pairs over it cut%s\n",
                  *r.options.max_corner_deviation,
-                 s.cuts.by_cause[static_cast<int>(CutCause::shape)]);
+                 s.cuts.by_cause[static_cast<int>(CutCause::shape)],
+                 quality ? "" : "; any pairs within it, --objective quality picks the cheapest");
   }
   if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
     std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",

@@ -171,3 +171,20 @@ def test_a_mesh_and_its_arrays_give_the_same_pairs_when_flat_shaded(objective, t
     smooth["corner_normal"] = corner_normal
     seamed = petersen.quadrangulate(mesh.V, mesh.F, attributes=smooth, objective=objective)
     assert seamed.stats["cut_edges_by_cause"]["normal_seam"] == 3
+
+
+def test_a_threshold_with_quality_keeps_the_best_shapes():
+    """docs/cli.md's torus: at 45 degrees any pairing within the threshold (objective "pairs",
+    the threshold's default) makes far worse quads than the cheapest one, which is the same as
+    with no threshold at all."""
+    V, F = torus(48, 16)
+    best = petersen.quadrangulate(V, F, objective="quality")
+    within = petersen.quadrangulate(V, F, max_corner_deviation=45, objective="quality")
+    anyhow = petersen.quadrangulate(V, F, max_corner_deviation=45)
+    for r in (within, anyhow):
+        assert r.stats["triangles_left"] == 0 and r.stats["maximum_certified"]
+        assert petersen.quad_quality(r.V, r.quads).max() <= 45
+    assert within.stats["optimality_certified"]
+    assert within.stats["quality_p95"] == pytest.approx(best.stats["quality_p95"])
+    assert within.stats["objective_total"] == pytest.approx(best.stats["objective_total"])
+    assert anyhow.stats["quality_p95"] > 10 * within.stats["quality_p95"]

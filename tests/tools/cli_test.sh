@@ -75,6 +75,12 @@ check "a threshold no quad meets" "$petersen" quad "$work/trapezoid.off" "$work/
   --max-corner-deviation 1 --objective quality --stats-json "$work/mixed-t.json"
 grep -q '"shape": 1' "$work/mixed-t.json" && grep -q '"triangles_left": 2,' "$work/mixed-t.json" || {
   failed=$((failed + 1)); echo "FAILED: threshold"; cat "$work/mixed-t.json"; }
+! grep -q "picks the cheapest" "$work/out" || { failed=$((failed + 1)); echo "FAILED: hint"; }
+# The threshold alone pairs within it at random: the summary points to --objective quality.
+check "a threshold alone" "$petersen" quad "$work/trapezoid.off" "$work/mixed-t.off" \
+  --max-corner-deviation 1
+grep -q "^threshold .*--objective quality picks the cheapest" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: threshold hint"; cat "$work/out"; }
 refuses "--cross shape" "not a cut of the mesh's attributes" \
   "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
 # A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
