@@ -145,7 +145,7 @@ int quad(const QuadArgs& args) {
   PolygonMesh mesh = read_mesh_warning(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
-                              : read_keep_edges(args.keep_edges);
+                              : read_keep_edges(args.keep_edges, mesh.positions.size());
   report.options.cuts.sharp_angle_degrees = args.sharp_angle;
   report.options.max_corner_deviation = args.max_corner_deviation;
   report.options.cuts.user_edges = keep_edges;
@@ -261,6 +261,9 @@ int main(int argc, char** argv) {
                          "orientability, genus and the quads' worst-corner figures");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
+  // render_mesh's limits, checked before any work.
+  const CLI::Range picture_side(200u, 16384u);
+
   QuadArgs quad_args;
   CLI::App* quad_cmd = app.add_subcommand("quad",
                                           "Pair the triangles of any mesh into quads (a certified "
@@ -327,10 +330,10 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->expected(3);
   quad_cmd->add_option("--render-width", quad_args.render_width)
-      ->check(CLI::Range(200u, 16384u))
+      ->check(picture_side)
       ->capture_default_str();
   quad_cmd->add_option("--render-height", quad_args.render_height)
-      ->check(CLI::Range(200u, 16384u))
+      ->check(picture_side)
       ->capture_default_str();
 
   RenderArgs render_args;
@@ -344,11 +347,9 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
       ->delimiter(',')
       ->expected(3);
-  render_cmd->add_option("--width", render_args.width)
-      ->check(CLI::Range(200u, 16384u))
-      ->capture_default_str();
+  render_cmd->add_option("--width", render_args.width)->check(picture_side)->capture_default_str();
   render_cmd->add_option("--height", render_args.height)
-      ->check(CLI::Range(200u, 16384u))
+      ->check(picture_side)
       ->capture_default_str();
 
   GenerateArgs gen_args;

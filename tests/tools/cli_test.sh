@@ -167,6 +167,9 @@ grep -q '"triangles_left": 0,' "$work/materials.json" &&
   ! grep -q "cross_to_pair" "$work/materials.json" && ! grep -q "^left by" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: --cross material"; cat "$work/out"; }
 
+printf '0 1\n# a comment\n1 7\n' >"$work/keep-edges.txt"
+refuses "--keep-edges out of range" "keep-edges.txt:3: vertex id 7 out of range (6 vertices)" \
+  "$petersen" quad "$work/mixed.off" "$work/x.off" --keep-edges "$work/keep-edges.txt"
 refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "$work/x.obj"
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \
