@@ -319,10 +319,12 @@ def write_mesh(
     (other cell blocks, data of several values per point) is warned as ``DroppedWarning``.
     ``attributes`` (``Attributes``, as ``read_mesh`` gives them) are written as the format can:
     returns one line per kind of thing it has no place for (e.g. corner normals in a PLY), each
-    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
-    place. Reading it back gives the same positions, faces and written attributes. Raises
-    ``ValueError`` for an unknown extension, an index out of range, attributes of the wrong size
-    or a path that cannot be written.
+    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a
+    temporary file beside ``path`` and renamed into place, so a failed write leaves no partial
+    file and an existing one whole. Reading it back gives the same positions, faces and written
+    attributes. Raises ``ValueError`` for a coordinate that is not finite (naming the vertex), an
+    unknown extension, an index out of range, attributes of the wrong size or a path that cannot
+    be written.
     """
     V, F, attributes = _mesh_parts(V, F, attributes, "write_mesh")
     dropped = _petersen.write_mesh(str(path), V, F, attributes)
@@ -400,10 +402,10 @@ def min_cost_matching(
     """The matching of least total cost among the maximum matchings of any (multi)graph.
 
     ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges and loops allowed; a
-    loop is never matched), ``costs`` one integer per edge (at most 2^40 in absolute value; scale and round real costs
-    first). A perfect matching when the
-    graph has one. Exact: Edmonds' primal-dual blossom algorithm, as ``petersen match --objective
-    cost`` and ``quadrangulate(objective="quality")``; its dual solution is checked by an
+    loop is never matched), ``costs`` one integer per edge (at most 2^40 in absolute value;
+    scale and round real costs first). A perfect matching when the graph has one. Exact:
+    Edmonds' primal-dual blossom algorithm, as ``petersen match --objective cost`` and
+    ``quadrangulate(objective="quality")``; its dual solution is checked by an
     independent verifier before the answer is returned. ``threads`` as in ``quadrangulate``
     (0: every core; the answer does not depend on it). Raises ``ValueError`` for a node out of
     range, or a cost out of range or of the wrong count, ``TypeError`` for costs that are not
@@ -442,9 +444,9 @@ def render(
     width: int = 800,
     height: int = 800,
 ) -> None:
-    """Draws a mesh into a PNG or SVG picture (by the extension of ``path``), as ``petersen render``.
+    """Draws a mesh into a PNG or SVG picture, as ``petersen render``.
 
-    A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
+    The format is the extension of ``path``. A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
     coloured by ``quad_quality`` with a colour bar, triangles highlighted when the mesh has quads,
     vertices from ``first_added_vertex`` on drawn as dots, the ``caption`` lines underneath.
     ``V`` may be a mesh object instead of positions (``F`` then omitted), as in ``write_mesh``;
