@@ -5,7 +5,8 @@
 
 namespace petersen::cli {
 
-std::vector<std::array<VertexId, 2>> read_keep_edges(const std::string& path) {
+std::vector<std::array<VertexId, 2>> read_keep_edges(const std::string& path,
+                                                     std::size_t vertex_count) {
   std::ifstream in(path);
   if (!in) throw MeshError(path + ": cannot open");
   std::vector<std::array<VertexId, 2>> edges;
@@ -29,6 +30,10 @@ std::vector<std::array<VertexId, 2>> read_keep_edges(const std::string& path) {
                         ": expected two vertex ids (0-based) per line");
       }
       p = next;
+      if (v >= vertex_count) {
+        throw MeshError(path + ":" + std::to_string(number) + ": vertex id " + std::to_string(v) +
+                        " out of range (" + std::to_string(vertex_count) + " vertices)");
+      }
     }
     skip_space();
     if (p != end) {

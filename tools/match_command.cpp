@@ -2,14 +2,13 @@
 
 #include <cinttypes>
 #include <cstdio>
-#include <memory>
 #include <optional>
 #include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "json_text.hpp"
+#include "option_checks.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/read_graph.hpp"
@@ -48,11 +47,7 @@ struct MatchReport {
   bool written;
 };
 
-void write_stats_json(const MatchReport& r) {
-  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(r.args.stats_json.c_str(), "w"),
-                                                       &std::fclose);
-  if (!file) throw std::runtime_error("cannot write " + r.args.stats_json);
-  std::FILE* out = file.get();
+void print_stats_json(std::FILE* out, const MatchReport& r) {
   std::fprintf(out, "{\n  \"input\": %s,\n  \"output\": %s,\n  \"format\": %s,\n",
                json_string(r.args.input).c_str(), json_string(r.args.output).c_str(),
                json_string(std::string(to_string(r.format))).c_str());
@@ -97,6 +92,11 @@ void write_stats_json(const MatchReport& r) {
                r.read_seconds, r.match_seconds, r.write_seconds, r.total_seconds);
 }
 
+// Whole or not at all (write_printed).
+void write_stats_json(const MatchReport& r) {
+  write_printed(r.args.stats_json, [&](std::FILE* out) { print_stats_json(out, r); });
+}
+
 }  // namespace
 
 CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
@@ -126,7 +126,9 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
   cmd->add_option("--seed", args.seed, "seed of the random orders (auto, sg, ps)")
       ->capture_default_str();
   cmd->add_option("--stats-json", args.stats_json,
-                  "also write the summary as one JSON object to this file");
+                  "also write the summary as one JSON object to this file (whole, then renamed "
+                  "into place)")
+      ->check(in_existing_folder());
   cmd->add_flag("--require-perfect", args.require_perfect,
                 "exit with code 3, writing nothing, when the graph has no perfect matching");
   return cmd;

@@ -1,14 +1,16 @@
 // petersen: any mesh -> its triangles paired into quads on the same vertices; graphs -> matchings.
 
 #include <CLI/CLI.hpp>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <memory>
 #include <optional>
 #include <vector>
 
+#include "json_text.hpp"
 #include "keep_edges.hpp"
 #include "match_command.hpp"
+#include "option_checks.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
@@ -54,6 +56,10 @@ int info(const std::string& path) {
 std::optional<std::array<double, 3>> parse_view(const std::vector<double>& view) {
   if (view.empty()) return std::nullopt;
   if (view.size() != 3) throw CLI::ValidationError("--view", "needs three numbers x,y,z");
+  const bool finite = std::isfinite(view[0]) && std::isfinite(view[1]) && std::isfinite(view[2]);
+  if (!finite || (view[0] == 0 && view[1] == 0 && view[2] == 0)) {
+    throw CLI::ValidationError("--view", "needs a finite direction that is not zero");
+  }
   return std::array<double, 3>{view[0], view[1], view[2]};
 }
 
@@ -140,7 +146,7 @@ int quad(const QuadArgs& args) {
   PolygonMesh mesh = read_mesh_warning(args.input);
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
-                              : read_keep_edges(args.keep_edges);
+                              : read_keep_edges(args.keep_edges, mesh.positions.size());
   report.options.cuts.sharp_angle_degrees = args.sharp_angle;
   report.options.max_corner_deviation = args.max_corner_deviation;
   report.options.cuts.user_edges = keep_edges;
@@ -163,10 +169,7 @@ int quad(const QuadArgs& args) {
   report.total_seconds = total.lap();
   print_summary(stdout, report);
   if (!args.stats_json.empty()) {
-    std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(args.stats_json.c_str(), "w"),
-                                                         &std::fclose);
-    if (!file) throw std::runtime_error("cannot write " + args.stats_json);
-    write_json(file.get(), report);
+    write_printed(args.stats_json, [&](std::FILE* out) { write_json(out, report); });
   }
   if (!args.render.empty()) {
     const QuadStats& s = result.stats;
@@ -259,6 +262,9 @@ int main(int argc, char** argv) {
                          "orientability, genus and the quads' worst-corner figures");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
 
+  // render_mesh's limits, checked before any work.
+  const CLI::Range picture_side(200u, 16384u);
+
   QuadArgs quad_args;
   CLI::App* quad_cmd = app.add_subcommand("quad",
                                           "Pair the triangles of any mesh into quads (a certified "
@@ -268,7 +274,8 @@ int main(int argc, char** argv) {
       ->add_option("OUT", quad_args.output,
                    "mesh to write (written whole, then renamed into place); format from the "
                    "extension (.off, .obj, .ply, optionally .gz)")
-      ->required();
+      ->required()
+      ->check(in_existing_folder());
   quad_cmd
       ->add_option("--algorithm", quad_args.algorithm,
                    "auto (the fastest pairing, then augmenting paths), sg, ps (Puli-Segal as the "
@@ -285,12 +292,16 @@ int main(int argc, char** argv) {
                    "pairs (any maximum pairing, by --algorithm) or quality (the exact "
                    "minimum-cost pairing by quad shape, certified)")
       ->capture_default_str();
-  quad_cmd->add_option("--sharp-angle", quad_args.sharp_angle,
-                       "never pair across an edge whose triangles fold by more than DEG degrees");
-  quad_cmd->add_option("--max-corner-deviation", quad_args.max_corner_deviation,
-                       "only pair two triangles whose quad's worst corner is at most DEG degrees "
-                       "from 90 (Blender's threshold mode, exact: the maximum pairing of what is "
-                       "allowed, the cheapest with --objective quality); others stay triangles");
+  quad_cmd
+      ->add_option("--sharp-angle", quad_args.sharp_angle,
+                   "never pair across an edge whose triangles fold by more than DEG degrees")
+      ->check(finite_in(0, 180));
+  quad_cmd
+      ->add_option("--max-corner-deviation", quad_args.max_corner_deviation,
+                   "only pair two triangles whose quad's worst corner is at most DEG degrees "
+                   "from 90 (Blender's threshold mode, exact: the maximum pairing of what is "
+                   "allowed, the cheapest with --objective quality); others stay triangles")
+      ->check(finite_in(0, petersen::kDegenerateQuadCost));
   quad_cmd->add_option("--keep-edges", quad_args.keep_edges,
                        "never pair across these edges: a file of vertex id pairs, one per line");
   quad_cmd
@@ -302,21 +313,32 @@ int main(int argc, char** argv) {
   quad_cmd
       ->add_option("--threads", quad_args.threads,
                    "threads for the phases that split into independent parts (0: every core)")
+      ->check(CLI::Range(0u, petersen::kMaxQuadThreads))
       ->capture_default_str();
   quad_cmd->add_flag("--all-quad", quad_args.all_quad,
                      "make every face a quad, splitting the fewest edges (certified)");
-  quad_cmd->add_flag("--keep-polygons", quad_args.keep_polygons,
-                     "with --all-quad: keep the input's polygons that are not triangles as they are");
-  quad_cmd->add_option("--stats-json", quad_args.stats_json,
-                       "also write the summary as one JSON object to this file");
+  quad_cmd->add_flag(
+      "--keep-polygons", quad_args.keep_polygons,
+      "with --all-quad: keep the input's polygons that are not triangles as they are");
+  quad_cmd
+      ->add_option("--stats-json", quad_args.stats_json,
+                   "also write the summary as one JSON object to this file (whole, then renamed "
+                   "into place)")
+      ->check(in_existing_folder());
 
-  quad_cmd->add_option("--render", quad_args.render,
-                       "also draw the result into this picture (.png or .svg)");
+  quad_cmd
+      ->add_option("--render", quad_args.render,
+                   "also draw the result into this picture (.png or .svg)")
+      ->check(in_existing_folder());
   quad_cmd->add_option("--view", quad_args.view, "--render's view direction x,y,z")
       ->delimiter(',')
       ->expected(3);
-  quad_cmd->add_option("--render-width", quad_args.render_width)->capture_default_str();
-  quad_cmd->add_option("--render-height", quad_args.render_height)->capture_default_str();
+  quad_cmd->add_option("--render-width", quad_args.render_width)
+      ->check(picture_side)
+      ->capture_default_str();
+  quad_cmd->add_option("--render-height", quad_args.render_height)
+      ->check(picture_side)
+      ->capture_default_str();
 
   RenderArgs render_args;
   CLI::App* render_cmd = app.add_subcommand(
@@ -329,8 +351,10 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
       ->delimiter(',')
       ->expected(3);
-  render_cmd->add_option("--width", render_args.width)->capture_default_str();
-  render_cmd->add_option("--height", render_args.height)->capture_default_str();
+  render_cmd->add_option("--width", render_args.width)->check(picture_side)->capture_default_str();
+  render_cmd->add_option("--height", render_args.height)
+      ->check(picture_side)
+      ->capture_default_str();
 
   GenerateArgs gen_args;
   CLI::App* gen_cmd = app.add_subcommand(

@@ -19,6 +19,24 @@ double initial_paired_percent(const QuadStats& s) {
                                 double(s.triangles);
 }
 
+// When many triangles are left beside cuts of the mesh's attributes: which causes, and the
+// --cross that lets pairs cross them (crossable_cuts_behind_left).
+void print_left_causes(std::FILE* out, const QuadStats& s) {
+  const auto behind = crossable_cuts_behind_left(s);
+  if (behind.empty()) return;
+  std::string causes, flag;
+  for (const auto& [cause, count] : behind) {
+    const std::string name(to_string(cause));
+    causes += (causes.empty() ? "" : ", ") + name + " " + std::to_string(count);
+    flag += (flag.empty() ? "" : ",") + name;
+  }
+  std::fprintf(out,
+               "left by     %.1f %% of the triangles left, beside cut edges of the mesh's "
+               "attributes (%s); --cross %s lets pairs cross them\n",
+               100.0 * double(s.triangles_left) / double(s.triangles), causes.c_str(),
+               flag.c_str());
+}
+
 }  // namespace
 
 void print_summary(std::FILE* out, const RunReport& r) {
@@ -73,15 +91,17 @@ void print_summary(std::FILE* out, const RunReport& r) {
                s.maximum_certified ? "certified" : "NOT certified");
   std::fprintf(out, "pairs       %" PRIu64 "  triangles left %" PRIu64 " (%.4f s)\n", s.pairs,
                s.triangles_left, s.quads_seconds);
+  print_left_causes(out, s);
   std::fprintf(out,
                "quality     median %.2f, 95th percentile %.2f degrees, %" PRIu64
                " non-convex, total %.4f%s\n",
                s.quality_median, s.quality_p95, s.nonconvex_quads, s.objective_total,
                s.optimality_certified ? " (minimum certified)" : "");
   if (r.options.max_corner_deviation) {
-    std::fprintf(out, "threshold   quads of at most %g degrees; %" PRIu64 " pairs over it cut\n",
+    std::fprintf(out, "threshold   quads of at most %g degrees; %" PRIu64 " pairs over it cut%s\n",
                  *r.options.max_corner_deviation,
-                 s.cuts.by_cause[static_cast<int>(CutCause::shape)]);
+                 s.cuts.by_cause[static_cast<int>(CutCause::shape)],
+                 quality ? "" : "; any pairs within it, --objective quality picks the cheapest");
   }
   if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
     std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",

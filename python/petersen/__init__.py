@@ -12,6 +12,7 @@ the face, edge or node) raised as ``ValueError``.
 
 from __future__ import annotations
 
+import math
 import numbers
 import warnings
 from dataclasses import dataclass, field
@@ -214,21 +215,44 @@ def quadrangulate(
     ``attributes`` (``Attributes``, as ``read_mesh`` gives them) no quad crosses a texture or
     normal seam or a border between materials, groups, objects, smoothing groups or face property
     values, unless ``cross`` names that cause (``CROSSABLE``, e.g. ``cross=["uv_seam"]``); the
-    result's ``attributes`` carry them to the quads.
+    result's ``attributes`` carry them to the quads. That is the only difference between
+    ``quadrangulate(mesh)`` and ``quadrangulate(mesh.V, mesh.F)``: the same options give the same
+    pairs whenever the attributes cut no edge. Flat shading cuts none (a triangle whose corner
+    normals all lie along its own normal makes no normal seam with another such triangle), so a
+    flat-shaded mesh with no other attributes pairs the same either way. When more than 2 % of
+    the triangles are left and attribute cuts exist, ``stats["cross_to_pair"]`` maps those causes
+    to their cut edge counts: ``cross=list(r.stats["cross_to_pair"])`` lets pairs cross them.
 
-    Raises ``ValueError`` with the library's message for a bad mesh (a vertex index out of range,
-    a face of fewer than three corners, a leftover triangle ``all_quad`` cannot reach), an
-    unknown algorithm, augment or objective; ``TypeError`` for faces that are not integers.
+    Raises ``ValueError`` with the library's message for a bad mesh (a coordinate that is not
+    finite, naming the vertex; a vertex index out of range; a face of fewer than three corners; no
+    faces at all; a leftover triangle ``all_quad`` cannot reach), for ``max_corner_deviation``
+    outside [0, 270] or ``sharp_angle`` outside [0, 180] (either not finite), ``threads`` above
+    1024, or an unknown algorithm, augment or objective; ``TypeError`` for faces that are not
+    integers or an angle that is not a number.
     """
     V, F, attributes = _mesh_parts(V, F, attributes, "quadrangulate")
     if isinstance(cross, str):
         raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
     r = _petersen.quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
-        None if sharp_angle is None else float(sharp_angle), keep_edges,
-        None if max_corner_deviation is None else float(max_corner_deviation), attributes,
+        _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
+        _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
         [str(c) for c in cross], _threads(threads))
     return QuadResult(**r)
+
+
+def _degrees(name: str, value: Optional[float], high: float) -> Optional[float]:
+    """An angle option as the library takes it: None, or a finite number of degrees in
+    [0, high]; ``ValueError`` naming the keyword otherwise (NaN fails every comparison)."""
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a number of degrees, not {value!r}")
+    degrees = float(value)
+    if not (math.isfinite(degrees) and 0.0 <= degrees <= high):
+        raise ValueError(f"{name} must be a finite number of degrees in [0, {high:g}], "
+                         f"not {value!r}")
+    return degrees
 
 
 def _threads(threads: int) -> int:
@@ -295,10 +319,12 @@ def write_mesh(
     (other cell blocks, data of several values per point) is warned as ``DroppedWarning``.
     ``attributes`` (``Attributes``, as ``read_mesh`` gives them) are written as the format can:
     returns one line per kind of thing it has no place for (e.g. corner normals in a PLY), each
-    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a temporary file beside ``path`` and renamed into
-    place. Reading it back gives the same positions, faces and written attributes. Raises
-    ``ValueError`` for an unknown extension, an index out of range, attributes of the wrong size
-    or a path that cannot be written.
+    also warned as ``DroppedWarning``; empty when everything was written. Atomic: written to a
+    temporary file beside ``path`` and renamed into place, so a failed write leaves no partial
+    file and an existing one whole. Reading it back gives the same positions, faces and written
+    attributes. Raises ``ValueError`` for a coordinate that is not finite (naming the vertex), an
+    unknown extension, an index out of range, attributes of the wrong size or a path that cannot
+    be written.
     """
     V, F, attributes = _mesh_parts(V, F, attributes, "write_mesh")
     dropped = _petersen.write_mesh(str(path), V, F, attributes)
@@ -376,10 +402,10 @@ def min_cost_matching(
     """The matching of least total cost among the maximum matchings of any (multi)graph.
 
     ``edges`` is an (e, 2) integer array over nodes 0..n-1 (parallel edges and loops allowed; a
-    loop is never matched), ``costs`` one integer per edge (at most 2^40 in absolute value; scale and round real costs
-    first). A perfect matching when the
-    graph has one. Exact: Edmonds' primal-dual blossom algorithm, as ``petersen match --objective
-    cost`` and ``quadrangulate(objective="quality")``; its dual solution is checked by an
+    loop is never matched), ``costs`` one integer per edge (at most 2^40 in absolute value;
+    scale and round real costs first). A perfect matching when the graph has one. Exact:
+    Edmonds' primal-dual blossom algorithm, as ``petersen match --objective cost`` and
+    ``quadrangulate(objective="quality")``; its dual solution is checked by an
     independent verifier before the answer is returned. ``threads`` as in ``quadrangulate``
     (0: every core; the answer does not depend on it). Raises ``ValueError`` for a node out of
     range, or a cost out of range or of the wrong count, ``TypeError`` for costs that are not
@@ -418,9 +444,9 @@ def render(
     width: int = 800,
     height: int = 800,
 ) -> None:
-    """Draws a mesh into a PNG or SVG picture (by the extension of ``path``), as ``petersen render``.
+    """Draws a mesh into a PNG or SVG picture, as ``petersen render``.
 
-    A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
+    The format is the extension of ``path``. A shaded orthographic view along ``view`` (automatic when None), face edges drawn, quads
     coloured by ``quad_quality`` with a colour bar, triangles highlighted when the mesh has quads,
     vertices from ``first_added_vertex`` on drawn as dots, the ``caption`` lines underneath.
     ``V`` may be a mesh object instead of positions (``F`` then omitted), as in ``write_mesh``;

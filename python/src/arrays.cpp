@@ -1,5 +1,6 @@
 #include "arrays.hpp"
 
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -40,6 +41,13 @@ Positions positions_from(const py::handle& V) {
   const double* data = array.data();
   for (std::size_t i = 0; i < positions.size(); ++i) {
     positions[i] = {data[3 * i], data[3 * i + 1], data[3 * i + 2]};
+    if (!std::isfinite(data[3 * i]) || !std::isfinite(data[3 * i + 1]) ||
+        !std::isfinite(data[3 * i + 2])) {
+      const py::tuple xyz = py::make_tuple(data[3 * i], data[3 * i + 1], data[3 * i + 2]);
+      throw py::value_error(
+          "V: vertex " + std::to_string(i) +
+          " has a coordinate that is not finite: " + py::repr(xyz).cast<std::string>());
+    }
   }
   return positions;
 }

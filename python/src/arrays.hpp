@@ -21,7 +21,9 @@ namespace py = pybind11;
 py::array_t<std::int64_t, py::array::c_style> integer_array(const py::handle& obj,
                                                             const char* what);
 
-/// V, an (n, 3) array-like of numbers, as positions. Throws ValueError for another shape.
+/// V, an (n, 3) array-like of numbers, as positions. Throws ValueError for another shape, and
+/// naming the vertex for a coordinate that is not finite (NaN, ±inf): the one check of the
+/// module's every entry that takes positions.
 Positions positions_from(const py::handle& V);
 
 /// F, an (m, k) integer array (every face k corners, k >= 3) or a sequence of faces (each a

@@ -137,6 +137,12 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.cross = causes_from(cross);
   options.threads = threads;
   const PolygonMesh mesh = mesh_from(V, F, attributes);
+  // The library pairs an empty mesh into an empty result; here, as in `petersen quad`, no faces
+  // is a mistake worth naming (an empty array, or a mesh object that was not filled).
+  if (mesh.face_count() == 0) {
+    throw py::value_error("quadrangulate: the mesh has no faces (" +
+                          std::to_string(mesh.positions.size()) + " vertices): nothing to pair");
+  }
   QuadResult result;
   {
     py::gil_scoped_release release;

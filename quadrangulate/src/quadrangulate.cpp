@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <bit>
-#include <cmath>
-#include <stdexcept>
 #include <string>
 
 #include "all_quad.hpp"
@@ -18,6 +16,7 @@
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "shape_cuts.hpp"
+#include "validate_input.hpp"
 
 namespace petersen {
 
@@ -355,10 +354,9 @@ constexpr Step kSteps[] = {
 
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
                          PolygonMesh* movable) {
-  if (options.max_corner_deviation && std::isnan(*options.max_corner_deviation)) {
-    throw std::invalid_argument("max_corner_deviation is NaN");
-  }
   Stopwatch total, clock;
+  quad_detail::validate_options(options);
+  quad_detail::validate_positions(mesh);  // timed with the check (check_seconds)
   QuadRun run{.mesh = mesh, .options = options, .movable = movable};
   for (const Step& step : kSteps) {
     if (step.applies != nullptr && !step.applies(run)) continue;

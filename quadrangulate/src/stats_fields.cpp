@@ -2,6 +2,18 @@
 
 namespace petersen {
 
+std::vector<std::pair<CutCause, std::uint64_t>> crossable_cuts_behind_left(const QuadStats& stats) {
+  std::vector<std::pair<CutCause, std::uint64_t>> causes;
+  if (double(stats.triangles_left) <= kLeftShareToExplain * double(stats.triangles)) return causes;
+  for (int c = 0; c < kCutCauses; ++c) {
+    const CutCause cause = CutCause(c);
+    if (is_attribute_cause(cause) && stats.cuts.by_cause[c] > 0) {
+      causes.emplace_back(cause, stats.cuts.by_cause[c]);
+    }
+  }
+  return causes;
+}
+
 std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& options,
                                     const RunFigures& run) {
   std::vector<StatField> f;
@@ -62,6 +74,11 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   add("maximum_certified", s.maximum_certified);
   u("pairs", s.pairs);
   u("triangles_left", s.triangles_left);
+  if (const auto behind = crossable_cuts_behind_left(s); !behind.empty()) {
+    std::vector<std::pair<std::string, std::uint64_t>> by_name;
+    for (const auto& [cause, count] : behind) by_name.emplace_back(to_string(cause), count);
+    add("cross_to_pair", std::move(by_name));
+  }
   d("quality_median", s.quality_median);
   d("quality_p95", s.quality_p95);
   u("nonconvex_quads", s.nonconvex_quads);

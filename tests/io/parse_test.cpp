@@ -192,6 +192,50 @@ TEST(ParsePly, BinaryErrorsNameTheElement) {
             (std::vector<std::vector<VertexId>>{{0, 1, 2, 0}}));
 }
 
+// x, y, z stored together as float or double, either byte order (the readers' fast path) and
+// ascii: a coordinate that is not finite is refused, naming the vertex and the axis.
+template <class Real>
+std::string xyz_ply(const std::string& format, Real bad) {
+  const std::string type = sizeof(Real) == 8 ? "double" : "float";
+  std::string out = "ply\nformat " + format + " 1.0\nelement vertex 3\nproperty " + type +
+                    " x\nproperty " + type + " y\nproperty " + type +
+                    " z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  const Real xyz[3][3] = {{0, 0, 0}, {1, bad, 0}, {0, 1, 0}};
+  if (format == "ascii") {
+    for (const auto& p : xyz) {
+      out += std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+    }
+    return out + "3 0 1 2\n";
+  }
+  const bool big = format == "binary_big_endian";
+  auto put = [&](const void* p, std::size_t n) {
+    std::string raw(static_cast<const char*>(p), n);
+    if (big) raw = std::string(raw.rbegin(), raw.rend());
+    out += raw;
+  };
+  for (const auto& p : xyz)
+    for (const Real& value : p) put(&value, sizeof(Real));
+  const std::uint8_t three = 3;
+  put(&three, 1);
+  for (std::int32_t v : {0, 1, 2}) put(&v, 4);
+  return out;
+}
+
+TEST(ParsePly, NonFiniteCoordinatesAreRefusedInEveryEncoding) {
+  for (const std::string format : {"binary_little_endian", "binary_big_endian", "ascii"}) {
+    for (double bad : {std::nan(""), HUGE_VAL, -HUGE_VAL}) {
+      SCOPED_TRACE(format + " " + std::to_string(bad));
+      const std::string expected =
+          format == "ascii" ? "in:11: vertex 1: bad value" : "in: vertex 1: non-finite y";
+      EXPECT_ERROR(xyz_ply<double>(format, bad), MeshFormat::ply, expected);
+      EXPECT_ERROR(xyz_ply<float>(format, float(bad)), MeshFormat::ply, expected);
+    }
+    // The same bytes with a finite y are read.
+    const PolygonMesh mesh = parse_mesh(xyz_ply<double>(format, 0.5), MeshFormat::ply, "in");
+    EXPECT_EQ(mesh.positions[1], (std::array<double, 3>{1, 0.5, 0}));
+  }
+}
+
 // The error's file and line are the message's: the line of a text file, none (0) in a binary
 // PLY's records, whose message names the element and the byte.
 TEST(ParseErrors, CarryTheFileAndTheLine) {

@@ -56,10 +56,14 @@ TEST(Threshold, CutsPairsOverItAndLeavesTheirTriangles) {
     EXPECT_NEAR(tight.stats.quality_median, 0, 1e-9);
     // The rhombus's diagonal, and the edge 1-2 between the shapes (its quad is far worse).
     EXPECT_EQ(tight.stats.cuts.by_cause[int(CutCause::shape)], 2u);
-    const QuadResult none = run(-1);
-    EXPECT_EQ(none.stats.pairs, 0u);
-    EXPECT_EQ(none.stats.cuts.by_cause[int(CutCause::shape)], 3u);
+    // The least threshold, 0, allows exact right angles only: the square's quad.
+    const QuadResult square_only = run(0);
+    EXPECT_EQ(square_only.stats.pairs, 1u);
+    EXPECT_EQ(square_only.stats.cuts.by_cause[int(CutCause::shape)], 2u);
+    EXPECT_NEAR(square_only.stats.quality_p95, 0, 1e-12);
   }
+  // Below the measure's range no quad could pass: refused, like NaN (validation_test.cpp).
+  EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = -1}), std::invalid_argument);
   EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = std::nan("")}), std::invalid_argument);
   // The threshold's cuts are the caller's own: never crossed.
   EXPECT_THROW(quadrangulate(mesh, {.max_corner_deviation = 20, .cross = {CutCause::shape}}),

@@ -68,11 +68,19 @@ grep -q "^4 0 1 2 3$" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAI
 check "info on a mixed mesh" "$petersen" info "$work/mixed-q.off"
 grep -q "^quality: 2 quads, worst corner median 0.0" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: info lacks the quality figures"; cat "$work/out"; }
-# The threshold mode: a pair over it is a cut of cause shape and its triangles stay.
-check "a threshold no quad meets" "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" \
-  --max-corner-deviation -1 --objective quality --stats-json "$work/mixed-t.json"
+# The threshold mode: a pair over it is a cut of cause shape and its triangles stay. Vertex 5
+# moved off the square makes the pair's quad a trapezoid, 26.6 degrees off at its worst corner.
+sed 's/^2 1 0$/2.5 1 0/' "$work/mixed.off" >"$work/trapezoid.off"
+check "a threshold no quad meets" "$petersen" quad "$work/trapezoid.off" "$work/mixed-t.off" \
+  --max-corner-deviation 1 --objective quality --stats-json "$work/mixed-t.json"
 grep -q '"shape": 1' "$work/mixed-t.json" && grep -q '"triangles_left": 2,' "$work/mixed-t.json" || {
   failed=$((failed + 1)); echo "FAILED: threshold"; cat "$work/mixed-t.json"; }
+! grep -q "picks the cheapest" "$work/out" || { failed=$((failed + 1)); echo "FAILED: hint"; }
+# The threshold alone pairs within it at random: the summary points to --objective quality.
+check "a threshold alone" "$petersen" quad "$work/trapezoid.off" "$work/mixed-t.off" \
+  --max-corner-deviation 1
+grep -q "^threshold .*--objective quality picks the cheapest" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: threshold hint"; cat "$work/out"; }
 refuses "--cross shape" "not a cut of the mesh's attributes" \
   "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
 # A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
@@ -82,11 +90,86 @@ refuses "all-quad on a degenerate triangle" "repeats a vertex" \
   "$petersen" quad "$work/degenerate.off" "$work/keep.off" --all-quad
 cmp -s "$work/keep.off" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: OUT damaged"; }
 ls "$work" | grep -q "tmp" && { failed=$((failed + 1)); echo "FAILED: a temporary file was left"; }
+# Nor does one that fails on its stats: OUT is written (whole), the old stats file stays whole.
+mkdir "$work/stats-folder"
+refuses "--stats-json onto a folder" "stats-folder" \
+  "$petersen" quad "$work/mixed.off" "$work/keep2.off" --stats-json "$work/stats-folder"
+[ -d "$work/stats-folder" ] && [ -z "$(ls "$work/stats-folder")" ] || {
+  failed=$((failed + 1)); echo "FAILED: --stats-json damaged the folder"; }
+echo '{"old": true}' >"$work/old.json"
+printf 'OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n' >"$work/nan.off"
+refuses "NaN coordinates leave OUT and the stats as they were" "vertex 1" \
+  "$petersen" quad "$work/nan.off" "$work/keep.off" --stats-json "$work/old.json"
+cmp -s "$work/keep.off" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: OUT damaged"; }
+grep -q '"old": true' "$work/old.json" || { failed=$((failed + 1)); echo "FAILED: stats damaged"; }
+ls "$work" | grep -q "tmp" && { failed=$((failed + 1)); echo "FAILED: a temporary file was left"; }
 # OUT may be the input: it is read whole before anything is written.
 cp "$work/mixed.off" "$work/same.off"
 check "OUT is IN" "$petersen" quad "$work/same.off" "$work/same.off"
 grep -q "^4 0 1 2 3$" "$work/same.off" || { failed=$((failed + 1)); echo "FAILED: OUT is IN"; }
 
+# Coordinates that are not finite, in every reader: refused naming the file, line or element,
+# and the vertex. The binary PLYs hold x, y, z as little-endian doubles, then as big-endian floats.
+printf 'v 0 0 0\nv 1 0 -inf\nv 0 1 0\nf 1 2 3\n' >"$work/inf.obj"
+ply_head() {  # ply_head FORMAT TYPE
+  printf 'ply\nformat %s 1.0\nelement vertex 3\nproperty %s x\nproperty %s y\nproperty %s z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n' "$1" "$2" "$2" "$2"
+}
+{ ply_head ascii float; printf '0 0 0\n1 NaN 0\n0 1 0\n3 0 1 2\n'; } >"$work/nan-ascii.ply"
+zero8='\x00\x00\x00\x00\x00\x00\x00\x00' one8='\x00\x00\x00\x00\x00\x00\xf0\x3f'
+nan8='\x00\x00\x00\x00\x00\x00\xf8\x7f'
+{ ply_head binary_little_endian double
+  printf "$zero8$zero8$zero8$one8$nan8$zero8$zero8$one8$zero8"
+  printf '\x03\x00\x00\x00\x00\x01\x00\x00\x00\x02\x00\x00\x00'; } >"$work/nan-le.ply"
+zero4='\x00\x00\x00\x00' one4='\x3f\x80\x00\x00' inf4='\xff\x80\x00\x00'
+{ ply_head binary_big_endian float
+  printf "$zero4$zero4$zero4$one4$inf4$zero4$zero4$one4$zero4"
+  printf '\x03\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x02'; } >"$work/inf-be.ply"
+refuses "NaN in an OFF" "nan.off:4: vertex 1" "$petersen" quad "$work/nan.off" "$work/x.off"
+refuses "-inf in an OBJ" "inf.obj:2: vertex 1" "$petersen" quad "$work/inf.obj" "$work/x.off"
+refuses "NaN in an ascii PLY" "nan-ascii.ply:11: vertex 1" \
+  "$petersen" quad "$work/nan-ascii.ply" "$work/x.off"
+refuses "NaN in a binary PLY of doubles" "nan-le.ply: vertex 1: non-finite y" \
+  "$petersen" quad "$work/nan-le.ply" "$work/x.off"
+refuses "-inf in a big-endian PLY of floats" "inf-be.ply: vertex 1: non-finite y" \
+  "$petersen" quad "$work/inf-be.ply" "$work/x.off"
+# Empty input: no faces is no mesh to pair.
+printf 'OFF\n0 0 0\n' >"$work/empty.off"
+printf 'v 0 0 0\nv 1 0 0\n' >"$work/points.obj"
+refuses "an OFF with no faces" "empty.off: no faces" "$petersen" quad "$work/empty.off" "$work/x.off"
+refuses "an OBJ of vertices only" "points.obj: no faces" \
+  "$petersen" quad "$work/points.obj" "$work/x.off"
+# Options out of range: CLI11 names the flag, before any file is read.
+for spec in "--max-corner-deviation nan" "--max-corner-deviation -1" \
+  "--max-corner-deviation 270.5" "--sharp-angle 181" "--sharp-angle inf" "--threads 1025" \
+  "--render-width 10" "--stats-json $work/no-such-folder/s.json"; do
+  read -r flag value <<<"$spec"
+  refuses "$flag $value" "$flag" "$petersen" quad "$work/mixed.off" "$work/x.off" "$flag" "$value"
+done
+refuses "--view zero" "--view" "$petersen" quad "$work/mixed.off" "$work/x.off" \
+  --render "$work/x.png" --view 0,0,0
+refuses "OUT in no folder" "no such folder" "$petersen" quad "$work/mixed.off" "$work/nope/x.off"
+check "the ends of the ranges" "$petersen" quad "$work/mixed.off" "$work/x.off" \
+  --max-corner-deviation 270 --sharp-angle 0 --threads 1024
+
+# Triangles left by attribute cuts: the summary and the stats name the causes and the --cross
+# that lets pairs cross them. A square of two triangles in two materials: both are left.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl a\nf 1 2 3\nusemtl b\nf 1 3 4\n' \
+  >"$work/materials.obj"
+check "two materials" "$petersen" quad "$work/materials.obj" "$work/x.obj" \
+  --stats-json "$work/materials.json"
+grep -q "100.0 % of the triangles left.*(material 1); --cross material lets" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: the summary does not say why"; cat "$work/out"; }
+grep -q '"cross_to_pair": {"material": 1}' "$work/materials.json" || {
+  failed=$((failed + 1)); echo "FAILED: the stats do not say why"; cat "$work/materials.json"; }
+check "two materials crossed" "$petersen" quad "$work/materials.obj" "$work/x.obj" \
+  --cross material --stats-json "$work/materials.json"
+grep -q '"triangles_left": 0,' "$work/materials.json" &&
+  ! grep -q "cross_to_pair" "$work/materials.json" && ! grep -q "^left by" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: --cross material"; cat "$work/out"; }
+
+printf '0 1\n# a comment\n1 7\n' >"$work/keep-edges.txt"
+refuses "--keep-edges out of range" "keep-edges.txt:3: vertex id 7 out of range (6 vertices)" \
+  "$petersen" quad "$work/mixed.off" "$work/x.off" --keep-edges "$work/keep-edges.txt"
 refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "$work/x.obj"
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \

@@ -38,6 +38,10 @@ enum class Objective {
 std::string_view to_string(Objective objective);
 std::optional<Objective> parse_objective(std::string_view name);
 
+/// The most threads QuadOptions::threads may ask for: more than any machine has cores, few enough
+/// that a mistyped count cannot start a thread per block of a large mesh.
+inline constexpr std::uint32_t kMaxQuadThreads = 1024;
+
 struct QuadOptions {
   /// The algorithm for the closed components: auto, sg, ps, ds, gw, frink, lemon or lrs. lrs works
   /// on each closed, connected, orientable manifold component (it flips edges, see LrsResult); a
@@ -81,6 +85,7 @@ struct QuadOptions {
   /// triangles. With all_quad those are still split into quads, which the threshold does not
   /// judge (it says which pairs are allowed, not what the splits look like). Algorithm::lrs is
   /// matched by ps under a threshold, since its flips would make quads the threshold never saw.
+  /// Degrees in [0, 270], the measure's range.
   std::optional<double> max_corner_deviation = {};
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
   /// and borders of the mesh's attributes (petersen/dualize/pairable_graph.hpp).
@@ -103,8 +108,8 @@ struct QuadOptions {
   PeerMatcher peer = nullptr;
   /// Threads for the phases that split into independent parts (grouping the halfedges and
   /// classifying the edges, the quads' measure, the minimum-cost matching's short searches); 0:
-  /// every core. Threads are started for the call and joined before it returns. The result does
-  /// not depend on it.
+  /// every core; at most kMaxQuadThreads. Threads are started for the call and joined before it
+  /// returns. The result does not depend on it.
   std::uint32_t threads = 1;
   /// Whether QuadResult::sources is filled. A caller that does not read them (the command-line
   /// tool) turns this off: lrs then need not find each quad's triangles among the input's, and the
@@ -200,9 +205,15 @@ struct QuadResult {
 };
 
 /// Pairs the triangles of any polygon mesh (see the top of this file). Throws MeshError naming the
-/// face for a corner out of range or a face of fewer than three corners, MeshError when all_quad
-/// proves that no all-quad mesh exists (see QuadOptions::all_quad). O(n log d) plus the algorithm's
-/// cost.
+/// vertex for a coordinate that is not finite (NaN or infinite, referenced or not), MeshError
+/// naming the face for a corner out of range or a face of fewer than three corners, MeshError when
+/// all_quad proves that no all-quad mesh exists (see QuadOptions::all_quad); std::invalid_argument
+/// naming the option and its value for max_corner_deviation outside [0, 270]
+/// (quad_corner_deviation's range), cuts.sharp_angle_degrees outside [0, 180], either not finite,
+/// threads above kMaxQuadThreads, or a cause in `cross` that cannot be crossed, all before any
+/// work. A mesh with no faces is no error here: its result is empty (no pairs, no triangles left,
+/// maximum_certified), and the callers that need a mesh (`petersen quad`, the Python module) refuse
+/// it themselves. O(n log d) plus the algorithm's cost.
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
 /// The same, consuming the mesh: its positions move into the output mesh instead of being copied
 /// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles), and without
