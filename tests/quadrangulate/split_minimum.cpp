@@ -170,7 +170,7 @@ SplitMinimum fewest_splits(const PolygonMesh& input, const QuadResult& result, b
   // Each subset of the hyperedges: feasible when every component without the sink has an even
   // number of odd faces; its least splits then by the pairings of each component's odd faces.
   std::map<std::uint32_t, std::vector<std::uint64_t>> distance_cache;
-  SplitMinimum answer{SplitMinimum::Status::infeasible, kInfinite};
+  SplitMinimum answer{SplitMinimum::Status::infeasible, kInfinite, kInfinite};
   bool past_limits = false;
   const std::size_t subsets = std::size_t{1} << choices.hyperedges.size();
   for (std::size_t s = 0; s < subsets; ++s) {
@@ -201,10 +201,11 @@ SplitMinimum fewest_splits(const PolygonMesh& input, const QuadResult& result, b
     }
     for (const auto& [root, members] : odd_by_component)
       splits += least_pairing(members, distance_cache, choices);
-    if (splits < answer.splits) answer = {SplitMinimum::Status::found, splits};
+    if (s == 0) answer.splits_without_non_manifold = splits;
+    if (splits < answer.splits) answer.status = SplitMinimum::Status::found, answer.splits = splits;
   }
   // A feasible subset not searched may hold a smaller minimum: then nothing is known but that.
-  if (past_limits) return {SplitMinimum::Status::too_large, 0};
+  if (past_limits) return {SplitMinimum::Status::too_large, 0, 0};
   if (answer.status == SplitMinimum::Status::infeasible) answer.splits = 0;
   return answer;
 }
