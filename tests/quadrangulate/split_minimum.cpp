@@ -24,14 +24,14 @@ PreSplitFaces pre_split_faces(const PolygonMesh& input, const QuadResult& result
                               bool keep_polygons, bool flips_allowed) {
   PreSplitFaces faces;
   std::set<std::pair<FaceId, FaceId>> seen;
-  for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
+  for (FaceId o = 0; o < result.sources.size(); ++o) {
     const auto [f, g] = result.sources[o];
     if (f == kNoFace || !seen.insert({f, g}).second) continue;
-    const auto out = result.mesh.face(o);
-    const bool flipped =
-        flips_allowed && g == kNoFace && input.arity(f) == 3 && out.size() == 4 &&
-        std::all_of(out.begin(), out.end(), [&](VertexId v) { return v < input.positions.size(); });
-    if (flipped) continue;
+    if (flips_allowed && g == kNoFace && input.arity(f) == 3 && o < result.mesh.face_count()) {
+      const auto out = result.mesh.face(o);
+      auto input_vertex = [&](VertexId v) { return v < input.positions.size(); };
+      if (out.size() == 4 && std::all_of(out.begin(), out.end(), input_vertex)) continue;
+    }
     const auto t = input.face(f);
     std::vector<VertexId> cycle(t.begin(), t.end());
     if (g != kNoFace) {
