@@ -24,14 +24,14 @@ PreSplitFaces pre_split_faces(const PolygonMesh& input, const QuadResult& result
                               bool keep_polygons, bool flips_allowed) {
   PreSplitFaces faces;
   std::set<std::pair<FaceId, FaceId>> seen;
-  for (FaceId o = 0; o < result.mesh.face_count(); ++o) {
+  for (FaceId o = 0; o < result.sources.size(); ++o) {
     const auto [f, g] = result.sources[o];
     if (f == kNoFace || !seen.insert({f, g}).second) continue;
-    const auto out = result.mesh.face(o);
-    const bool flipped =
-        flips_allowed && g == kNoFace && input.arity(f) == 3 && out.size() == 4 &&
-        std::all_of(out.begin(), out.end(), [&](VertexId v) { return v < input.positions.size(); });
-    if (flipped) continue;
+    if (flips_allowed && g == kNoFace && input.arity(f) == 3 && o < result.mesh.face_count()) {
+      const auto out = result.mesh.face(o);
+      auto input_vertex = [&](VertexId v) { return v < input.positions.size(); };
+      if (out.size() == 4 && std::all_of(out.begin(), out.end(), input_vertex)) continue;
+    }
     const auto t = input.face(f);
     std::vector<VertexId> cycle(t.begin(), t.end());
     if (g != kNoFace) {
@@ -170,7 +170,7 @@ SplitMinimum fewest_splits(const PolygonMesh& input, const QuadResult& result, b
   // Each subset of the hyperedges: feasible when every component without the sink has an even
   // number of odd faces; its least splits then by the pairings of each component's odd faces.
   std::map<std::uint32_t, std::vector<std::uint64_t>> distance_cache;
-  SplitMinimum answer{SplitMinimum::Status::infeasible, kInfinite};
+  SplitMinimum answer{SplitMinimum::Status::infeasible, kInfinite, kInfinite};
   bool past_limits = false;
   const std::size_t subsets = std::size_t{1} << choices.hyperedges.size();
   for (std::size_t s = 0; s < subsets; ++s) {
@@ -201,10 +201,11 @@ SplitMinimum fewest_splits(const PolygonMesh& input, const QuadResult& result, b
     }
     for (const auto& [root, members] : odd_by_component)
       splits += least_pairing(members, distance_cache, choices);
-    if (splits < answer.splits) answer = {SplitMinimum::Status::found, splits};
+    if (s == 0) answer.splits_without_non_manifold = splits;
+    if (splits < answer.splits) answer.status = SplitMinimum::Status::found, answer.splits = splits;
   }
   // A feasible subset not searched may hold a smaller minimum: then nothing is known but that.
-  if (past_limits) return {SplitMinimum::Status::too_large, 0};
+  if (past_limits) return {SplitMinimum::Status::too_large, 0, 0};
   if (answer.status == SplitMinimum::Status::infeasible) answer.splits = 0;
   return answer;
 }

@@ -31,6 +31,9 @@ struct SplitMinimum {
   };
   Status status = Status::too_large;
   std::uint64_t splits = 0;
+  /// With `found`: the fewest splits that split no edge of three or more faces (a large value
+  /// when none do).
+  std::uint64_t splits_without_non_manifold = 0;
 };
 
 /// The fewest splits for the pairing `result` made of `input` (see the top of this file), when a
