@@ -90,6 +90,10 @@ void check_sizes(const PolygonMesh& mesh, const CutOptions& cuts) {
   check(cuts.face_object, mesh.face_count(), "objects per face");
   check(cuts.face_smoothing, mesh.face_count(), "smoothing groups per face");
   check(cuts.face_property, mesh.face_count(), "face properties per face");
+  if (!cuts.face_flat.empty() && cuts.face_flat.size() != mesh.face_count()) {
+    throw MeshError("flat-shading flags per face has " + std::to_string(cuts.face_flat.size()) +
+                    " entries for " + std::to_string(mesh.face_count()));
+  }
   for (const auto& [a, b] : cuts.user_edges) {
     if (a >= mesh.positions.size() || b >= mesh.positions.size()) {
       throw MeshError("cut edge (" + std::to_string(a) + ", " + std::to_string(b) +
@@ -342,7 +346,9 @@ class PairableGraphBuilder {
       return !id.empty() && (id[e.h1] != id[a2] || id[half_.next(e.h1)] != id[b2]);
     };
     if (seam(cuts_.corner_uv)) return CutCause::uv_seam;
-    if (seam(cuts_.corner_normal)) return CutCause::normal_seam;
+    const bool both_flat =
+        !cuts_.face_flat.empty() && cuts_.face_flat[e.f1] && cuts_.face_flat[e.f2];
+    if (!both_flat && seam(cuts_.corner_normal)) return CutCause::normal_seam;
     auto border = [&](std::span<const std::uint32_t> id) {
       return !id.empty() && id[e.f1] != id[e.f2];
     };

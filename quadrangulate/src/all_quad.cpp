@@ -94,7 +94,8 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   stats.centre_vertices = cut.centres;
   stats.added_vertices = stats.split_edges + stats.centre_vertices;
   stats.added_vertices_minimum = plan.minimum;
-  stats.all_quad_certified = plan.join_certified && plan.non_manifold_splits == 0;
+  stats.all_quad_certified =
+      plan.join_certified && plan.non_manifold_splits == 0 && !plan.non_manifold_beside_odd;
   record_split_quality(stats, out, cut.pieces);
   result.mesh = std::move(out);
   result.sources = std::move(cut.sources);

@@ -104,26 +104,18 @@ bool flat_shaded(const PolygonMesh& mesh, std::size_t first) {
   return true;
 }
 
-// The normal ids of `normal_ids` with every corner of a flat-shaded triangle given one id of its
-// own, shared by all of them and by no smooth corner: two flat-shaded triangles then agree at
-// their shared edge (no seam), while a flat triangle beside a smooth one, or two smooth triangles
-// whose normals differ (a hard edge), still disagree. O(C).
-std::span<const std::uint32_t> with_flat_shading(const PolygonMesh& mesh,
-                                                 std::span<const std::uint32_t> normal_ids,
-                                                 HugeVector<std::uint32_t>& storage) {
-  const std::uint32_t flat = static_cast<std::uint32_t>(mesh.attributes.normals.size());
-  if (flat == kNoAttribute) return normal_ids;  // no id left for it: seams stay as they are
-  bool any = false;
+// Per face: a flat-shaded triangle, whose normal seams with another such are shading only. Empty
+// when there is none. O(C).
+std::vector<std::uint8_t> flat_faces(const PolygonMesh& mesh) {
+  std::vector<std::uint8_t> flat;
   for (FaceId f = 0; f < mesh.face_count(); ++f) {
     if (mesh.arity(f) != 3) continue;
     const std::size_t first = mesh.all_triangles() ? 3 * std::size_t{f} : mesh.face_start[f];
     if (!flat_shaded(mesh, first)) continue;
-    if (!any && storage.data() != normal_ids.data())
-      storage.assign(normal_ids.begin(), normal_ids.end());
-    any = true;
-    storage[first] = storage[first + 1] = storage[first + 2] = flat;
+    if (flat.empty()) flat.assign(mesh.face_count(), 0);
+    flat[f] = 1;
   }
-  return any ? std::span<const std::uint32_t>(storage) : normal_ids;
+  return flat;
 }
 
 }  // namespace
@@ -151,9 +143,9 @@ CutOptions attribute_cuts(const PolygonMesh& mesh, const QuadOptions& options,
     cuts.corner_uv = by_value(a.corner_texcoord, ids_of_points(a.texcoords), ids.corner_uv);
   }
   if (wanted(cuts.corner_normal, a.corner_normal.size(), CutCause::normal_seam)) {
-    cuts.corner_normal = with_flat_shading(
-        mesh, by_value(a.corner_normal, ids_of_points(a.normals), ids.corner_normal),
-        ids.corner_normal);
+    cuts.corner_normal = by_value(a.corner_normal, ids_of_points(a.normals), ids.corner_normal);
+    ids.face_flat = flat_faces(mesh);
+    cuts.face_flat = ids.face_flat;
   }
   if (wanted(cuts.face_material, a.face_material.size(), CutCause::material)) {
     cuts.face_material =

@@ -213,6 +213,8 @@ class Planner {
       const auto& halfedges = edges_.dual[dual_edge[e]];
       add_split({halfedges.data(), std::size_t(halfedges[1] == kNoNode ? 1 : 2)});
     }
+    for (std::uint32_t h : edges_.non_manifold_halfedges)
+      plan_.non_manifold_beside_odd |= has_odd[forest_.find(half_.face(h))] != 0;
     plan_.minimum = plan_.non_manifold_splits + join.join.size();
     plan_.join_certified = join.certified;
   }

@@ -20,6 +20,9 @@ struct SplitPlan {
   std::uint64_t non_manifold_splits = 0;  ///< of the edges, those of three or more faces
   std::uint64_t minimum = 0;              ///< non_manifold_splits + the minimum T-join's size
   bool join_certified = false;            ///< the T-join's certificate passed its check
+  /// A non-manifold edge has a face in a component that holds odd faces: splitting it flips
+  /// several faces at once, which the T-join does not weigh, so fewer splits may exist.
+  bool non_manifold_beside_odd = false;
 
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_start.size() - 1); }
 };

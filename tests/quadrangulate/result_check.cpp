@@ -571,17 +571,24 @@ std::string check_attributes_kept(const PolygonMesh& input, const QuadResult& re
             expected = corner_value(a, cause, first_corner(input, f) + k);
           } else {
             std::array<double, 3> sum{0, 0, 0};
-            bool all_have = true;
+            bool all_have = true, all_equal = true;
+            Value first_value;
             for (VertexId u : parents) {
               const auto corner = source_corner(u);
               if (!corner) return "vertex " + std::to_string(u) + " is in no source face" + where;
               const Value x = corner_value(a, cause, *corner);
               all_have &= x.has_value();
+              if (u == parents.front()) first_value = x;
+              all_equal &= x == first_value;
               if (x)
                 for (int d = 0; d < 3; ++d) sum[d] += (*x)[d];
             }
             for (double& x : sum) x /= double(parents.size());
-            if (cause == CutCause::normal_seam && parents.size() > 1) {
+            // Equal values blend to themselves: a normal that is not quite of unit length (four
+            // decimals in a file) is kept as it is rather than renormalised.
+            if (all_equal && first_value) {
+              sum = *first_value;
+            } else if (cause == CutCause::normal_seam && parents.size() > 1) {
               const double length = std::hypot(sum[0], sum[1], sum[2]);
               if (length > 0)
                 for (double& x : sum) x /= length;

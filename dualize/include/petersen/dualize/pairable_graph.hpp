@@ -72,6 +72,9 @@ struct CutOptions {
   std::span<const std::uint32_t> corner_uv = {}, corner_normal = {};
   std::span<const std::uint32_t> face_material = {}, face_group = {}, face_object = {},
                                  face_smoothing = {}, face_property = {};
+  /// Per face, 1 when its corner normals are only flat shading: an edge between two such faces is
+  /// no normal seam whatever their normal ids; every other edge is judged by the ids alone.
+  std::span<const std::uint8_t> face_flat = {};
 };
 
 /// The pairable graph: one node per triangle of the mesh (nodes in face order), one edge per

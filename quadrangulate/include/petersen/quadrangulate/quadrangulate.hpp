@@ -65,7 +65,9 @@ struct QuadOptions {
   /// Parity on a component enclosed by non-manifold edges (or by the polygons keep_polygons keeps)
   /// may force splits of non-manifold edges, each adding a midpoint to all of its faces: they are
   /// chosen first, by elimination over GF(2), and the minimum is then the T-join's given them
-  /// (all_quad_certified is false). Input vertices never move and the surface's topology is
+  /// (all_quad_certified is false, as it is wherever a non-manifold edge borders faces that
+  /// need splits: splitting it flips all of its faces at once, which the T-join does not weigh).
+  /// Input vertices never move and the surface's topology is
   /// unchanged. Throws MeshError only with a proof that no all-quad mesh exists (faces whose total
   /// side count stays odd whatever is split, naming an input face), or for a face repeating a
   /// vertex that would have to change.
@@ -133,7 +135,8 @@ struct QuadStats {
   /// T-join's size, plus the non-manifold splits when parity forced some).
   std::uint64_t added_vertices_minimum = 0;
   /// all_quad: the T-join's certificate passed the independent check and no non-manifold edge
-  /// was split, so split_edges = added_vertices_minimum is proved the fewest.
+  /// borders a component that needed splits, so split_edges = added_vertices_minimum is proved
+  /// the fewest.
   bool all_quad_certified = false;
   std::uint64_t split_quads = 0;  ///< faces of the output made by all_quad's cuts
   /// The faces all_quad's cuts made, by quad_corner_deviation in degrees: median and 95th
