@@ -28,9 +28,20 @@ namespace petersen {
 
 /// The triangles of one part: face first_face + i has corners corners[3i], corners[3i + 1],
 /// corners[3i + 2] (global vertex ids, any values below 2^32 - 1).
+///
+/// A sweep over the parts in face order may carry the end of the previous part into the next:
+/// then the first `carried` triangles are the previous part's, already paired, carried_partner[i]
+/// naming triangle i's partner (global id, kNoFace when unpaired). Their pairs inside the part
+/// are the initial matching and may change; a carried triangle paired outside is held fixed.
+/// Unpaired triangles of the previous part are so paired by augmenting paths into this one, and
+/// this part's own are moved to its other borders: the sweep carries them forward to where they
+/// meet a partner. Open edges and the band are those of the part's own triangles (after the
+/// carried ones) as if it were alone; partner and unpaired cover all of them.
 struct PartTriangles {
   FaceId first_face = 0;
   std::span<const VertexId> corners;
+  std::uint32_t carried = 0;
+  std::span<const FaceId> carried_partner;
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / 3); }
 };
 
@@ -74,7 +85,8 @@ struct PartPairingOptions {
 
 struct PartPairing {
   FaceId first_face = 0;
-  /// Per triangle of the part: its partner's global face id, or kNoFace. Partners are in the part.
+  /// Per triangle of the part (carried ones first): its partner's global face id, or kNoFace.
+  /// Partners are in the part, but for carried triangles held fixed.
   HugeVector<FaceId> partner;
   std::vector<FaceId> unpaired;      ///< global ids, ascending
   std::vector<OpenEdge> open_edges;  ///< ascending by (low, high, face)
@@ -91,7 +103,9 @@ struct PartPairing {
   double seconds = 0;
 };
 
-/// Pairs the triangles of one part (see the top of this file). Throws MeshError naming the
+/// Pairs the triangles of one part (see the top of this file). Throws std::invalid_argument when
+/// carried_partner does not have `carried` entries or names a partner that does not name it back
+/// (both inside the part). Throws MeshError naming the
 /// global face for a corner equal to 2^32 - 1 or a part past 2^32 - 1 faces; throws
 /// std::logic_error if the pairing fails its verifier. O(m log m) for m triangles (the vertex
 /// renumbering), plus the pairable graph and the matching (maximum_matching, augment.hpp).
