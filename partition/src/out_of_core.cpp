@@ -20,8 +20,9 @@ namespace {
 
 using partition_detail::TempFaceArray;
 
-// What pair_part costs per triangle at its peak (the part's corners read from the file
-// included), measured on closed plates of 10^7-10^8 triangles: see docs/distributed.md.
+// What a part costs per triangle at the part step's peak, its corners read from the file
+// included: 125 bytes per triangle of the largest part, measured on the closed 10^8 plate
+// (docs/distributed.md); parts are sized for 1.5 times their size (next_carry), which covers it.
 constexpr std::uint64_t kBytesPerTriangle = 120;
 // Kept back from the limit for what does not scale with the part: the bands and open edges of all
 // parts, the buffers and the program itself.

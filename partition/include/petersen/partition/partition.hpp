@@ -39,9 +39,9 @@ namespace petersen {
 /// carried ones) as if it were alone; partner and unpaired cover all of them.
 struct PartTriangles {
   FaceId first_face = 0;
-  std::span<const VertexId> corners;
+  std::span<const VertexId> corners = {};
   std::uint32_t carried = 0;
-  std::span<const FaceId> carried_partner;
+  std::span<const FaceId> carried_partner = {};
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / 3); }
 };
 
