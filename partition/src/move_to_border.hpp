@@ -11,7 +11,7 @@
 namespace petersen::partition_detail {
 
 struct MoveStats {
-  std::uint64_t moved = 0;     ///< free nodes whose freedom now sits on a border node
+  std::uint64_t moved = 0;     ///< free nodes that handed their freedom to a border node
   std::uint64_t stranded = 0;  ///< free nodes off the border that no search took there
 };
 
