@@ -3,10 +3,12 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
 #include "petersen/generators/streamed_plate.hpp"
+#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/partition/out_of_core.hpp"
@@ -105,6 +107,12 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
   if (!ends_with_nocase(args.output, ".ply")) {
     throw CLI::ValidationError("OUT", "the out-of-core conversion writes binary PLY (.ply)");
   }
+  // Each part's arrays are the next part's: kept in the pool up to the limit, they are not
+  // faulted in afresh for every part (fresh pages are the slow ones on a virtual machine,
+  // huge_pages.hpp). The pool stays off where the environment switches it off.
+  const char* pool = std::getenv("PETERSEN_HUGE_PAGE_POOL");
+  if (pool == nullptr || std::string_view(pool) != "off")
+    huge_pages::enable_pool(args.memory_limit);
   const OutOfCoreStats s = quad_out_of_core(args.input, args.output,
                                             {.memory_limit = args.memory_limit,
                                              .part_triangles = args.part_triangles,
