@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# bench/scale_out_of_core.sh [TRIANGLES...]: the out-of-core conversion at scale. For each size
+# (default 1e8 3e8 1e9): a closed streamed plate written by `petersen generate`, then
+# `petersen quad` in memory where the mesh fits (3·10^8 and below on a 24 GiB machine) and out of
+# core with --memory-limit (MEMORY_LIMIT, default 3G below 10^9 and 10G at 10^9), each under
+# /usr/bin/time -v. Prints one row per run: wall time, user and system CPU, peak RSS, the bytes on
+# disk (input, output, the temporary pairing) and the pairing's figures from --stats-json. The big
+# files go to WORK (default /tmp/petersen-scale) and are deleted after each size; keep WORK out
+# of the repository. PARTS_SWEEP=1 also runs 10^8 with 2 to 32 parts (--part-triangles), for
+# how the repair's cost grows with the number of parts.
+# Expects a Release build: scripts/build build/release (or cmake --build build).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+petersen=${PETERSEN:-build/tools/petersen}
+work=${WORK:-/tmp/petersen-scale}
+mkdir -p "$work"
+[ $# -eq 0 ] && set -- 100000000 300000000 1000000000
+
+measure() {  # label, then the command
+  local label=$1
+  shift
+  /usr/bin/time -v "$@" >"$work/run.out" 2>"$work/run.time"
+  local wall user sys rss
+  wall=$(grep 'Elapsed (wall clock)' "$work/run.time" | awk '{print $NF}')
+  user=$(grep 'User time' "$work/run.time" | awk '{print $NF}')
+  sys=$(grep 'System time' "$work/run.time" | awk '{print $NF}')
+  rss=$(grep 'Maximum resident' "$work/run.time" | awk '{printf "%.2f", $NF / 1048576}')
+  local stats=""
+  [ -f "$work/stats.json" ] && stats=$(tr -d '\n' <"$work/stats.json") && rm -f "$work/stats.json"
+  echo "| $label | $wall | $user | $sys | $rss GiB | $stats |"
+}
+
+echo "| run | wall | user s | sys s | peak RSS | stats |"
+echo "|---|---:|---:|---:|---:|---|"
+for n in "$@"; do
+  in="$work/plate-$n.ply"
+  "$petersen" generate --kind streamed-plate --triangles "$n" "$in" >/dev/null
+  in_bytes=$(stat -c %s "$in")
+  limit=${MEMORY_LIMIT:-$([ "$n" -ge 1000000000 ] && echo 10G || echo 3G)}
+  available=$(awk '/MemAvailable/ {print $2 * 1024}' /proc/meminfo)
+  if [ $((n * 60)) -lt "$available" ]; then
+    measure "$n in memory" "$petersen" quad "$in" "$work/mem.ply" --stats-json "$work/stats.json"
+    rm -f "$work/mem.ply"
+  fi
+  measure "$n out of core, $limit" "$petersen" quad "$in" "$work/out.ply" --memory-limit "$limit" \
+    --stats-json "$work/stats.json"
+  echo "|   bytes on disk: input $in_bytes, output $(stat -c %s "$work/out.ply"), pairing $((n * 4)) | | | | | |"
+  rm -f "$work/out.ply"
+  if [ "${PARTS_SWEEP:-0}" = 1 ] && [ "$n" -le 100000000 ]; then
+    for parts in 2 4 8 16 32; do
+      measure "$n in $parts parts" "$petersen" quad "$in" "$work/out.ply" --memory-limit 64G \
+        --part-triangles $(((n + parts - 1) / parts)) --stats-json "$work/stats.json"
+      rm -f "$work/out.ply"
+    done
+  fi
+  rm -f "$in"
+done
