@@ -39,7 +39,7 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
-from typing import Any, Dict, List, Sequence, Tuple
+from typing import Any, Dict, List, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -572,13 +572,30 @@ def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> T
     return quads, left
 
 
-def quadrangulate(in_path: str, out_path: str, client: Any, parts: int = 0, rings: int = 8,
+def _part_bounds(face_count: int, parts: Union[int, Sequence[int]]) -> np.ndarray:
+    """The parts' first faces and the face count: `parts` even-sized ranges (a connected part of
+    a closed mesh then pairs perfectly by itself), or the boundaries given."""
+    if isinstance(parts, (int, np.integer)):
+        bounds = np.linspace(0, face_count, max(1, int(parts)) + 1).astype(np.int64) // 2 * 2
+        bounds[-1] = face_count
+        return bounds
+    bounds = np.asarray(parts, np.int64)
+    if bounds.ndim != 1 or len(bounds) < 2 or bounds[0] != 0 or bounds[-1] != face_count or (
+            np.diff(bounds) <= 0).any():
+        raise ValueError(f"parts: boundaries rising from 0 to the face count {face_count}, "
+                         f"not {parts}")
+    return bounds
+
+
+def quadrangulate(in_path: str, out_path: str, client: Any,
+                  parts: Union[int, Sequence[int]] = 0, rings: int = 8,
                   retries: int = 3, **options: Any) -> Dict[str, Any]:
     """Pairs the triangles of the binary PLY ``in_path`` into quads on a Dask cluster and writes
     them to ``out_path`` (binary PLY, the input's vertex block unchanged, faces in input order:
     each quad where its first triangle was, left triangles as they were), as
     ``petersen.quadrangulate`` would. ``client`` is a ``distributed.Client``; the file must be at
-    the same path on every worker. ``parts`` face ranges (default: one per worker), ``rings`` the
+    the same path on every worker. ``parts`` face ranges of even sizes (default: one per worker),
+    or the ranges' boundaries ``[0, b1, ..., face count]``; ``rings`` the
     repair bands' first width, ``retries`` Dask's retries of each task; ``options`` those of
     ``petersen.quadrangulate`` that apply to parts: ``algorithm``, ``seed``, ``augment``.
 
@@ -598,10 +615,8 @@ def quadrangulate(in_path: str, out_path: str, client: Any, parts: int = 0, ring
     clock = time.perf_counter()
     figures: Dict[str, Any] = {}
     layout = read_layout(in_path)
-    parts = parts or max(1, len(client.scheduler_info()["workers"]))
-    # Even-sized parts: a connected part of a closed mesh then pairs perfectly by itself.
-    bounds = np.linspace(0, layout.face_count, parts + 1).astype(np.int64) // 2 * 2
-    bounds[-1] = layout.face_count
+    bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
+    parts = len(bounds) - 1
     lap = time.perf_counter()
     part_futures = [_submit(client, _pair_part, layout, i, int(bounds[i]), int(bounds[i + 1]),
                             options, retries=retries) for i in range(parts)]
