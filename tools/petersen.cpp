@@ -9,6 +9,7 @@
 
 #include "keep_edges.hpp"
 #include "match_command.hpp"
+#include "out_of_core_command.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
@@ -96,9 +97,20 @@ struct QuadArgs {
   std::optional<double> sharp_angle, max_corner_deviation;
   std::string keep_edges;
   std::vector<std::string> cross;
+  std::string memory_limit;
+  std::uint64_t part_triangles = 0;
 };
 
 int quad(const QuadArgs& args) {
+  if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
+    return quad_out_of_core_command({.input = args.input,
+                                     .output = args.output,
+                                     .augment = args.augment,
+                                     .stats_json = args.stats_json,
+                                     .memory_limit = *limit,
+                                     .part_triangles = args.part_triangles,
+                                     .threads = args.threads});
+  }
   const auto algorithm = parse_algorithm(args.algorithm);
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
@@ -196,6 +208,7 @@ struct GenerateArgs {
   bool dents = false, spatial_order = false;
   double jitter = 0.1;
   std::uint64_t seed = 1;
+  std::uint64_t triangles = 1000000;
 };
 
 PolygonMesh randomized_plate(const GenerateArgs& args) {
@@ -232,6 +245,7 @@ PolygonMesh generated_mesh(const GenerateArgs& args) {
 }
 
 int generate(const GenerateArgs& args) {
+  if (args.kind == "streamed-plate") return generate_streamed_plate(args.output, args.triangles);
   const PolygonMesh mesh = generated_mesh(args);
   write_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.face_count(),
@@ -306,6 +320,11 @@ int main(int argc, char** argv) {
                      "also turn the triangles left into quads, by splitting edges along paths");
   quad_cmd->add_option("--stats-json", quad_args.stats_json,
                        "also write the summary as one JSON object to this file");
+  quad_cmd->add_option("--memory-limit", quad_args.memory_limit,
+                       "convert out of core within this much memory (e.g. 3G): a binary PLY of "
+                       "triangles, paired part by part (automatic when the input will not fit)");
+  quad_cmd->add_option("--part-triangles", quad_args.part_triangles,
+                       "out of core: triangles per part instead of from --memory-limit");
 
   quad_cmd->add_option("--render", quad_args.render,
                        "also draw the result into this picture (.png or .svg)");
@@ -357,9 +376,13 @@ int main(int argc, char** argv) {
       ->add_option("--kind", gen_args.kind,
                    "plate, klein (Klein bottle), projective (projective plane), open-grid, "
                    "jittered-grid or jittered-torus (near-square quads cut along random "
-                   "diagonals)")
-      ->check(CLI::IsMember(
-          {"plate", "klein", "projective", "open-grid", "jittered-grid", "jittered-torus"}))
+                   "diagonals), streamed-plate (a closed plate of --triangles, written as it is "
+                   "made: any size, binary PLY)")
+      ->check(CLI::IsMember({"plate", "klein", "projective", "open-grid", "jittered-grid",
+                             "jittered-torus", "streamed-plate"}))
+      ->capture_default_str();
+  gen_cmd
+      ->add_option("--triangles", gen_args.triangles, "about this many triangles (streamed-plate)")
       ->capture_default_str();
   gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and the grids")
       ->capture_default_str();

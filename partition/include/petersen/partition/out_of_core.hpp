@@ -1,0 +1,53 @@
+#pragma once
+// The out-of-core conversion: a binary PLY triangle mesh larger than memory, paired part by part
+// (partition.hpp) and written as a binary PLY of quads, with a bounded peak of memory.
+
+#include <cstdint>
+#include <string>
+
+#include "petersen/matching/options.hpp"
+
+namespace petersen {
+
+struct OutOfCoreOptions {
+  /// The bytes the run may hold; the parts are sized from it (bytes_per_triangle).
+  std::uint64_t memory_limit = std::uint64_t{3} << 30;
+  /// Memory one triangle of a part costs at the part step's peak (measured; see
+  /// docs/distributed.md). Zero: the measured default.
+  std::uint64_t bytes_per_triangle = 0;
+  /// Triangles per part; zero: from memory_limit. Tests set it to force many parts.
+  std::uint64_t part_triangles = 0;
+  Augment augment = Augment::local;
+  std::uint32_t band_radius = 16;
+  std::uint32_t threads = 1;
+};
+
+struct OutOfCoreStats {
+  std::uint64_t vertices = 0, triangles = 0, parts = 0, part_triangles = 0;
+  std::uint64_t pairs = 0, triangles_left = 0;
+  std::uint64_t unpaired_after_parts = 0, repaired = 0;
+  std::uint64_t cut_adjacencies = 0, band_faces = 0, band_graph_faces = 0;
+  std::uint32_t repair_radius = 0;
+  bool closed = false;
+  /// Every pair shares an edge and names its partner back (checked while writing), and on a
+  /// closed mesh every triangle is paired: the pairing is perfect, hence maximum.
+  bool perfect_certified = false;
+  /// Each part's pairing was maximum for the part (its Tutte–Berge witness), and the repair's
+  /// was maximum in its band graph; whole-mesh maximality is proved only by perfect_certified.
+  bool parts_certified = false;
+  std::uint64_t temp_bytes = 0;  ///< the temporary files' size at their largest
+  double read_pair_seconds = 0, cut_seconds = 0, repair_seconds = 0, write_seconds = 0;
+  double total_seconds = 0;
+};
+
+/// Converts `input` (binary little-endian PLY: a vertex element of fixed-size properties, then a
+/// face element of triangles, a list of uint8 count and int32/uint32 indices, and no other
+/// element) to `output` (binary PLY: the vertex records copied byte for byte, then the quads and
+/// the triangles left). Temporary files sit beside the output and are removed on success and
+/// on failure; the output is written to a temporary file renamed only on success. Throws
+/// FileError naming the file, MeshError naming the face for bad input. O(n log n) for n
+/// triangles, two passes over the faces, one over the vertices.
+OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& output,
+                                const OutOfCoreOptions& options = {});
+
+}  // namespace petersen

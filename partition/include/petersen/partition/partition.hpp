@@ -1,0 +1,173 @@
+#pragma once
+// A triangle mesh too large for one pairing, paired part by part: the three steps a driver runs
+// (one process out of core, or a cluster engine such as Dask), see docs/distributed.md.
+//
+// 1. pair_part: the triangles of one part (a contiguous range of global face ids) are paired by
+//    a certified maximum matching of the part's pairable graph; its unpaired triangles are moved
+//    by alternating paths to the part's border, and it reports its open edges (edges with one
+//    triangle in the part: the cut and the true boundary) and its band (the triangles within a
+//    few steps of the open edges).
+// 2. pair_open_edges: the open edges of all parts, merged by their vertex pair, give the pairable
+//    adjacencies across the cuts and tell whether the whole mesh is closed.
+// 3. repair_cuts: the bands of all parts with the cut adjacencies form the band graph; augmenting
+//    paths in it (from the current pairing) pair the triangles the cuts left unpaired.
+//
+// Ids are global: FaceId for faces (a part's triangle i is face first_face + i), VertexId for
+// vertices. Every triangle is a face; polygons are not taken (a part names its triangles only).
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/matching/options.hpp"
+#include "petersen/mesh/mesh.hpp"
+
+namespace petersen {
+
+/// The triangles of one part: face first_face + i has corners corners[3i], corners[3i + 1],
+/// corners[3i + 2] (global vertex ids, any values below 2^32 - 1).
+///
+/// A sweep over the parts in face order may carry the end of the previous part into the next:
+/// then the first `carried` triangles are the previous part's, already paired, carried_partner[i]
+/// naming triangle i's partner (global id, kNoFace when unpaired). Their pairs inside the part
+/// are the initial matching and may change; a carried triangle paired outside is held fixed.
+/// Unpaired triangles of the previous part are so paired by augmenting paths into this one, and
+/// this part's own are moved to its other borders: the sweep carries them forward to where they
+/// meet a partner. Open edges and the band are those of the part's own triangles (after the
+/// carried ones) as if it were alone; partner and unpaired cover all of them.
+struct PartTriangles {
+  FaceId first_face = 0;
+  std::span<const VertexId> corners;
+  std::uint32_t carried = 0;
+  std::span<const FaceId> carried_partner;
+  std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / 3); }
+};
+
+/// An edge with exactly one triangle of its part: its ends (low < high), that triangle and the
+/// triangle's third corner (which tells two triangles on the same three vertices apart).
+struct OpenEdge {
+  VertexId low = 0, high = 0;
+  FaceId face = kNoFace;
+  VertexId apex = 0;
+  friend bool operator==(const OpenEdge&, const OpenEdge&) = default;
+};
+
+/// What each side of a band triangle is in its own part (BandFace::sides).
+enum class SideState : std::uint8_t {
+  cut,       ///< no pair may cross it (non-manifold, degenerate, duplicate inside the part)
+  pairable,  ///< an edge of the part's pairable graph
+  open,      ///< one of the part's open edges: pairable only where pair_open_edges says so
+};
+
+/// A triangle near its part's open edges: its corners, its sides' states (side k runs from
+/// corner k to corner k + 1) and its distance, in steps across pairable edges of its part, from
+/// the nearest triangle with an open side (0 for those).
+struct BandFace {
+  FaceId face = kNoFace;
+  std::array<VertexId, 3> corners{};
+  std::array<SideState, 3> sides{};
+  std::uint32_t distance = 0;
+};
+
+struct PartPairingOptions {
+  Augment augment = Augment::local;
+  /// The band holds the triangles at most this many steps from the open edges: repair_cuts can
+  /// grow its band graph up to here. O(band_radius · open edges) band faces on a regular surface.
+  std::uint32_t band_radius = 16;
+  /// Labels one search may give while moving an unpaired triangle to the border, before it gives
+  /// up (the triangle then stays where it is, counted in PartPairing::stranded).
+  std::uint64_t move_budget = 1u << 22;
+  /// Threads for the pairable graph's construction (build_pairable_graph); 0: every core.
+  std::uint32_t threads = 1;
+};
+
+struct PartPairing {
+  FaceId first_face = 0;
+  /// Per triangle of the part (carried ones first): its partner's global face id, or kNoFace.
+  /// Partners are in the part, but for carried triangles held fixed.
+  HugeVector<FaceId> partner;
+  std::vector<FaceId> unpaired;      ///< global ids, ascending
+  std::vector<OpenEdge> open_edges;  ///< ascending by (low, high, face)
+  std::vector<BandFace> band;        ///< ascending by face
+  /// The part's structural cuts that are no open edge (non-manifold, degenerate, duplicate,
+  /// polygon): any of them makes the whole mesh not closed.
+  std::uint64_t inner_structural_cuts = 0;
+  std::uint64_t pairs = 0;
+  std::uint64_t moved_to_border = 0;  ///< unpaired triangles moved to the border
+  std::uint64_t stranded = 0;         ///< unpaired triangles no alternating path took there
+  /// The part's pairing passed verify_maximum_matching with its Tutte–Berge witness (before the
+  /// moves, which keep its size and validity: re-checked by verify_matching).
+  bool maximum_certified = false;
+  double seconds = 0;
+};
+
+/// Pairs the triangles of one part (see the top of this file). Throws std::invalid_argument when
+/// carried_partner does not have `carried` entries or names a partner that does not name it back
+/// (both inside the part). Throws MeshError naming the
+/// global face for a corner equal to 2^32 - 1 or a part past 2^32 - 1 faces; throws
+/// std::logic_error if the pairing fails its verifier. O(m log m) for m triangles (the vertex
+/// renumbering), plus the pairable graph and the matching (maximum_matching, augment.hpp).
+PartPairing pair_part(const PartTriangles& part, const PartPairingOptions& options = {});
+
+/// Two triangles of different parts across a cut edge {low, high} that they alone share, with
+/// four distinct corners: first < second.
+struct CutAdjacency {
+  FaceId first = kNoFace, second = kNoFace;
+  VertexId low = 0, high = 0;
+  friend bool operator==(const CutAdjacency&, const CutAdjacency&) = default;
+};
+
+struct CutPairing {
+  std::vector<CutAdjacency> adjacencies;  ///< ascending by (first, second)
+  std::uint64_t boundary_edges = 0;       ///< open edges no other part has: the true boundary
+  std::uint64_t non_manifold_edges = 0;   ///< vertex pairs with three or more open records
+  std::uint64_t duplicate_edges = 0;      ///< two records whose triangles have the same corners
+  bool closed() const {
+    return boundary_edges == 0 && non_manifold_edges == 0 && duplicate_edges == 0;
+  }
+};
+
+/// Merges the open edges of all parts (any order, concatenated) by vertex pair: two records of a
+/// pair are a cut adjacency unless their triangles have the same three corners. O(r log r) for r
+/// records.
+CutPairing pair_open_edges(std::vector<OpenEdge> records);
+
+struct RepairOptions {
+  Augment augment = Augment::local;
+  /// The band graph starts with the band faces at distance at most first_radius and doubles it
+  /// while triangles stay unpaired, up to the parts' band_radius.
+  std::uint32_t first_radius = 2;
+};
+
+/// The bands of all parts (BandFace, any order, each face once), with each band face's current
+/// partner (kNoFace when unpaired) at the same index, and the cut adjacencies.
+struct RepairInput {
+  std::span<const BandFace> band;
+  std::span<const FaceId> partner;
+  std::span<const CutAdjacency> adjacencies;
+};
+
+struct RepairResult {
+  /// The new partner of each band face (same order as RepairInput::band); a face outside the
+  /// band graph keeps its partner.
+  std::vector<FaceId> partner;
+  std::uint64_t unpaired_before = 0, unpaired_after = 0;  ///< band faces without a partner
+  std::uint64_t augmenting_paths = 0;
+  std::uint64_t band_graph_faces = 0;  ///< triangles in the last band graph
+  std::uint32_t radius = 0;            ///< the last band graph's radius
+  /// The last band graph's matching passed verify_maximum_matching: no augmenting path is left
+  /// inside the band graph (the faces outside it, or paired outside it, are held fixed).
+  bool maximum_in_band_certified = false;
+  double seconds = 0;
+};
+
+/// Pairs across the cuts (see the top of this file): the band graph holds the band faces within
+/// the radius whose partners are in it too (a face paired outside the band is held fixed); its
+/// edges are the pairable sides inside a part and the cut adjacencies. Throws std::logic_error
+/// if a matching fails its verifier, std::invalid_argument when partner and band differ in size.
+/// O(b log b) for b band faces, plus the augmentation.
+RepairResult repair_cuts(const RepairInput& input, const RepairOptions& options = {});
+
+}  // namespace petersen

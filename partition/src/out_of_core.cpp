@@ -1,0 +1,231 @@
+// The out-of-core conversion (out_of_core.hpp): the part, cut and repair steps of partition.hpp
+// over a mapped binary PLY, the pairing in a temporary file, the output streamed.
+
+#include "petersen/partition/out_of_core.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "petersen/dualize/quad_of.hpp"
+#include "petersen/graph/stopwatch.hpp"
+#include "petersen/io/file_error.hpp"
+#include "petersen/io/ply_stream.hpp"
+#include "petersen/partition/partition.hpp"
+#include "temp_face_array.hpp"
+
+namespace petersen {
+
+namespace {
+
+using partition_detail::TempFaceArray;
+
+// What pair_part costs per triangle at its peak (the part's corners read from the file
+// included), measured on closed plates of 10^7-10^8 triangles: see docs/distributed.md.
+constexpr std::uint64_t kBytesPerTriangle = 120;
+// Kept back from the limit for what does not scale with the part: the bands and open edges of all
+// parts, the buffers and the program itself.
+constexpr std::uint64_t kFixedBytes = std::uint64_t{256} << 20;
+
+// The smallest part: below it the open edges outweigh the triangles.
+constexpr std::uint64_t kMinPartTriangles = 64;
+
+std::uint64_t part_size(const OutOfCoreOptions& options, std::uint64_t triangles) {
+  std::uint64_t part = options.part_triangles;
+  if (part == 0) {
+    const std::uint64_t per =
+        options.bytes_per_triangle > 0 ? options.bytes_per_triangle : kBytesPerTriangle;
+    const std::uint64_t fixed = std::min(kFixedBytes, options.memory_limit / 2);
+    // A part with the end of the previous one it carries holds at most 1.5 parts (next_carry).
+    part = std::max(kMinPartTriangles, (options.memory_limit - fixed) / per * 2 / 3);
+  }
+  const std::uint64_t parts = std::max<std::uint64_t>(1, (triangles + part - 1) / part);
+  // Parts of equal, even size: a part of odd size leaves a triangle unpaired for the repair.
+  const std::uint64_t size = std::max<std::uint64_t>(2, (triangles + parts - 1) / parts);
+  return size + size % 2;
+}
+
+// What the part steps leave for the cut and repair steps.
+struct PartsOutcome {
+  std::vector<OpenEdge> open_edges;
+  std::vector<BandFace> band;  // ascending by face: the parts' bands in part order
+  std::uint64_t inner_structural_cuts = 0;
+  bool certified = true;
+};
+
+// Where the next part's carried range starts: the end of this part, from a little before the
+// first triangle left unpaired (the sweep carries it forward) but at most half a part. Some of the
+// end is carried even when all are paired, so that the cut to the next part lies inside the next
+// window: its unpaired triangles then move only to borders toward later parts, and those at the
+// cut find their partners across it.
+std::uint64_t next_carry(const PartPairing& part, std::uint64_t own_end, std::uint64_t size) {
+  const std::uint64_t margin = std::max<std::uint64_t>(1024, size / 16);
+  const std::uint64_t first = part.unpaired.empty() ? own_end : part.unpaired.front();
+  return std::max({own_end - std::min(own_end, size / 2), first - std::min(first, margin),
+                   std::uint64_t{part.first_face}});
+}
+
+// The part step over every part in face order, each carrying the previous one's end.
+PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t size,
+                       const OutOfCoreOptions& options, OutOfCoreStats& stats) {
+  PartsOutcome out;
+  const std::uint64_t n = in.face_count();
+  HugeVector<VertexId> corners;
+  std::vector<FaceId> carried_partner;
+  std::uint64_t carry_first = 0;
+  for (std::uint64_t own_first = 0; own_first < n; own_first += size) {
+    const std::uint64_t own_count = std::min(size, n - own_first);
+    const std::uint64_t first = std::min(carry_first, own_first),
+                        count = own_first + own_count - first;
+    corners.resize(3 * count);
+    in.read_faces(first, count, corners);
+    in.release_faces(first, count);
+    carried_partner.assign(&partner[first], &partner[first] + (own_first - first));
+    const PartPairing part =
+        pair_part({static_cast<FaceId>(first), corners,
+                   static_cast<std::uint32_t>(own_first - first), carried_partner},
+                  {.augment = options.augment,
+                   .band_radius = options.band_radius,
+                   .threads = options.threads});
+    std::copy(part.partner.begin(), part.partner.end(), &partner[first]);
+    partner.release(first, count);
+    out.open_edges.insert(out.open_edges.end(), part.open_edges.begin(), part.open_edges.end());
+    out.band.insert(out.band.end(), part.band.begin(), part.band.end());
+    out.inner_structural_cuts += part.inner_structural_cuts;
+    out.certified = out.certified && part.maximum_certified;
+    carry_first = next_carry(part, own_first + own_count, size);
+    ++stats.parts;
+  }
+  return out;
+}
+
+// Pairs and unpaired triangles of the pairing, by one pass over it. O(n).
+std::pair<std::uint64_t, std::uint64_t> count_pairing(TempFaceArray& partner, std::uint64_t n) {
+  constexpr std::uint64_t kChunk = std::uint64_t{1} << 24;
+  std::uint64_t pairs = 0, unpaired = 0;
+  for (std::uint64_t first = 0; first < n; first += kChunk) {
+    const std::uint64_t count = std::min(kChunk, n - first);
+    for (std::uint64_t f = first; f < first + count; ++f) {
+      const FaceId p = partner[f];
+      unpaired += p == kNoFace;
+      pairs += p != kNoFace && p > f;
+    }
+    partner.release(first, count);
+  }
+  return {pairs, unpaired};
+}
+
+// The repair step over the bands of all parts, with their partners as the sweep left them;
+// its new partners written into the pairing.
+RepairResult repair(const PartsOutcome& parts, const CutPairing& cut, TempFaceArray& partner) {
+  std::vector<FaceId> band_partner(parts.band.size());
+  for (std::size_t i = 0; i < parts.band.size(); ++i) band_partner[i] = partner[parts.band[i].face];
+  RepairResult result = repair_cuts({parts.band, band_partner, cut.adjacencies});
+  for (std::size_t i = 0; i < parts.band.size(); ++i)
+    partner[parts.band[i].face] = result.partner[i];
+  return result;
+}
+
+// Checks the pair {f, p} from f's side: p names f back and the two share an edge; writes its
+// quad when f is the first. O(1).
+void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, FaceId p,
+                std::span<const VertexId> tf, std::span<const VertexId> tp, std::uint64_t n) {
+  if (p >= n || partner[p] != f) {
+    throw std::logic_error("internal error: face " + std::to_string(f) + " names partner " +
+                           std::to_string(p) + ", which does not name it back");
+  }
+  std::array<VertexId, 4> quad;
+  try {
+    quad = quad_of(tf, tp);
+  } catch (const std::logic_error&) {
+    throw std::logic_error("internal error: faces " + std::to_string(f) + " and " +
+                           std::to_string(p) + " are paired but share no edge");
+  }
+  if (f < p) out.write_quad(quad[0], quad[1], quad[2], quad[3]);
+}
+
+// The faces of one part, written and checked: every pair from both of its sides.
+void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
+                std::uint64_t count, HugeVector<VertexId>& corners, PlyStreamWriter& out,
+                OutOfCoreStats& stats) {
+  corners.resize(3 * count);
+  in.read_faces(first, count, corners);
+  in.release_faces(first, count);
+  const std::uint64_t n = in.face_count();
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const FaceId f = static_cast<FaceId>(first + i), p = partner[f];
+    const std::span<const VertexId> tf(corners.data() + 3 * i, 3);
+    if (p == kNoFace) {
+      out.write_triangle(tf[0], tf[1], tf[2]);
+      ++stats.triangles_left;
+      continue;
+    }
+    const bool inside = p >= first && p < first + count;
+    VertexId outside[3];
+    if (!inside && p < n) in.read_faces(p, 1, outside);
+    const std::span<const VertexId> tp =
+        inside ? std::span<const VertexId>(corners.data() + 3 * (p - first), 3) : outside;
+    write_pair(out, partner, f, p, tf, tp, n);
+  }
+  partner.release(first, count);
+}
+
+void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std::string& output,
+                  std::uint64_t size, OutOfCoreStats& stats) {
+  PlyStreamWriter out(output, in.vertex_declaration(), in.face_count() - stats.pairs);
+  constexpr std::uint64_t kVertexChunk = std::uint64_t{1} << 22;
+  for (std::uint64_t first = 0; first < in.vertex_count(); first += kVertexChunk) {
+    const std::uint64_t count = std::min(kVertexChunk, in.vertex_count() - first);
+    out.write_vertex_records(in.vertex_records(first, count));
+    in.release_vertices(first, count);
+  }
+  HugeVector<VertexId> corners;
+  for (std::uint64_t first = 0; first < in.face_count(); first += size) {
+    write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out, stats);
+  }
+  out.commit();
+  stats.temp_bytes += out.bytes_written();
+}
+
+}  // namespace
+
+OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& output,
+                                const OutOfCoreOptions& options) {
+  Stopwatch clock;
+  OutOfCoreStats stats;
+  const PlyTriangleStream in(input);
+  if (in.face_count() >= kNoFace) {
+    throw FileError(
+        input, 0,
+        std::to_string(in.face_count()) + " faces: face ids are 32-bit, at most 4294967294 faces");
+  }
+  stats.vertices = in.vertex_count();
+  stats.triangles = in.face_count();
+  const std::uint64_t size = part_size(options, stats.triangles);
+  stats.part_triangles = size;
+  TempFaceArray partner(output, stats.triangles);
+  stats.temp_bytes = partner.bytes();
+  PartsOutcome parts = run_parts(in, partner, size, options, stats);
+  stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
+  stats.read_pair_seconds = clock.lap();
+  const CutPairing cut = pair_open_edges(std::move(parts.open_edges));
+  stats.cut_adjacencies = cut.adjacencies.size();
+  stats.closed = cut.closed() && parts.inner_structural_cuts == 0;
+  stats.cut_seconds = clock.lap();
+  const RepairResult repaired = repair(parts, cut, partner);
+  stats.pairs = count_pairing(partner, stats.triangles).first;
+  stats.repaired = (repaired.unpaired_before - repaired.unpaired_after) / 2;
+  stats.band_faces = parts.band.size();
+  stats.band_graph_faces = repaired.band_graph_faces;
+  stats.repair_radius = repaired.radius;
+  stats.parts_certified =
+      parts.certified && (repaired.unpaired_before == 0 || repaired.maximum_in_band_certified);
+  stats.repair_seconds = clock.lap();
+  write_output(in, partner, output, size, stats);
+  stats.perfect_certified = stats.closed && stats.triangles_left == 0;
+  stats.write_seconds = clock.lap();
+  stats.total_seconds = clock.seconds();
+  return stats;
+}
+
+}  // namespace petersen

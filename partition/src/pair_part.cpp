@@ -1,0 +1,288 @@
+// The part step (partition.hpp): a certified maximum matching of the part's pairable graph, its
+// unpaired triangles moved to the border, its open edges and its band.
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "local_vertices.hpp"
+#include "move_to_border.hpp"
+#include "petersen/graph/stopwatch.hpp"
+#include "petersen/matching/augment.hpp"
+#include "petersen/matching/tutte_berge.hpp"
+#include "petersen/partition/partition.hpp"
+
+namespace petersen {
+
+namespace {
+
+using partition_detail::local_corners;
+using partition_detail::move_to_border;
+
+// A cut side of a triangle: its edge's global ends (low < high), the node and the side.
+struct CutSide {
+  VertexId low, high;
+  NodeId node;
+  std::uint32_t side;
+};
+
+bool is_degenerate(std::span<const VertexId> t) {
+  return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
+}
+
+// The part's sides by node: bit k of `open` when side k is an edge with no other triangle in the
+// window, bit k of `own_border` when, for an own triangle, side k is open for the own triangles
+// alone (open in the window, or across to a carried triangle).
+struct Borders {
+  std::vector<std::uint8_t> open, own_border;
+};
+
+VertexId apex_of(std::span<const VertexId> t, std::uint32_t side, VertexId low) {
+  // A degenerate triangle's record names one of the edge's ends as its apex: pair_open_edges
+  // never pairs it.
+  return is_degenerate(t) ? low : t[(side + 2) % 3];
+}
+
+// The window's cut sides with one triangle, sorted: O(s log s) for s cut sides, which on a part
+// of a surface are O(√m) for m triangles.
+std::vector<CutSide> single_cut_sides(const PartTriangles& part, const PairableGraph& graph) {
+  std::vector<CutSide> sides;
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      if (graph.node_edges[3 * std::size_t{v} + k] != kNoEdge) continue;
+      const VertexId a = part.corners[3 * std::size_t{v} + k];
+      const VertexId b = part.corners[3 * std::size_t{v} + (k + 1) % 3];
+      if (a != b) sides.push_back({std::min(a, b), std::max(a, b), v, k});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [](const CutSide& x, const CutSide& y) {
+    return x.low != y.low ? x.low < y.low : x.high != y.high ? x.high < y.high : x.node < y.node;
+  });
+  std::vector<CutSide> single;
+  for (std::size_t i = 0, j; i < sides.size(); i = j) {
+    for (j = i + 1;
+         j < sides.size() && sides[j].low == sides[i].low && sides[j].high == sides[i].high; ++j) {
+    }
+    if (j - i == 1) single.push_back(sides[i]);
+  }
+  return single;
+}
+
+// The borders and the own triangles' open edges (ascending by (low, high, face)).
+Borders find_borders(const PartTriangles& part, const PairableGraph& graph,
+                     std::vector<OpenEdge>& open_edges) {
+  Borders borders{std::vector<std::uint8_t>(graph.node_count, 0),
+                  std::vector<std::uint8_t>(graph.node_count, 0)};
+  auto add = [&](NodeId v, std::uint32_t k, VertexId low, VertexId high) {
+    borders.own_border[v] |= std::uint8_t(1u << k);
+    const std::span<const VertexId> t = part.corners.subspan(3 * std::size_t{v}, 3);
+    open_edges.push_back({low, high, part.first_face + v, apex_of(t, k, low)});
+  };
+  for (const CutSide& s : single_cut_sides(part, graph)) {
+    borders.open[s.node] |= std::uint8_t(1u << s.side);
+    if (s.node >= part.carried) add(s.node, s.side, s.low, s.high);
+  }
+  for (NodeId v = part.carried; v < graph.node_count; ++v) {
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const EdgeId e = graph.node_edges[3 * std::size_t{v} + k];
+      if (e == kNoEdge ||
+          (graph.edge_ends[2 * e] ^ graph.edge_ends[2 * e + 1] ^ v) >= part.carried) {
+        continue;
+      }
+      const VertexId a = part.corners[3 * std::size_t{v} + k];
+      const VertexId b = part.corners[3 * std::size_t{v} + (k + 1) % 3];
+      add(v, k, std::min(a, b), std::max(a, b));
+    }
+  }
+  std::sort(open_edges.begin(), open_edges.end(), [](const OpenEdge& x, const OpenEdge& y) {
+    return x.low != y.low ? x.low < y.low : x.high != y.high ? x.high < y.high : x.face < y.face;
+  });
+  return borders;
+}
+
+// The own triangles within `radius` steps (across pairable edges between own triangles) of one
+// with an own border side: a breadth-first search from all of those at once. O(m) for the
+// distances, O(b log b) for the band.
+std::vector<BandFace> band_of(const PartTriangles& part, const PairableGraph& graph,
+                              const Borders& borders, std::uint32_t radius) {
+  constexpr std::uint32_t kFar = 0xFFFFFFFFu;
+  std::vector<std::uint32_t> distance(graph.node_count, kFar);
+  std::vector<NodeId> queue;
+  for (NodeId v = part.carried; v < graph.node_count; ++v) {
+    if (borders.own_border[v]) {
+      distance[v] = 0;
+      queue.push_back(v);
+    }
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const NodeId v = queue[head];
+    if (distance[v] == radius) continue;
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      const EdgeId e = graph.node_edges[3 * std::size_t{v} + k];
+      if (e == kNoEdge) continue;
+      const NodeId w = graph.edge_ends[2 * e] ^ graph.edge_ends[2 * e + 1] ^ v;
+      if (w < part.carried || distance[w] != kFar) continue;
+      distance[w] = distance[v] + 1;
+      queue.push_back(w);
+    }
+  }
+  std::sort(queue.begin(), queue.end());
+  std::vector<BandFace> band(queue.size());
+  for (std::size_t i = 0; i < queue.size(); ++i) {
+    const NodeId v = queue[i];
+    BandFace& face = band[i];
+    face.face = part.first_face + v;
+    face.distance = distance[v];
+    for (std::uint32_t k = 0; k < 3; ++k) {
+      face.corners[k] = part.corners[3 * std::size_t{v} + k];
+      face.sides[k] = (borders.own_border[v] >> k) & 1u                     ? SideState::open
+                      : graph.node_edges[3 * std::size_t{v} + k] != kNoEdge ? SideState::pairable
+                                                                            : SideState::cut;
+    }
+  }
+  return band;
+}
+
+// The pairable graph without the edges of the held triangles (carried ones paired outside).
+CsrGraph csr_of(const PairableGraph& graph, std::span<const std::uint8_t> held) {
+  std::vector<std::array<NodeId, 2>> edges;
+  edges.reserve(graph.edge_count());
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    const NodeId a = graph.edge_ends[2 * e], b = graph.edge_ends[2 * e + 1];
+    if (!held[a] && !held[b]) edges.push_back({a, b});
+  }
+  return CsrGraph::from_edges(graph.node_count, edges);
+}
+
+// Whether each carried triangle is held (paired outside the part); checks carried_partner.
+std::vector<std::uint8_t> held_triangles(const PartTriangles& part, std::uint32_t n) {
+  if (part.carried_partner.size() != part.carried || part.carried > n) {
+    throw std::invalid_argument("pair_part: " + std::to_string(part.carried_partner.size()) +
+                                " carried partners for " + std::to_string(part.carried) +
+                                " carried of " + std::to_string(n) + " triangles");
+  }
+  std::vector<std::uint8_t> held(n, 0);
+  for (NodeId v = 0; v < part.carried; ++v) {
+    const FaceId p = part.carried_partner[v];
+    const std::uint64_t local = std::uint64_t{p} - part.first_face;
+    if (p == kNoFace) continue;
+    if (p < part.first_face || local >= n) {
+      held[v] = 1;
+    } else if (local >= part.carried || part.carried_partner[local] != part.first_face + v) {
+      throw std::invalid_argument("pair_part: carried face " + std::to_string(part.first_face + v) +
+                                  " names partner " + std::to_string(p) +
+                                  ", which does not name it back");
+    }
+  }
+  return held;
+}
+
+void check_part(const PartTriangles& part) {
+  if (part.corners.size() % 3 != 0) {
+    throw std::invalid_argument("pair_part: the corner count " +
+                                std::to_string(part.corners.size()) + " is no multiple of 3");
+  }
+  if (std::uint64_t{part.first_face} + part.corners.size() / 3 > kNoFace) {
+    throw MeshError("part from face " + std::to_string(part.first_face) + " with " +
+                    std::to_string(part.corners.size() / 3) +
+                    " triangles runs past the largest face id (2^32 - 2)");
+  }
+}
+
+// The carried pairs inside the part, then a greedy pass over the other edges in id order.
+Matching initial_matching(const CsrGraph& csr, const PartTriangles& part) {
+  Matching matching(csr.node_count());
+  for (NodeId v = 0; v < part.carried; ++v) {
+    const FaceId p = part.carried_partner[v];
+    if (p == kNoFace || p < part.first_face || p - part.first_face >= part.carried) continue;
+    for (EdgeId e : csr.incident_edges(v)) {
+      if (csr.other_end(e, v) == p - part.first_face) matching.mate_edge[v] = e;
+    }
+  }
+  for (EdgeId e = 0; e < csr.edge_count(); ++e) {
+    const auto [a, b] = csr.endpoints(e);
+    if (!matching.is_matched(a) && !matching.is_matched(b))
+      matching.mate_edge[a] = matching.mate_edge[b] = e;
+  }
+  return matching;
+}
+
+// The certified maximum matching of the part's graph, its free nodes moved to the own
+// triangles' open sides (held and carried triangles are no destination).
+HugeVector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& part,
+                              const Borders& borders, std::span<const std::uint8_t> held,
+                              const PartPairingOptions& options, PartPairing& result) {
+  const CsrGraph csr = csr_of(graph, held);
+  MaximumMatchingResult maximum =
+      part.carried == 0 ? maximum_matching(csr, options.augment)
+                        : maximum_matching(csr, initial_matching(csr, part), options.augment);
+  if (MatchingCheck check = verify_maximum_matching(csr, maximum.matching, maximum.tutte_set);
+      !check.ok()) {
+    throw std::logic_error("internal error: a part's matching fails its witness: " + check.message);
+  }
+  result.maximum_certified = true;
+  std::vector<std::uint8_t> destination(graph.node_count, 0);
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    destination[v] = held[v] || (v >= part.carried && borders.open[v] != 0);
+  }
+  const partition_detail::MoveStats moves =
+      move_to_border(csr, maximum.matching, destination, options.move_budget);
+  if (MatchingCheck check = verify_matching(csr, maximum.matching); !check.ok()) {
+    throw std::logic_error("internal error: moving a part's unpaired triangles broke it: " +
+                           check.message);
+  }
+  result.moved_to_border = moves.moved;
+  result.stranded = moves.stranded;
+  HugeVector<NodeId> mate(graph.node_count, kNoNode);
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    const EdgeId e = maximum.matching.mate_edge[v];
+    if (e != kNoEdge) mate[v] = csr.other_end(e, v);
+  }
+  return mate;
+}
+
+PairableGraph graph_of(const PartTriangles& part, const PartPairingOptions& options) {
+  partition_detail::LocalCorners local = local_corners(part.corners, part.first_face);
+  PolygonMesh mesh;
+  mesh.positions.resize(local.vertex_count);  // the graph reads only their count
+  mesh.corners = std::move(local.corners);
+  return build_pairable_graph(mesh, {}, options.threads);
+}
+
+void fill_partners(const PartTriangles& part, std::span<const NodeId> mate,
+                   std::span<const std::uint8_t> held, PartPairing& result) {
+  result.partner.resize(mate.size());
+  for (NodeId v = 0; v < mate.size(); ++v) {
+    const NodeId w = mate[v];
+    if (held[v]) {
+      result.partner[v] = part.carried_partner[v];
+    } else if (w == kNoNode) {
+      result.partner[v] = kNoFace;
+      result.unpaired.push_back(part.first_face + v);
+    } else {
+      result.partner[v] = part.first_face + w;
+      result.pairs += v < w;
+    }
+  }
+}
+
+}  // namespace
+
+PartPairing pair_part(const PartTriangles& part, const PartPairingOptions& options) {
+  const Stopwatch clock;
+  check_part(part);
+  PartPairing result;
+  result.first_face = part.first_face;
+  const PairableGraph graph = graph_of(part, options);
+  const std::vector<std::uint8_t> held = held_triangles(part, graph.node_count);
+  result.inner_structural_cuts =
+      graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];
+  const Borders borders = find_borders(part, graph, result.open_edges);
+  const HugeVector<NodeId> mate = match_part(graph, part, borders, held, options, result);
+  fill_partners(part, mate, held, result);
+  result.band = band_of(part, graph, borders, options.band_radius);
+  result.seconds = clock.seconds();
+  return result;
+}
+
+}  // namespace petersen
