@@ -4,34 +4,29 @@
     >>> import petersen.distributed
     >>> stats = petersen.distributed.quadrangulate("in.ply", "out.ply", Client(), parts=8)
 
-The stages (docs/dask.md):
+The stages (docs/dask.md), each the library's step of petersen/partition/partition.hpp:
 
-1. **Parts.** The client reads the PLY header once and gives each task a contiguous range of
-   faces; the worker reads its own range from the file (a shared path) and the positions of the
-   vertices it uses, pairs the range with ``petersen.quadrangulate`` (a certified maximum pairing of
-   the part's pairable graph), moves each triangle it left unpaired along an alternating path to
-   the part's frontier (a triangle with an edge no other triangle of the part has), and keeps the
-   part on the worker. It returns only its open-edge records (one per such edge: the vertex key,
-   the triangle, the opposite vertex) and the keys the cut step must watch.
-2. **Cut.** One task pairs the records by vertex key: two records of different triangles whose
-   opposite vertices differ make a cut edge (pairable, as on one machine); one record is a mesh
-   boundary; an edge with more than two faces across parts is a cut no pair crosses.
-3. **Repair.** Each part hands over its band (the triangles within ``rings`` steps of its
-   frontier, closed under its pairs) with the band's pairable edges; one task takes the bands and
-   the cut edges and replaces their pairs by a maximum matching of that graph
-   (``petersen.maximum_matching``), which joins the triangles the parts left across the cuts by
-   augmenting paths. On a closed mesh (no boundary) a triangle still unpaired means the bands
-   were too narrow: the bands are taken again with four times the rings, until the bands are
-   the whole parts, where the repair is the whole mesh's maximum matching.
-4. **Write.** Each part checks its own triangles (every one in exactly one quad or left, the two
-   triangles of each quad sharing an edge with four distinct vertices) and writes its faces into
-   the output at offsets the client computed, a temporary file renamed into place when every part
-   has written; the vertex block is copied unchanged.
+1. **Parts** (``pair_part``). The client reads the PLY header once and gives each task a
+   contiguous range of faces; the worker reads its own range from the file (a shared path),
+   pairs it by a certified maximum pairing of the part's pairable graph, moves the triangles it
+   left unpaired along alternating paths to the part's border, and keeps the part on the worker.
+   It sends on its open-edge records (an edge with one triangle in the part: vertex pair,
+   triangle, third corner) and its band (the triangles near the open edges, with their partners).
+2. **Cut** (``pair_open_edges``). One task pairs the records by vertex pair: the pairable
+   adjacencies across the cuts, and whether the mesh is closed.
+3. **Repair** (``repair_cuts``). One task joins the bands and the cut adjacencies and pairs the
+   triangles the parts left by augmenting paths there. On a closed mesh a triangle still
+   unpaired means the bands were too narrow: the parts run again with bands four times as wide,
+   until a band is its whole part.
+4. **Write.** Each part checks its own triangles (each pair names its partner back, the two
+   triangles of each quad share an edge) and writes its faces into the output at offsets the
+   client computed; the client copies the vertex block unchanged and renames the temporary file
+   into place when every part has written.
 
-Only small arrays move between tasks (records, bands, the repair's pairs); the parts' triangles and
-pairs stay on their workers. Retries are Dask's: every task is submitted with ``retries``, and a
-task whose worker died is run again by the scheduler (from the file), as is any part whose result
-was lost with its worker.
+Only small arrays move between tasks (records, bands, the repair's partners); the parts'
+triangles and partners stay on their workers. Retries are Dask's: every task is submitted with
+``retries``, and a task whose worker died is run again by the scheduler (from the file), as is
+any part whose result was lost with its worker.
 """
 
 from __future__ import annotations
@@ -43,7 +38,7 @@ from typing import Any, Dict, List, Sequence, Tuple, Union
 
 import numpy as np
 
-import petersen
+from . import _petersen
 
 __all__ = ["PlyLayout", "read_layout", "quadrangulate"]
 
@@ -53,7 +48,6 @@ _PLY_TYPES = {
     "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
 }
 _HEADER_LIMIT = 1 << 16
-_NO_FACE = -1
 
 
 @dataclass(frozen=True)
@@ -168,246 +162,124 @@ def _read_faces(layout: PlyLayout, lo: int, hi: int) -> np.ndarray:
     return F
 
 
-def _read_positions(layout: PlyLayout, vertices: np.ndarray) -> np.ndarray:
-    rows = np.memmap(layout.path, dtype=np.dtype(list(layout.vertex_dtype)), mode="r",
-                     offset=layout.vertex_offset, shape=(layout.vertex_count,))
-    picked = rows[vertices]
-    return np.stack([picked["x"], picked["y"], picked["z"]], axis=1).astype(np.float64)
-
-
-def _edge_keys(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """The key of the edges a-b: (min << 32) | max, one uint64 per edge (vertex ids < 2^32)."""
-    lo, hi = np.minimum(a, b).astype(np.uint64), np.maximum(a, b).astype(np.uint64)
-    return (lo << np.uint64(32)) | hi
-
-
-@dataclass
-class _Edges:
-    """The edges of a part's triangles grouped by key: per group its key, how many of the part's
-    triangles have it, and (for groups of one or two) the triangles and opposite vertices."""
-
-    keys: np.ndarray
-    counts: np.ndarray
-    faces: np.ndarray  # (groups, 2) local triangle ids, -1 past the count
-    opposite: np.ndarray  # (groups, 2) vertex ids, -1 past the count
-
-
-def _group_edges(F: np.ndarray) -> _Edges:
-    """O(m log m): one sort of the 3m halfedges by key."""
-    m = len(F)
-    a, b, w = F.T.ravel(), np.roll(F, -1, axis=1).T.ravel(), np.roll(F, -2, axis=1).T.ravel()
-    face = np.tile(np.arange(m), 3)
-    proper = a != b  # a degenerate triangle's edge from a vertex to itself is no edge
-    keys, face, w = _edge_keys(a, b)[proper], face[proper], w[proper]
-    order = np.argsort(keys, kind="stable")
-    keys, face, w = keys[order], face[order], w[order]
-    start = np.flatnonzero(np.r_[True, keys[1:] != keys[:-1]])
-    counts = np.diff(np.r_[start, len(keys)])
-    faces = np.full((len(start), 2), -1, np.int64)
-    opposite = np.full((len(start), 2), -1, np.int64)
-    faces[:, 0], opposite[:, 0] = face[start], w[start]
-    two = counts >= 2
-    faces[two, 1], opposite[two, 1] = face[start[two] + 1], w[start[two] + 1]
-    return _Edges(keys[start], counts, faces, opposite)
-
-
-def _pairable(F: np.ndarray, edges: _Edges) -> np.ndarray:
-    """The groups that are pairable edges (dualize/pairable_graph.hpp): exactly two triangles,
-    neither degenerate, whose union has four distinct vertices."""
-    degenerate = (F[:, 0] == F[:, 1]) | (F[:, 1] == F[:, 2]) | (F[:, 0] == F[:, 2])
-    ok = edges.counts == 2
-    ok &= edges.opposite[:, 0] != edges.opposite[:, 1]
-    f = np.where(ok[:, None], edges.faces, 0)
-    return ok & ~degenerate[f[:, 0]] & ~degenerate[f[:, 1]]
-
-
-def _csr(m: int, pairs: np.ndarray) -> Tuple[np.ndarray, np.ndarray]:
-    """Adjacency of m nodes from (e, 2) pairs: indptr, neighbours. O(m + e log e)."""
-    src = np.concatenate([pairs[:, 0], pairs[:, 1]])
-    dst = np.concatenate([pairs[:, 1], pairs[:, 0]])
-    order = np.argsort(src, kind="stable")
-    indptr = np.zeros(m + 1, np.int64)
-    np.cumsum(np.bincount(src, minlength=m), out=indptr[1:])
-    return indptr, dst[order]
-
-
-def _neighbours(indptr: np.ndarray, nbr: np.ndarray, nodes: np.ndarray):
-    """(source, neighbour) for every edge at `nodes`, vectorised."""
-    starts, ends = indptr[nodes], indptr[nodes + 1]
-    sizes = ends - starts
-    src = np.repeat(nodes, sizes)
-    offsets = np.arange(sizes.sum()) - np.repeat(np.cumsum(sizes) - sizes, sizes)
-    return src, nbr[np.repeat(starts, sizes) + offsets]
-
-
-def _move_to_frontier(mate, indptr, nbr, frontier, free) -> int:
-    """Moves each free triangle to the frontier along an even alternating path (free u, then
-    non-pair edge, pair edge, ...), flipping the pairs on it: the pairing keeps its size and the
-    free triangle becomes the path's end, a frontier triangle, where the repair reaches it. A
-    breadth-first alternating tree (each node entered once, so each path is simple); blossoms are
-    not shrunk, so a path through one may be missed, leaving that triangle where it is (the repair
-    then widens its bands). O(part) per free triangle. Returns how many moved."""
-    moved = 0
-    for u in free:
-        if frontier[u]:
-            continue
-        parent = np.full(len(mate), -1, np.int64)
-        seen = np.zeros(len(mate), bool)
-        seen[u] = True
-        even = np.array([u])
-        while even.size:
-            src, dst = _neighbours(indptr, nbr, even)
-            keep = ~seen[dst] & (mate[dst] >= 0)
-            dst, first = np.unique(dst[keep], return_index=True)
-            src = src[keep][first]
-            seen[dst], parent[dst] = True, src
-            nxt = mate[dst]
-            keep = ~seen[nxt]
-            nxt, odd = nxt[keep], dst[keep]
-            seen[nxt], parent[nxt] = True, odd
-            hit = nxt[frontier[nxt]]
-            if hit.size:
-                z = hit[0]
-                node = z
-                mate[z] = -1
-                while node != u:
-                    y = parent[node]
-                    x = parent[y]
-                    mate[x], mate[y] = y, x
-                    node = x
-                moved += 1
-                break
-            even = nxt
-    return moved
-
-
 @dataclass
 class _Part:
-    """A part as its worker keeps it between the stages."""
+    """A part as its worker keeps it between the stages (petersen/partition/partition.hpp)."""
 
-    index: int
     lo: int
     F: np.ndarray  # (m, 3) global vertex ids
-    mate: np.ndarray  # local triangle id of each triangle's partner, -1 when unpaired
-    indptr: np.ndarray  # the pairable graph of the part (CSR over local ids)
-    nbr: np.ndarray
-    pair_keys: np.ndarray  # (pairable edges,) keys, for the cut's spanning non-manifold edges
-    pair_faces: np.ndarray  # (pairable edges, 2) local ids
-    frontier: np.ndarray  # bool per triangle: has an edge no other triangle of the part has
-    records: Dict[str, np.ndarray]
-    watch: np.ndarray  # keys of edges of 2+ part triangles the other parts may also have
+    partner: np.ndarray  # per triangle, its partner's global face id, -1 when unpaired
+    open_edges: np.ndarray  # (r, 4): low, high, face, apex
+    band: Dict[str, np.ndarray]  # faces, corners, sides, distance, partner
     figures: Dict[str, Any]
 
 
-def _pair_part(layout: PlyLayout, index: int, lo: int, hi: int, options: dict) -> _Part:
-    """Stage 1 on a worker: reads faces lo..hi-1, pairs them and prepares the records."""
-    clock = time.perf_counter()
+def _pair_part(layout: PlyLayout, lo: int, hi: int, augment: str, band_radius: int) -> _Part:
+    """Stage 1 on a worker: reads faces lo..hi-1 and pairs them (pair_part: a certified maximum
+    pairing of the part, its unpaired triangles moved to the border, its open edges and band)."""
     F = _read_faces(layout, lo, hi)
-    used, local = np.unique(F, return_inverse=True)
-    result = petersen.quadrangulate(_read_positions(layout, used), local.reshape(-1, 3),
-                                    threads=1, **options)
-    mate = np.full(len(F), -1, np.int64)
-    s = result.sources[: len(result.quads)]
-    mate[s[:, 0]], mate[s[:, 1]] = s[:, 1], s[:, 0]
-    edges = _group_edges(F)
-    pairable = _pairable(F, edges)
-    indptr, nbr = _csr(len(F), edges.faces[pairable])
-    one = edges.counts == 1
-    frontier = np.zeros(len(F), bool)
-    frontier[edges.faces[one, 0]] = True
-    ends = np.concatenate([edges.keys[one] >> np.uint64(32),
-                           edges.keys[one] & np.uint64(0xFFFFFFFF)])
-    frontier_vertices = np.unique(ends)
-    lo_v, hi_v = edges.keys >> np.uint64(32), edges.keys & np.uint64(0xFFFFFFFF)
-    watched = (edges.counts >= 3) | ((edges.counts == 2) & np.isin(lo_v, frontier_vertices)
-                                     & np.isin(hi_v, frontier_vertices))
-    free_before = int((mate < 0).sum())
-    moved = _move_to_frontier(mate, indptr, nbr, frontier, np.flatnonzero(mate < 0))
-    return _Part(
-        index=index, lo=lo, F=F, mate=mate, indptr=indptr, nbr=nbr,
-        pair_keys=edges.keys[pairable], pair_faces=edges.faces[pairable], frontier=frontier,
-        records={"keys": edges.keys[one], "faces": edges.faces[one, 0] + lo,
-                 "opposite": edges.opposite[one, 0]},
-        watch=np.stack([edges.keys[watched].view(np.int64),
-                        edges.counts[watched]], axis=1),
-        figures={"triangles": len(F), "pairs": int(len(result.quads)),
-                 "left": free_before, "moved_to_frontier": moved,
-                 "maximum_certified": bool(result.stats["maximum_certified"]),
-                 "interior_edges": int((edges.counts >= 2).sum()),
-                 "seconds": time.perf_counter() - clock})
+    r = _petersen.pair_part(lo, F, augment, band_radius, 1)
+    figures = {k: r[k] for k in ("pairs", "moved_to_border", "stranded", "maximum_certified",
+                                 "inner_structural_cuts", "seconds")}
+    figures["unpaired"] = len(r["unpaired"])
+    figures["band_faces"] = len(r["band"]["faces"])
+    figures["whole"] = figures["band_faces"] == len(F)
+    return _Part(lo, F, r["partner"], r["open_edges"], r["band"], figures)
 
 
-def _cut_inputs(part: _Part) -> Dict[str, Any]:
-    """What stage 1 sends to the cut: records, watched keys, figures (all small)."""
-    return {"records": part.records, "watch": part.watch, "figures": part.figures}
+def _open_edges(part: _Part) -> Dict[str, Any]:
+    """What stage 1 sends to the cut: the open-edge records and the figures (small)."""
+    return {"open_edges": part.open_edges, "figures": part.figures}
+
+
+def _band(part: _Part) -> Dict[str, np.ndarray]:
+    return part.band
 
 
 def _cut(inputs: Sequence[Dict[str, Any]]) -> Dict[str, Any]:
-    """Stage 2: the records of every part paired by key. O(r log r) in the records."""
-    keys = np.concatenate([i["records"]["keys"] for i in inputs])
-    faces = np.concatenate([i["records"]["faces"] for i in inputs])
-    opposite = np.concatenate([i["records"]["opposite"] for i in inputs])
-    watch = np.concatenate([i["watch"] for i in inputs])
-    order = np.argsort(keys, kind="stable")
-    keys, faces, opposite = keys[order], faces[order], opposite[order]
-    start = np.flatnonzero(np.r_[True, keys[1:] != keys[:-1]])
-    counts = np.diff(np.r_[start, len(keys)])
-    # Faces on each key beyond the records: the parts' own triangles on a watched edge.
-    group_keys = keys[start]
-    watch_keys = watch[:, 0].view(np.uint64)
-    extra = np.zeros(len(start), np.int64)
-    where = np.searchsorted(group_keys, watch_keys)
-    hit = where < len(group_keys)
-    hit[hit] &= group_keys[where[hit]] == watch_keys[hit]
-    np.add.at(extra, where[hit], watch[hit, 1])
-    total = counts + extra
-    # A watched key of two parts' interiors shares no record: its count is their sum.
-    wk, wcount = np.unique(watch_keys[~hit], return_counts=True)
-    spanning = np.concatenate([group_keys[(total >= 3) & (extra > 0)], wk[wcount >= 2]])
-    # Each part counted its watched edges among its own; counted once here.
-    hit_groups = int((extra > 0).sum())
-    repeats = (int(hit.sum()) - hit_groups) + (int((~hit).sum()) - len(wk))
-    two = (counts == 2) & (extra == 0)
-    s = start[two]
-    cut = two.copy()
-    cut[two] = opposite[s] != opposite[s + 1]
-    s = start[cut]
-    return {"edges": np.stack([faces[s], faces[s + 1]], axis=1),
-            "spanning_nonmanifold": np.unique(spanning),
-            "boundary_edges": int(((counts == 1) & (extra == 0)).sum()),
-            "record_edges": len(start) - hit_groups - repeats,
-            "figures": [i["figures"] for i in inputs]}
+    """Stage 2: the open edges of every part paired by vertex key (pair_open_edges)."""
+    cut = _petersen.pair_open_edges(np.concatenate([i["open_edges"] for i in inputs]))
+    cut["figures"] = [i["figures"] for i in inputs]
+    return cut
 
 
-def _band(part: _Part, spanning: np.ndarray, rings: int) -> Dict[str, np.ndarray]:
-    """Stage 3 on a worker: the triangles within `rings` pairable steps of the frontier (and of
-    the part's free triangles and the spanning non-manifold edges), closed under the part's pairs,
-    with their pairable edges. O(band) per ring."""
-    m = len(part.F)
-    bad = np.isin(part.pair_keys, spanning)
-    seeds = part.frontier | (part.mate < 0)
-    seeds[part.pair_faces[bad].ravel()] = True
-    in_band = seeds.copy()
-    ring = np.flatnonzero(seeds)
-    for _ in range(rings):
-        if not ring.size:
-            break
-        _, dst = _neighbours(part.indptr, part.nbr, ring)
-        ring = np.unique(dst[~in_band[dst]])
-        in_band[ring] = True
-    paired = in_band & (part.mate >= 0)
-    in_band[part.mate[paired]] = True
-    ok = ~bad & in_band[part.pair_faces[:, 0]] & in_band[part.pair_faces[:, 1]]
-    local = np.flatnonzero(in_band)
-    mate = part.mate[local]
-    return {"faces": local + part.lo, "triangles": part.F[local],
-            "mates": np.where(mate >= 0, mate + part.lo, -1),
-            "edges": part.pair_faces[ok] + part.lo, "whole": bool(in_band.all() or m == 0)}
+def _cut_figures(cut: Dict[str, Any]) -> Dict[str, Any]:
+    figures = {k: v for k, v in cut.items() if k != "adjacencies"}
+    figures["adjacencies"] = len(cut["adjacencies"])
+    return figures
+
+
+def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]], augment: str,
+            first_radius: int) -> Dict[str, Any]:
+    """Stage 3: augmenting paths in the bands and the cut adjacencies (repair_cuts). Checked
+    here: the new partners name each other back. Returns each band face's new partner and, for a
+    partner in the bands, its corners (the quad across a cut needs them)."""
+    band = {k: np.concatenate([b[k] for b in bands]) for k in bands[0]}
+    r = _petersen.repair_cuts(band["faces"], band["corners"], band["sides"], band["distance"],
+                              band["partner"], cut["adjacencies"], augment, first_radius)
+    faces, partner = band["faces"], r["partner"]
+    order = np.argsort(faces)
+    at = np.searchsorted(faces, partner, sorter=order)
+    at = order[np.minimum(at, len(faces) - 1)]
+    inside = (partner >= 0) & (faces[at] == partner)
+    if (partner[at[inside]] != faces[inside]).any():
+        bad = np.flatnonzero(inside & (partner[at] != faces))[0]
+        raise RuntimeError(f"verification failed: the repair paired triangle {faces[bad]} with "
+                           f"{partner[bad]}, which is paired with {partner[at[bad]]}")
+    partner_corners = np.where(inside[:, None], band["corners"][at], -1)
+    figures = {k: v for k, v in r.items() if k != "partner"}
+    return {"faces": faces, "partner": partner, "partner_corners": partner_corners,
+            "figures": figures}
+
+
+def _repair_for(repair: Dict[str, Any], lo: int, hi: int) -> Dict[str, Any]:
+    """The rows of the repair on faces lo..hi-1: what one part's write needs."""
+    mine = (repair["faces"] >= lo) & (repair["faces"] < hi)
+    return {k: repair[k][mine] for k in ("faces", "partner", "partner_corners")}
+
+
+def _repair_figures(repair: Dict[str, Any]) -> Dict[str, Any]:
+    return repair["figures"]
+
+
+def _plan(part: _Part, repair: Dict[str, Any]):
+    """The part's output: the first triangle of each pair (local ids) with its partner's corners,
+    and the triangles left (local ids). Verifies, from the partners alone, that every triangle of
+    the part is in exactly one quad or left: each pair inside the part names its partner back
+    (the repair checked those across cuts). O(part)."""
+    m, lo = len(part.F), part.lo
+    partner = part.partner.copy()
+    partner[repair["faces"] - lo] = repair["partner"]
+    ids = np.arange(m)
+    inside = (partner >= lo) & (partner < lo + m)
+    back = partner[np.where(inside, partner - lo, 0)]
+    if (inside & (back != ids + lo)).any():
+        bad = np.flatnonzero(inside & (back != ids + lo))[0]
+        raise RuntimeError(f"verification failed: triangle {lo + bad} is paired with "
+                           f"{partner[bad]}, which is paired with {back[bad]}")
+    if ((partner == ids + lo)).any():
+        raise RuntimeError("verification failed: a triangle paired with itself")
+    first = np.flatnonzero(partner > ids + lo)
+    corners = np.empty((len(first), 3), np.int64)
+    local = inside[first]
+    corners[local] = part.F[partner[first[local]] - lo]
+    across = np.searchsorted(repair["faces"], first[~local] + lo)
+    if len(across) and not (repair["faces"][np.minimum(across, len(repair["faces"]) - 1)]
+                            == first[~local] + lo).all():
+        raise RuntimeError("verification failed: a pair across a cut the repair did not make")
+    corners[~local] = repair["partner_corners"][across]
+    return first, corners, np.flatnonzero(partner < 0)
+
+
+def _part_counts(part: _Part, repair: Dict[str, Any]) -> Tuple[int, int]:
+    """The quads and triangles this part writes."""
+    first, _, lefts = _plan(part, repair)
+    return len(first), len(lefts)
 
 
 def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     """The quad of each pair of triangles sharing an edge, following the first's orientation
-    (dualize/quad_of.hpp): the first's corners with the second's opposite vertex inserted in the
+    (quad_of in dualize/quad_of.hpp, vectorised): the first's corners with the second's opposite vertex inserted in the
     shared edge. Raises RuntimeError when two triangles do not share exactly one edge."""
     in_first = (second[:, :, None] == first[:, None, :]).any(axis=2)
     if not (in_first.sum(axis=1) == 2).all():
@@ -422,72 +294,16 @@ def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     return np.stack([first[rows, i], w, first[rows, (i + 1) % 3], first[rows, (i + 2) % 3]], 1)
 
 
-def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]]) -> Dict[str, Any]:
-    """Stage 3: a maximum matching of the bands and the cut edges replaces the bands' pairs.
-    Checked: each new pair an edge of the graph, each triangle in one pair at most, the two
-    triangles of each sharing an edge. O(band) plus the matching's cost."""
-    clock = time.perf_counter()
-    faces = np.concatenate([b["faces"] for b in bands])
-    order = np.argsort(faces)
-    faces = faces[order]
-    triangles = np.concatenate([b["triangles"] for b in bands])[order]
-    mates = np.concatenate([b["mates"] for b in bands])[order]
-    edges = np.concatenate([b["edges"] for b in bands] + [cut["edges"]])
-    ids = np.searchsorted(faces, edges)
-    if not (faces[np.minimum(ids, len(faces) - 1)] == edges).all():
-        raise RuntimeError("a cut edge's triangle is in no band")
-    found = petersen.maximum_matching(len(faces), ids)
-    pairs = np.sort(ids[found.edges], axis=1)
-    used = np.bincount(pairs.ravel(), minlength=len(faces))
-    if used.max(initial=0) > 1:
-        raise RuntimeError("verification failed: a triangle in two pairs of the repair")
-    quads = _quads_of(triangles[pairs[:, 0]], triangles[pairs[:, 1]])
-    return {"faces": faces, "pairs": faces[pairs], "quads": quads,
-            "left": faces[used == 0], "free_before": int((mates < 0).sum()),
-            "pairs_before": int((mates >= 0).sum()) // 2, "nodes": len(faces),
-            "edges": len(edges), "whole": all(b["whole"] for b in bands),
-            "seconds": time.perf_counter() - clock}
-
-
-def _plan(part: _Part, repair: Dict[str, Any]):
-    """The part's output: its own pairs outside the band (first, second local ids), the repair's
-    pairs whose first triangle is its (a mask of the repair's rows) and its triangles left.
-    Verifies that every triangle of the part is in exactly one quad or left. O(part)."""
-    m, lo = len(part.F), part.lo
-    ids = np.arange(m)
-    in_band = np.zeros(m, bool)
-    in_band[repair["faces"] - lo] = True
-    own = ~in_band & (part.mate > ids)
-    first, second = ids[own], part.mate[own]
-    pairs = repair["pairs"]
-    mine = (pairs >= lo) & (pairs < lo + m)
-    lefts = np.sort(np.concatenate([repair["left"] - lo, np.flatnonzero(~in_band & (part.mate < 0))]))
-    cover = np.bincount(np.concatenate([first, second, pairs[mine] - lo, lefts]), minlength=m)
-    if not (cover == 1).all():
-        bad = np.flatnonzero(cover != 1)[0]
-        raise RuntimeError(f"verification failed: triangle {lo + bad} is in {cover[bad]} faces")
-    return first, second, mine[:, 0], lefts
-
-
-def _part_counts(part: _Part, repair: Dict[str, Any]) -> Tuple[int, int]:
-    """The quads and triangles this part writes."""
-    first, _, theirs, lefts = _plan(part, repair)
-    return len(first) + int(theirs.sum()), len(lefts)
-
-
 def _write_part(part: _Part, repair: Dict[str, Any], out_tmp: str, offset: int) -> int:
     """Stage 4 on a worker: the part's faces, in input order, written at `offset` (uchar count,
     uint32 corners). Idempotent, so a retried write is harmless. Returns the bytes written."""
-    first, second, theirs, lefts = _plan(part, repair)
-    quads = np.concatenate([_quads_of(part.F[first], part.F[second]), repair["quads"][theirs]])
-    heads = np.concatenate([first, repair["pairs"][theirs, 0] - part.lo])
+    heads, corners, lefts = _plan(part, repair)
+    quads = _quads_of(part.F[heads], corners)
     starts = np.concatenate([heads, lefts])
     sizes = np.concatenate([np.full(len(heads), 17), np.full(len(lefts), 13)])
     order = np.argsort(starts, kind="stable")
-    at = np.zeros(len(order), np.int64)
-    np.cumsum(sizes[order][:-1], out=at[1:]) if len(order) else None
     where = np.empty(len(order), np.int64)
-    where[order] = at
+    where[order] = np.cumsum(sizes[order]) - sizes[order]
     out = np.empty(int(sizes.sum()), np.uint8)
     for rows, k, base in ((quads, 4, where[: len(heads)]), (part.F[lefts], 3, where[len(heads):])):
         record = np.empty(len(rows), np.dtype([("n", "u1"), ("v", "<u4", (k,))]))
@@ -501,42 +317,36 @@ def _write_part(part: _Part, repair: Dict[str, Any], out_tmp: str, offset: int) 
     return len(out)
 
 
-_OPTIONS = ("algorithm", "seed", "augment")
+_OPTIONS = ("augment",)
 
 
 def _submit(client, fn, *args, retries: int):
     return client.submit(fn, *args, retries=retries, pure=False)
 
 
-def _repair_for(repair: Dict[str, Any], lo: int, hi: int) -> Dict[str, Any]:
-    """The rows of the repair that concern faces lo..hi-1: what one part's write needs."""
-    def within(ids):
-        return (ids >= lo) & (ids < hi)
-
-    touching = within(repair["pairs"]).any(axis=1)
-    return {"faces": repair["faces"][within(repair["faces"])], "pairs": repair["pairs"][touching],
-            "quads": repair["quads"][touching], "left": repair["left"][within(repair["left"])]}
-
-
-def _repair_figures(repair: Dict[str, Any]) -> Dict[str, Any]:
-    return {k: v for k, v in repair.items() if np.isscalar(v)} | {"left": len(repair["left"])}
-
-
-def _repair_rounds(client, parts, cut, face_count, rings: int, retries: int):
-    """Stage 3, widened until a closed mesh's pairing is perfect (or the bands are the parts).
-    The repair stays on its worker; the client gets its figures."""
+def _pair_and_repair(client, layout, bounds, augment, band_radius, first_radius, retries):
+    """Stages 1 to 3; on a closed mesh left imperfect, stage 1 again with bands four times as
+    wide, until a band is its whole part (the repair is then the whole mesh's augmentation)."""
     rounds = 0
     while True:
         rounds += 1
-        bands = [_submit(client, _band, p, cut["spanning_nonmanifold"], rings, retries=retries)
-                 for p in parts]
-        repair = _submit(client, _repair, cut, bands, retries=retries)
-        figures = _submit(client, _repair_figures, repair, retries=retries).result()
-        closed = cut["boundary_edges"] == 0
-        if not (closed and figures["left"] and not figures["whole"]):
-            figures.update(rounds=rounds, rings=rings)
-            return repair, figures
-        rings = min(rings * 4, face_count)
+        clock = time.perf_counter()
+        parts = [_submit(client, _pair_part, layout, int(lo), int(hi), augment, band_radius,
+                         retries=retries) for lo, hi in zip(bounds[:-1], bounds[1:])]
+        cut = _submit(client, _cut, [_submit(client, _open_edges, p, retries=retries)
+                                     for p in parts], retries=retries)
+        cut_figures = _submit(client, _cut_figures, cut, retries=retries).result()
+        parts_seconds = time.perf_counter() - clock
+        clock = time.perf_counter()
+        bands = [_submit(client, _band, p, retries=retries) for p in parts]
+        repair = _submit(client, _repair, cut, bands, augment, first_radius, retries=retries)
+        repaired = _submit(client, _repair_figures, repair, retries=retries).result()
+        repaired.update(rounds=rounds, band_radius=band_radius, parts_seconds=parts_seconds,
+                        repair_seconds=time.perf_counter() - clock)
+        whole = all(f["whole"] for f in cut_figures["figures"])
+        if not (cut_figures["closed"] and repaired["unpaired_after"] and not whole):
+            return parts, cut_figures, repaired, repair
+        band_radius *= 4
 
 
 def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> Tuple[int, int]:
@@ -588,69 +398,64 @@ def _part_bounds(face_count: int, parts: Union[int, Sequence[int]]) -> np.ndarra
 
 
 def quadrangulate(in_path: str, out_path: str, client: Any,
-                  parts: Union[int, Sequence[int]] = 0, rings: int = 8,
-                  retries: int = 3, **options: Any) -> Dict[str, Any]:
+                  parts: Union[int, Sequence[int]] = 0, band_radius: int = 16,
+                  first_radius: int = 2, retries: int = 3, **options: Any) -> Dict[str, Any]:
     """Pairs the triangles of the binary PLY ``in_path`` into quads on a Dask cluster and writes
     them to ``out_path`` (binary PLY, the input's vertex block unchanged, faces in input order:
     each quad where its first triangle was, left triangles as they were), as
     ``petersen.quadrangulate`` would. ``client`` is a ``distributed.Client``; the file must be at
     the same path on every worker. ``parts`` face ranges of even sizes (default: one per worker),
-    or the ranges' boundaries ``[0, b1, ..., face count]``; ``rings`` the
-    repair bands' first width, ``retries`` Dask's retries of each task; ``options`` those of
-    ``petersen.quadrangulate`` that apply to parts: ``algorithm``, ``seed``, ``augment``.
+    or the ranges' boundaries ``[0, b1, ..., face count]``; ``band_radius`` how far from its cut
+    a part's band reaches and ``first_radius`` the repair's first band graph (it doubles up to
+    ``band_radius``); ``retries`` Dask's retries of each task; ``options``: ``augment`` ("local"
+    or "faithful"), as ``petersen.quadrangulate``.
 
     Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``faces_in``,
-    ``vertices``, ``triangles``, ``mesh_edges``, ``pairs``, ``triangles_left``,
-    ``maximum_certified``, ``total_seconds``, ...) and the distributed figures (``parts``,
-    ``part_cut_edges``, ``left_after_parts``, ``repair_*``, each stage's seconds).
-    ``maximum_certified`` is True when every triangle is paired (checked); a mesh with boundary
-    whose pairing leaves triangles gets no Tutte-Berge witness here (``petersen.quadrangulate``
-    gives one). Raises ValueError naming the file and header line, or face, for input it cannot
-    read, TypeError for an option parts do not take.
+    ``vertices``, ``triangles``, ``pairs``, ``triangles_left``, ``maximum_certified``,
+    ``total_seconds``, ...) and the distributed figures (``parts``, ``part_cut_edges``,
+    ``unpaired_after_parts``, ``repair_*``, each stage's seconds). ``maximum_certified`` is True
+    when every triangle is paired (checked); a mesh with boundary whose pairing leaves triangles
+    gets no whole-mesh Tutte-Berge witness here (``petersen.quadrangulate`` gives one). Raises
+    ValueError naming the file and header line, or face, for input it cannot read, TypeError for
+    an option the parts do not take.
     """
     for key in options:
         if key not in _OPTIONS:
             raise TypeError(f"petersen.distributed.quadrangulate: option '{key}' is not one the "
                             f"parts take ({', '.join(_OPTIONS)})")
     clock = time.perf_counter()
-    figures: Dict[str, Any] = {}
     layout = read_layout(in_path)
     bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
-    parts = len(bounds) - 1
-    lap = time.perf_counter()
-    part_futures = [_submit(client, _pair_part, layout, i, int(bounds[i]), int(bounds[i + 1]),
-                            options, retries=retries) for i in range(parts)]
-    cut = _submit(client, _cut, [_submit(client, _cut_inputs, p, retries=retries)
-                                 for p in part_futures], retries=retries).result()
-    figures["parts_seconds"] = time.perf_counter() - lap
-    lap = time.perf_counter()
-    repair, repaired = _repair_rounds(client, part_futures, cut, layout.face_count, rings,
-                                      retries)
-    figures["repair_seconds"] = time.perf_counter() - lap
+    part_futures, cut, repaired, repair = _pair_and_repair(
+        client, layout, bounds, options.get("augment", "local"), band_radius, first_radius,
+        retries)
     lap = time.perf_counter()
     quads, left = _write_output(client, layout, part_futures, bounds, repair, out_path, retries)
-    figures["write_seconds"] = time.perf_counter() - lap
-    per_part = cut["figures"]
-    interior = sum(f["interior_edges"] for f in per_part)
+    write_seconds = time.perf_counter() - lap
     if quads * 2 + left != layout.face_count:
         raise RuntimeError("verification failed: the parts' faces do not add up to the input's")
-    stats = {
-        "objective": "pairs", "algorithm": options.get("algorithm", "auto"),
-        "augment": options.get("augment", "local"), "vertices": layout.vertex_count,
-        "faces_in": layout.face_count, "triangles": layout.face_count, "polygons_kept": 0,
-        "mesh_edges": interior + cut["record_edges"],
-        "maximum_certified": left == 0, "pairs": quads, "triangles_left": left,
-        "added_vertices": 0, "parts": parts, "part_cut_edges": len(cut["edges"]),
-        "boundary_edges": cut["boundary_edges"],
-        "spanning_nonmanifold_edges": len(cut["spanning_nonmanifold"]),
-        "left_after_parts": sum(f["left"] for f in per_part),
-        "moved_to_frontier": sum(f["moved_to_frontier"] for f in per_part),
+    per_part = cut["figures"]
+    return {
+        "objective": "pairs", "algorithm": "auto", "augment": options.get("augment", "local"),
+        "vertices": layout.vertex_count, "faces_in": layout.face_count,
+        "triangles": layout.face_count, "polygons_kept": 0, "maximum_certified": left == 0,
+        "pairs": quads, "triangles_left": left, "added_vertices": 0,
+        "parts": len(bounds) - 1, "part_cut_edges": cut["adjacencies"],
+        "boundary_edges": cut["boundary_edges"], "non_manifold_edges": cut["non_manifold_edges"],
+        "duplicate_edges": cut["duplicate_edges"],
+        "parts_certified": all(f["maximum_certified"] for f in per_part),
+        "unpaired_after_parts": sum(f["unpaired"] for f in per_part),
+        "moved_to_border": sum(f["moved_to_border"] for f in per_part),
+        "stranded": sum(f["stranded"] for f in per_part),
+        "band_faces": sum(f["band_faces"] for f in per_part),
         "part_seconds_max": max(f["seconds"] for f in per_part),
-        "repair_rounds": repaired["rounds"], "repair_rings": repaired["rings"],
-        "repair_nodes": repaired["nodes"], "repair_edges": repaired["edges"],
-        "repair_free_before": repaired["free_before"], "repair_left": repaired["left"],
+        "repair_rounds": repaired["rounds"], "repair_band_radius": repaired["band_radius"],
+        "repair_radius": repaired["radius"], "repair_band_graph_faces": repaired["band_graph_faces"],
+        "repair_augmenting_paths": repaired["augmenting_paths"],
+        "repair_unpaired_before": repaired["unpaired_before"],
+        "repair_unpaired_after": repaired["unpaired_after"],
+        "repair_maximum_in_band_certified": repaired["maximum_in_band_certified"],
         "repair_matching_seconds": repaired["seconds"],
+        "parts_seconds": repaired["parts_seconds"], "repair_seconds": repaired["repair_seconds"],
+        "write_seconds": write_seconds, "total_seconds": time.perf_counter() - clock,
     }
-    stats.update(figures)
-    stats["total_seconds"] = time.perf_counter() - clock
-    return stats

@@ -144,7 +144,7 @@ def check_run(stats, out, mesh, in_memory):
     assert len(quads) == len(in_memory.quads) == stats["pairs"]
     assert stats["triangles_left"] == in_memory.stats["triangles_left"] == 0
     assert stats["maximum_certified"] is True
-    for key in ("faces_in", "vertices", "triangles", "mesh_edges"):
+    for key in ("faces_in", "vertices", "triangles"):
         assert stats[key] == in_memory.stats[key], key
 
 
@@ -161,11 +161,12 @@ def test_parts_left_unpaired_are_paired_across_the_cuts(small_mesh, client, tmp_
     out = tmp_path / "quads.ply"
     m = len(small_mesh[2])
     bounds = [0, m // 4 + 1, m // 2, 3 * m // 4 + 1, m]
-    stats = finish(*run(pd.quadrangulate, str(small_mesh[0]), str(out), client, parts=bounds,
-                        rings=2))
+    stats = finish(*run(pd.quadrangulate, str(small_mesh[0]), str(out), client, parts=bounds))
     check_run(stats, out, small_mesh, petersen.quadrangulate(small_mesh[1], small_mesh[2]))
-    assert stats["left_after_parts"] > 0
-    assert stats["repair_free_before"] >= stats["left_after_parts"] - stats["moved_to_frontier"]
+    assert stats["unpaired_after_parts"] >= 4 and stats["parts_certified"] is True
+    assert stats["repair_unpaired_before"] == stats["unpaired_after_parts"]
+    assert stats["repair_augmenting_paths"] * 2 == stats["unpaired_after_parts"]
+    assert stats["repair_unpaired_after"] == 0
 
 
 def test_a_worker_killed_mid_run_costs_a_retry(mesh, client, in_memory, tmp_path):
@@ -199,6 +200,6 @@ def test_bad_input_is_named(client, tmp_path):
     petersen.write_mesh(str(text), np.eye(3), np.array([[0, 1, 2]]))
     with pytest.raises(ValueError, match="not a PLY"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client)
-    with pytest.raises(TypeError, match="sharp_angle"):
+    with pytest.raises(TypeError, match="sharp_angle.*augment"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, sharp_angle=30)
     assert not (tmp_path / "out.ply").exists()
