@@ -242,9 +242,10 @@ def _repair_figures(repair: Dict[str, Any]) -> Dict[str, Any]:
     return repair["figures"]
 
 
-def _plan(part: _Part, repair: Dict[str, Any]):
-    """The part's output: the first triangle of each pair (local ids) with its partner's corners,
-    and the triangles left (local ids). Verifies, from the partners alone, that every triangle of
+def _plan(part: _Part, repair: Dict[str, Any]) -> Dict[str, np.ndarray]:
+    """The part's output, kept on its worker for the write: the quad of each pair whose first
+    triangle is the part's (ascending by that triangle) and the triangles left (local ids,
+    ascending). Verifies, from the partners alone, that every triangle of
     the part is in exactly one quad or left: each pair inside the part names its partner back
     (the repair checked those across cuts). O(part)."""
     m, lo = len(part.F), part.lo
@@ -268,19 +269,20 @@ def _plan(part: _Part, repair: Dict[str, Any]):
                             == first[~local] + lo).all():
         raise RuntimeError("verification failed: a pair across a cut the repair did not make")
     corners[~local] = repair["partner_corners"][across]
-    return first, corners, np.flatnonzero(partner < 0)
+    return {"heads": first, "quads": _quads_of(part.F[first], corners),
+            "lefts": np.flatnonzero(partner < 0)}
 
 
-def _part_counts(part: _Part, repair: Dict[str, Any]) -> Tuple[int, int]:
-    """The quads and triangles this part writes."""
-    first, _, lefts = _plan(part, repair)
-    return len(first), len(lefts)
+def _plan_counts(plan: Dict[str, np.ndarray]) -> Tuple[int, int]:
+    """The quads and triangles a part writes."""
+    return len(plan["heads"]), len(plan["lefts"])
 
 
 def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     """The quad of each pair of triangles sharing an edge, following the first's orientation
-    (quad_of in dualize/quad_of.hpp, vectorised): the first's corners with the second's opposite vertex inserted in the
-    shared edge. Raises RuntimeError when two triangles do not share exactly one edge."""
+    (quad_of in dualize/quad_of.hpp, vectorised): the first's corners with the second's opposite
+    vertex inserted at the first side whose ends the second holds. Raises RuntimeError when two
+    triangles do not share exactly one edge. O(pairs)."""
     in_first = (second[:, :, None] == first[:, None, :]).any(axis=2)
     if not (in_first.sum(axis=1) == 2).all():
         bad = np.flatnonzero(in_first.sum(axis=1) != 2)[0]
@@ -294,27 +296,33 @@ def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     return np.stack([first[rows, i], w, first[rows, (i + 1) % 3], first[rows, (i + 2) % 3]], 1)
 
 
-def _write_part(part: _Part, repair: Dict[str, Any], out_tmp: str, offset: int) -> int:
-    """Stage 4 on a worker: the part's faces, in input order, written at `offset` (uchar count,
-    uint32 corners). Idempotent, so a retried write is harmless. Returns the bytes written."""
-    heads, corners, lefts = _plan(part, repair)
-    quads = _quads_of(part.F[heads], corners)
-    starts = np.concatenate([heads, lefts])
-    sizes = np.concatenate([np.full(len(heads), 17), np.full(len(lefts), 13)])
-    order = np.argsort(starts, kind="stable")
-    where = np.empty(len(order), np.int64)
-    where[order] = np.cumsum(sizes[order]) - sizes[order]
-    out = np.empty(int(sizes.sum()), np.uint8)
-    for rows, k, base in ((quads, 4, where[: len(heads)]), (part.F[lefts], 3, where[len(heads):])):
-        record = np.empty(len(rows), np.dtype([("n", "u1"), ("v", "<u4", (k,))]))
-        record["n"], record["v"] = k, rows
-        out[base[:, None] + np.arange(1 + 4 * k)] = record.view(np.uint8).reshape(-1, 1 + 4 * k)
+def _face_bytes(corners: np.ndarray) -> bytes:
+    """Faces of k corners as PLY records: a uchar k, then k little-endian uint32."""
+    k = corners.shape[1]
+    record = np.empty(len(corners), np.dtype([("n", "u1"), ("v", "<u4", (k,))]))
+    record["n"], record["v"] = k, corners
+    return record.tobytes()
+
+
+def _write_part(part: _Part, plan: Dict[str, np.ndarray], out_tmp: str, offset: int) -> int:
+    """Stage 4 on a worker: the part's faces in input order (each quad at its first triangle,
+    each left triangle at its place), written at `offset`. The quads between two left triangles
+    are one run of records, so the cost is O(part) plus O(1) per left triangle. Idempotent: a
+    retried write writes the same bytes. Returns the bytes written."""
+    quads, lefts = plan["quads"], plan["lefts"]
+    before = np.searchsorted(plan["heads"], lefts)
+    pieces, done = [], 0
+    for left, quads_before in zip(lefts, before):
+        pieces += [_face_bytes(quads[done:quads_before]), _face_bytes(part.F[left:left + 1])]
+        done = quads_before
+    pieces.append(_face_bytes(quads[done:]))
+    data = b"".join(pieces)
     fd = os.open(out_tmp, os.O_WRONLY)
     try:
-        os.pwrite(fd, out.tobytes(), offset)
+        os.pwrite(fd, data, offset)
     finally:
         os.close(fd)
-    return len(out)
+    return len(data)
 
 
 _OPTIONS = ("augment",)
@@ -353,8 +361,8 @@ def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> T
     """Stage 4: the header and vertex block by the client, each part's faces by its worker."""
     slices = [_submit(client, _repair_for, repair, int(bounds[i]), int(bounds[i + 1]),
                       retries=retries) for i in range(len(parts))]
-    counts = client.gather([_submit(client, _part_counts, p, r, retries=retries)
-                            for p, r in zip(parts, slices)])
+    plans = [_submit(client, _plan, p, r, retries=retries) for p, r in zip(parts, slices)]
+    counts = client.gather([_submit(client, _plan_counts, p, retries=retries) for p in plans])
     quads = sum(c[0] for c in counts)
     left = sum(c[1] for c in counts)
     header = ("ply\nformat binary_little_endian 1.0\ncomment written by petersen.distributed\n"
@@ -373,8 +381,8 @@ def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> T
             out.truncate(len(header) + vertex_bytes + 17 * quads + 13 * left)
         offsets = np.cumsum([0] + [17 * q + 13 * t for q, t in counts])[:-1]
         offsets += len(header) + vertex_bytes
-        client.gather([_submit(client, _write_part, p, r, tmp, int(o), retries=retries)
-                       for p, r, o in zip(parts, slices, offsets)])
+        client.gather([_submit(client, _write_part, p, plan, tmp, int(o), retries=retries)
+                       for p, plan, o in zip(parts, plans, offsets)])
         os.replace(tmp, out_path)
     finally:
         if os.path.exists(tmp):
@@ -450,7 +458,8 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         "band_faces": sum(f["band_faces"] for f in per_part),
         "part_seconds_max": max(f["seconds"] for f in per_part),
         "repair_rounds": repaired["rounds"], "repair_band_radius": repaired["band_radius"],
-        "repair_radius": repaired["radius"], "repair_band_graph_faces": repaired["band_graph_faces"],
+        "repair_radius": repaired["radius"],
+        "repair_band_graph_faces": repaired["band_graph_faces"],
         "repair_augmenting_paths": repaired["augmenting_paths"],
         "repair_unpaired_before": repaired["unpaired_before"],
         "repair_unpaired_after": repaired["unpaired_after"],

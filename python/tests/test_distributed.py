@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 import petersen
-from conftest import torus
+from conftest import open_grid, torus
 
 distributed = pytest.importorskip("distributed")
 
@@ -78,9 +78,10 @@ def finish(thread, box):
     return box["value"]
 
 
-def read_ply_quads(path):
-    """The output as numpy reads it: header, vertex bytes and (k, 4) quads; asserts that every
-    face is a quad (the file's size allows nothing else)."""
+def read_ply_faces(path):
+    """The output as numpy reads it: vertex bytes, (k, 4) quads and (t, 3) triangles, from the
+    header's counts and the uchar-counted records (one run of 17-byte quad records when the size
+    says every face is a quad)."""
     data = np.fromfile(path, np.uint8)
     end = bytes(data[:4096]).index(b"end_header\n") + len("end_header\n")
     header = bytes(data[:end]).decode().split("\n")
@@ -89,10 +90,19 @@ def read_ply_quads(path):
     assert "property list uchar uint vertex_indices" in header
     vertex_bytes = data[end:end + 24 * n]
     faces = data[end + 24 * n:]
-    assert faces.size == 17 * m, "every output face is a quad"
-    records = faces.view(np.dtype([("n", "u1"), ("v", "<u4", (4,))]))
-    assert (records["n"] == 4).all()
-    return vertex_bytes, records["v"].astype(np.int64)
+    if faces.size == 17 * m:
+        records = faces.view(np.dtype([("n", "u1"), ("v", "<u4", (4,))]))
+        assert (records["n"] == 4).all()
+        return vertex_bytes, records["v"].astype(np.int64), np.zeros((0, 3), np.int64)
+    quads, triangles, at = [], [], 0
+    for _ in range(m):
+        k = int(faces[at])
+        assert k in (3, 4)
+        (quads if k == 4 else triangles).append(faces[at + 1:at + 1 + 4 * k].view("<u4"))
+        at += 1 + 4 * k
+    assert at == faces.size
+    return (vertex_bytes, np.array(quads, np.int64).reshape(-1, 4),
+            np.array(triangles, np.int64).reshape(-1, 3))
 
 
 def input_vertex_bytes(path, n):
@@ -101,9 +111,10 @@ def input_vertex_bytes(path, n):
     return data[end:end + 24 * n]
 
 
-def check_quads(quads, F):
-    """Every input triangle in exactly one quad, and each quad the union of two input triangles
-    sharing an edge (its diagonal): looked up among the input's triangles by sorted corners."""
+def check_faces(quads, triangles, F):
+    """Every input triangle in exactly one output face, each quad the union of two input
+    triangles sharing an edge (its diagonal), each triangle an input triangle: looked up among
+    the input's triangles by sorted corners."""
     def key(a, b, c):
         t = np.sort(np.stack([a, b, c], axis=1), axis=1)
         return (t[:, 0] << 42) | (t[:, 1] << 21) | t[:, 2]
@@ -125,8 +136,10 @@ def check_quads(quads, F):
     assert (ok_02 | ok_13).all(), "each quad is two input triangles sharing its diagonal"
     first = np.where(ok_02, by_02[0], by_13[0])
     second = np.where(ok_02, by_02[1], by_13[1])
-    cover = np.bincount(np.concatenate([first, second]), minlength=len(F))
-    assert (cover == 1).all(), "every input triangle in exactly one quad"
+    left = lookup(key(triangles[:, 0], triangles[:, 1], triangles[:, 2]))
+    assert (left >= 0).all(), "each triangle written is an input triangle"
+    cover = np.bincount(np.concatenate([first, second, left]), minlength=len(F))
+    assert (cover == 1).all(), "every input triangle in exactly one output face"
 
 
 @pytest.fixture(scope="module")
@@ -138,12 +151,12 @@ def in_memory(mesh):
 def check_run(stats, out, mesh, in_memory):
     """The output checked with numpy against the input, and sized as the in-memory run's."""
     path, V, F = mesh
-    vertex_bytes, quads = read_ply_quads(out)
+    vertex_bytes, quads, triangles = read_ply_faces(out)
     assert np.array_equal(vertex_bytes, input_vertex_bytes(path, len(V))), "vertices unchanged"
-    check_quads(quads, F)
+    check_faces(quads, triangles, F)
     assert len(quads) == len(in_memory.quads) == stats["pairs"]
-    assert stats["triangles_left"] == in_memory.stats["triangles_left"] == 0
-    assert stats["maximum_certified"] is True
+    assert len(triangles) == stats["triangles_left"] == in_memory.stats["triangles_left"]
+    assert stats["maximum_certified"] is (len(triangles) == 0)
     for key in ("faces_in", "vertices", "triangles"):
         assert stats[key] == in_memory.stats[key], key
 
@@ -152,6 +165,7 @@ def test_closed_mesh_of_a_million_triangles(mesh, client, in_memory, tmp_path):
     out = tmp_path / "quads.ply"
     stats = finish(*run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=3))
     check_run(stats, out, mesh, in_memory)
+    assert stats["triangles_left"] == 0
     assert stats["parts"] == 3 and stats["part_cut_edges"] > 0
     assert not list(tmp_path.glob("*.tmp-*")), "the temporary file was renamed"
 
@@ -167,6 +181,18 @@ def test_parts_left_unpaired_are_paired_across_the_cuts(small_mesh, client, tmp_
     assert stats["repair_unpaired_before"] == stats["unpaired_after_parts"]
     assert stats["repair_augmenting_paths"] * 2 == stats["unpaired_after_parts"]
     assert stats["repair_unpaired_after"] == 0
+
+
+def test_an_open_mesh_keeps_the_triangles_no_pairing_takes(client, tmp_path):
+    # A grid with three triangles cut out: an odd count, so triangles stay; the bands reach over
+    # the whole of this small mesh, so the pairing is as large as the in-memory one.
+    V, F = open_grid(40, 30)
+    F = np.delete(F, [5, 700, 1333], axis=0)
+    path, out = tmp_path / "grid.ply", tmp_path / "quads.ply"
+    petersen.write_mesh(str(path), V, F)
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=3))
+    check_run(stats, out, (path, V, F), petersen.quadrangulate(V, F))
+    assert stats["triangles_left"] > 0 and stats["boundary_edges"] > 0
 
 
 def test_a_worker_killed_mid_run_costs_a_retry(mesh, client, in_memory, tmp_path):
