@@ -396,7 +396,7 @@ def _part_bounds(face_count: int, parts: Union[int, Sequence[int]]) -> np.ndarra
     if isinstance(parts, (int, np.integer)):
         bounds = np.linspace(0, face_count, max(1, int(parts)) + 1).astype(np.int64) // 2 * 2
         bounds[-1] = face_count
-        return bounds
+        return np.unique(bounds)  # no empty part when there are more parts than face pairs
     bounds = np.asarray(parts, np.int64)
     if bounds.ndim != 1 or len(bounds) < 2 or bounds[0] != 0 or bounds[-1] != face_count or (
             np.diff(bounds) <= 0).any():
@@ -433,6 +433,8 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
                             f"parts take ({', '.join(_OPTIONS)})")
     clock = time.perf_counter()
     layout = read_layout(in_path)
+    if layout.face_count == 0:
+        raise ValueError(f"{in_path}: no faces")
     bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
     part_futures, cut, repaired, repair = _pair_and_repair(
         client, layout, bounds, options.get("augment", "local"), band_radius, first_radius,
