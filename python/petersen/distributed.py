@@ -283,14 +283,15 @@ def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
     (quad_of in dualize/quad_of.hpp, vectorised): the first's corners with the second's opposite
     vertex inserted at the first side whose ends the second holds. Raises RuntimeError when two
     triangles do not share exactly one edge. O(pairs)."""
-    in_first = (second[:, :, None] == first[:, None, :]).any(axis=2)
+    equal = first[:, :, None] == second[:, None, :]  # [pair, corner of first, corner of second]
+    in_first = equal.any(axis=1)
     if not (in_first.sum(axis=1) == 2).all():
         bad = np.flatnonzero(in_first.sum(axis=1) != 2)[0]
         raise RuntimeError(f"verification failed: triangles {first[bad].tolist()} and "
                            f"{second[bad].tolist()} share no single edge")
     w = second[np.arange(len(second)), np.argmin(in_first, axis=1)]
     # The first's corner i starts the shared edge when corners i and i+1 are in the second.
-    shared = (first[:, :, None] == second[:, None, :]).any(axis=2)
+    shared = equal.any(axis=2)
     i = np.argmax(shared & np.roll(shared, -1, axis=1), axis=1)
     rows = np.arange(len(first))
     return np.stack([first[rows, i], w, first[rows, (i + 1) % 3], first[rows, (i + 2) % 3]], 1)
