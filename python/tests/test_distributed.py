@@ -213,7 +213,6 @@ def test_a_worker_killed_mid_run_costs_a_retry(mesh, client, in_memory, tmp_path
     check_run(stats, out, mesh, in_memory)
     with pytest.raises(ProcessLookupError):
         os.kill(victim, 0)
-    client.wait_for_workers(3, timeout=60)  # the nanny started a new worker in its place
     assert victim not in client.run(os.getpid).values()
 
 
