@@ -460,3 +460,13 @@ def render(
     _petersen.render(
         str(path), V, F, first_added_vertex, list(caption),
         None if view is None else tuple(float(x) for x in view), int(width), int(height))
+
+
+def __getattr__(name: str) -> Any:
+    """``petersen.distributed`` (the Dask pipeline), imported on first use: importing petersen
+    imports no cluster code."""
+    if name == "distributed":
+        import importlib
+
+        return importlib.import_module(".distributed", __name__)
+    raise AttributeError(f"module 'petersen' has no attribute '{name}'")

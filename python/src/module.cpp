@@ -16,6 +16,7 @@
 
 #include "arrays.hpp"
 #include "attributes.hpp"
+#include "partition.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
@@ -355,4 +356,5 @@ PYBIND11_MODULE(_petersen, m) {
         py::arg("costs"), py::arg("threads"));
   m.attr("CROSSABLE") = crossable_names();
   add_render(m);
+  add_partition(m);
 }

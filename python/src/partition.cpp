@@ -1,0 +1,217 @@
+// The part, cut and repair steps for petersen.distributed: numpy arrays in and out, ids as int64
+// with -1 for none (kNoFace), the GIL released while the library works.
+
+#include "partition.hpp"
+
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "petersen/partition/partition.hpp"
+
+namespace petersen::python {
+namespace {
+
+using Int64Array = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+Augment augment_named(const std::string& name) {
+  if (auto a = parse_augment(name)) return *a;
+  throw py::value_error("unknown augment '" + name + "': local or faithful");
+}
+
+std::int64_t id_or_none(FaceId f) {
+  return f == kNoFace ? -1 : std::int64_t{f};
+}
+
+// An (n, k) int64 array's rows, checked for shape; `what` names it in the ValueError.
+const std::int64_t* rows_of(const Int64Array& a, std::size_t k, const char* what) {
+  if (a.ndim() != 2 || static_cast<std::size_t>(a.shape(1)) != k) {
+    throw py::value_error(std::string(what) + ": an (n, " + std::to_string(k) + ") array");
+  }
+  return a.data();
+}
+
+// A global face or vertex id as the library holds it; ValueError outside [0, 2^32 - 1).
+std::uint32_t id_of(std::int64_t v, const char* what) {
+  if (v < 0 || v >= std::int64_t{0xFFFFFFFF}) {
+    throw py::value_error(std::string(what) + ": id " + std::to_string(v) + " out of range");
+  }
+  return static_cast<std::uint32_t>(v);
+}
+
+template <class Values, class Get>
+py::array_t<std::int64_t> column(const Values& values, Get get) {
+  py::array_t<std::int64_t> out(values.size());
+  std::int64_t* data = out.mutable_data();
+  for (std::size_t i = 0; i < values.size(); ++i) data[i] = get(values[i]);
+  return out;
+}
+
+py::dict band_dict(const std::vector<BandFace>& band, const HugeVector<FaceId>& partner,
+                   FaceId first_face) {
+  py::dict d;
+  d["faces"] = column(band, [](const BandFace& b) { return std::int64_t{b.face}; });
+  d["corners"] = rows_array(band.size(), 3, [&](std::size_t i, std::int64_t* row) {
+    for (int c = 0; c < 3; ++c) row[c] = band[i].corners[c];
+  });
+  py::array_t<std::uint8_t> sides({band.size(), std::size_t{3}});
+  std::uint8_t* s = sides.mutable_data();
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    for (int c = 0; c < 3; ++c) s[3 * i + c] = static_cast<std::uint8_t>(band[i].sides[c]);
+  }
+  d["sides"] = sides;
+  d["distance"] = column(band, [](const BandFace& b) { return std::int64_t{b.distance}; });
+  d["partner"] =
+      column(band, [&](const BandFace& b) { return id_or_none(partner[b.face - first_face]); });
+  return d;
+}
+
+// pair_part on faces first_face.. with corners (m, 3): the part's partners (per triangle), its
+// open edges as (low, high, face, apex) rows, its band and figures.
+py::dict pair_part_py(std::int64_t first_face, const Int64Array& corners,
+                      const std::string& augment, std::uint32_t band_radius,
+                      std::uint32_t threads) {
+  const std::int64_t* rows = rows_of(corners, 3, "corners");
+  const std::size_t m = static_cast<std::size_t>(corners.shape(0));
+  std::vector<VertexId> flat(3 * m);
+  for (std::size_t i = 0; i < 3 * m; ++i) flat[i] = id_of(rows[i], "corners");
+  PartPairingOptions options;
+  options.augment = augment_named(augment);
+  options.band_radius = band_radius;
+  options.threads = threads;
+  PartTriangles part;
+  part.first_face = id_of(first_face, "first_face");
+  part.corners = flat;
+  PartPairing r;
+  {
+    py::gil_scoped_release release;
+    r = pair_part(part, options);
+  }
+  py::dict d;
+  d["partner"] = column(r.partner, id_or_none);
+  d["unpaired"] = column(r.unpaired, [](FaceId f) { return std::int64_t{f}; });
+  d["open_edges"] = rows_array(r.open_edges.size(), 4, [&](std::size_t i, std::int64_t* row) {
+    const OpenEdge& e = r.open_edges[i];
+    row[0] = e.low, row[1] = e.high, row[2] = e.face, row[3] = e.apex;
+  });
+  d["band"] = band_dict(r.band, r.partner, r.first_face);
+  d["inner_structural_cuts"] = r.inner_structural_cuts;
+  d["pairs"] = r.pairs;
+  d["moved_to_border"] = r.moved_to_border;
+  d["stranded"] = r.stranded;
+  d["maximum_certified"] = r.maximum_certified;
+  d["seconds"] = r.seconds;
+  return d;
+}
+
+// pair_open_edges on (r, 4) rows (low, high, face, apex): the cut adjacencies as (first, second,
+// low, high) rows and the counts that tell whether the mesh is closed.
+py::dict pair_open_edges_py(const Int64Array& records) {
+  const std::int64_t* rows = rows_of(records, 4, "open_edges");
+  std::vector<OpenEdge> list(static_cast<std::size_t>(records.shape(0)));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::int64_t* row = rows + 4 * i;
+    list[i] = {id_of(row[0], "open_edges"), id_of(row[1], "open_edges"),
+               id_of(row[2], "open_edges"), id_of(row[3], "open_edges")};
+  }
+  CutPairing cut;
+  {
+    py::gil_scoped_release release;
+    cut = pair_open_edges(std::move(list));
+  }
+  py::dict d;
+  d["adjacencies"] = rows_array(cut.adjacencies.size(), 4, [&](std::size_t i, std::int64_t* row) {
+    const CutAdjacency& a = cut.adjacencies[i];
+    row[0] = a.first, row[1] = a.second, row[2] = a.low, row[3] = a.high;
+  });
+  d["boundary_edges"] = cut.boundary_edges;
+  d["non_manifold_edges"] = cut.non_manifold_edges;
+  d["duplicate_edges"] = cut.duplicate_edges;
+  d["closed"] = cut.closed();
+  return d;
+}
+
+std::vector<BandFace> band_from(const Int64Array& faces, const Int64Array& corners,
+                                const py::array_t<std::uint8_t, py::array::c_style>& sides,
+                                const Int64Array& distance) {
+  const std::size_t b = static_cast<std::size_t>(faces.size());
+  const std::int64_t* c = rows_of(corners, 3, "band corners");
+  if (static_cast<std::size_t>(corners.shape(0)) != b ||
+      static_cast<std::size_t>(sides.size()) != 3 * b ||
+      static_cast<std::size_t>(distance.size()) != b) {
+    throw py::value_error("band: faces, corners, sides and distance of different lengths");
+  }
+  std::vector<BandFace> band(b);
+  for (std::size_t i = 0; i < b; ++i) {
+    band[i].face = id_of(faces.data()[i], "band faces");
+    for (int k = 0; k < 3; ++k) {
+      band[i].corners[k] = id_of(c[3 * i + k], "band corners");
+      const std::uint8_t side = sides.data()[3 * i + k];
+      if (side > static_cast<std::uint8_t>(SideState::open)) throw py::value_error("band sides");
+      band[i].sides[k] = static_cast<SideState>(side);
+    }
+    band[i].distance = static_cast<std::uint32_t>(std::max<std::int64_t>(distance.data()[i], 0));
+  }
+  return band;
+}
+
+// repair_cuts on the concatenated bands (with each band face's partner, -1 for none) and the
+// cut adjacencies: the band faces' new partners and the repair's figures.
+py::dict repair_cuts_py(const Int64Array& faces, const Int64Array& corners,
+                        const py::array_t<std::uint8_t, py::array::c_style>& sides,
+                        const Int64Array& distance, const Int64Array& partner,
+                        const Int64Array& adjacencies, const std::string& augment,
+                        std::uint32_t first_radius) {
+  const std::vector<BandFace> band = band_from(faces, corners, sides, distance);
+  if (static_cast<std::size_t>(partner.size()) != band.size()) {
+    throw py::value_error("partner: one per band face");
+  }
+  std::vector<FaceId> partners(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const std::int64_t p = partner.data()[i];
+    partners[i] = p < 0 ? kNoFace : id_of(p, "partner");
+  }
+  const std::int64_t* a = rows_of(adjacencies, 4, "adjacencies");
+  std::vector<CutAdjacency> adjacent(static_cast<std::size_t>(adjacencies.shape(0)));
+  for (std::size_t i = 0; i < adjacent.size(); ++i) {
+    const std::int64_t* row = a + 4 * i;
+    adjacent[i] = {id_of(row[0], "adjacencies"), id_of(row[1], "adjacencies"),
+                   id_of(row[2], "adjacencies"), id_of(row[3], "adjacencies")};
+  }
+  RepairOptions options;
+  options.augment = augment_named(augment);
+  options.first_radius = first_radius;
+  RepairResult r;
+  {
+    py::gil_scoped_release release;
+    r = repair_cuts({band, partners, adjacent}, options);
+  }
+  py::dict d;
+  d["partner"] = column(r.partner, id_or_none);
+  d["unpaired_before"] = r.unpaired_before;
+  d["unpaired_after"] = r.unpaired_after;
+  d["augmenting_paths"] = r.augmenting_paths;
+  d["band_graph_faces"] = r.band_graph_faces;
+  d["radius"] = r.radius;
+  d["maximum_in_band_certified"] = r.maximum_in_band_certified;
+  d["seconds"] = r.seconds;
+  return d;
+}
+
+}  // namespace
+
+void add_partition(py::module_& m) {
+  m.def("pair_part", &pair_part_py, py::arg("first_face"), py::arg("corners"), py::arg("augment"),
+        py::arg("band_radius"), py::arg("threads"));
+  m.def("pair_open_edges", &pair_open_edges_py, py::arg("open_edges"));
+  m.def("repair_cuts", &repair_cuts_py, py::arg("faces"), py::arg("corners"), py::arg("sides"),
+        py::arg("distance"), py::arg("partner"), py::arg("adjacencies"), py::arg("augment"),
+        py::arg("first_radius"));
+}
+
+}  // namespace petersen::python

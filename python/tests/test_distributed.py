@@ -1,0 +1,230 @@
+"""petersen.distributed on a real Dask cluster (three worker processes): a closed mesh of 10^6
+triangles, its output checked here with numpy alone, and a worker killed while the parts run."""
+
+import logging
+import os
+import signal
+import threading
+import time
+
+import numpy as np
+import pytest
+
+import petersen
+from conftest import open_grid, torus
+
+distributed = pytest.importorskip("distributed")
+
+import petersen.distributed as pd  # noqa: E402  (after the skip: it needs no dask, its test does)
+
+# 2 * 1224 * 408 = 998,784 triangles: a closed torus of genus 1.
+NU, NV = 1224, 408
+RUN_TIMEOUT = 240  # seconds; a hung cluster fails the test instead of hanging CI
+
+
+def scan_ordered_torus(tmp_path_factory, nu, nv):
+    """A closed torus written as a PLY, the two triangles of each grid square side by side and
+    the squares row by row: faces in scan order, so that a range of faces is a patch (as scanners
+    and subdivisions store them)."""
+    V, F = torus(nu, nv)
+    F = F.reshape(2, -1, 3).transpose(1, 0, 2).reshape(-1, 3)
+    path = tmp_path_factory.mktemp("dask") / "torus.ply"
+    petersen.write_mesh(str(path), V, F)
+    return path, V, F
+
+
+@pytest.fixture(scope="module")
+def mesh(tmp_path_factory):
+    return scan_ordered_torus(tmp_path_factory, NU, NV)
+
+
+@pytest.fixture(scope="module")
+def small_mesh(tmp_path_factory):
+    return scan_ordered_torus(tmp_path_factory, 240, 80)
+
+
+@pytest.fixture(scope="module")
+def client():
+    cluster = distributed.LocalCluster(n_workers=3, processes=True, threads_per_worker=1,
+                                       dashboard_address=None, silence_logs=logging.CRITICAL)
+    try:
+        with distributed.Client(cluster) as c:
+            c.wait_for_workers(3, timeout=60)
+            yield c
+    finally:
+        cluster.close(timeout=30)
+
+
+def run(fn, *args, **kwargs):
+    """fn(*args, **kwargs) in a thread, failing the test after RUN_TIMEOUT seconds."""
+    box = {}
+
+    def target():
+        try:
+            box["value"] = fn(*args, **kwargs)
+        except BaseException as e:  # handed to the test's thread
+            box["error"] = e
+
+    thread = threading.Thread(target=target, daemon=True)
+    thread.start()
+    return thread, box
+
+
+def finish(thread, box):
+    thread.join(RUN_TIMEOUT)
+    assert not thread.is_alive(), f"the distributed run took more than {RUN_TIMEOUT} s"
+    if "error" in box:
+        raise box["error"]
+    return box["value"]
+
+
+def read_ply_faces(path):
+    """The output as numpy reads it: vertex bytes, (k, 4) quads and (t, 3) triangles, from the
+    header's counts and the uchar-counted records (one run of 17-byte quad records when the size
+    says every face is a quad)."""
+    data = np.fromfile(path, np.uint8)
+    end = bytes(data[:4096]).index(b"end_header\n") + len("end_header\n")
+    header = bytes(data[:end]).decode().split("\n")
+    n = int(next(line.split()[2] for line in header if line.startswith("element vertex")))
+    m = int(next(line.split()[2] for line in header if line.startswith("element face")))
+    assert "property list uchar uint vertex_indices" in header
+    vertex_bytes = data[end:end + 24 * n]
+    faces = data[end + 24 * n:]
+    if faces.size == 17 * m:
+        records = faces.view(np.dtype([("n", "u1"), ("v", "<u4", (4,))]))
+        assert (records["n"] == 4).all()
+        return vertex_bytes, records["v"].astype(np.int64), np.zeros((0, 3), np.int64)
+    quads, triangles, at = [], [], 0
+    for _ in range(m):
+        k = int(faces[at])
+        assert k in (3, 4)
+        (quads if k == 4 else triangles).append(faces[at + 1:at + 1 + 4 * k].view("<u4"))
+        at += 1 + 4 * k
+    assert at == faces.size
+    return (vertex_bytes, np.array(quads, np.int64).reshape(-1, 4),
+            np.array(triangles, np.int64).reshape(-1, 3))
+
+
+def input_vertex_bytes(path, n):
+    data = np.fromfile(path, np.uint8)
+    end = bytes(data[:4096]).index(b"end_header\n") + len("end_header\n")
+    return data[end:end + 24 * n]
+
+
+def check_faces(quads, triangles, F):
+    """Every input triangle in exactly one output face, each quad the union of two input
+    triangles sharing an edge (its diagonal), each triangle an input triangle: looked up among
+    the input's triangles by sorted corners."""
+    def key(a, b, c):
+        t = np.sort(np.stack([a, b, c], axis=1), axis=1)
+        return (t[:, 0] << 42) | (t[:, 1] << 21) | t[:, 2]
+
+    keys = key(F[:, 0], F[:, 1], F[:, 2])
+    order = np.argsort(keys)
+    sorted_keys = keys[order]
+
+    def lookup(k):
+        at = np.minimum(np.searchsorted(sorted_keys, k), len(sorted_keys) - 1)
+        return np.where(sorted_keys[at] == k, order[at], -1)
+
+    q = quads
+    assert (np.sort(q, axis=1)[:, 1:] != np.sort(q, axis=1)[:, :-1]).all(), "4 distinct corners"
+    by_02 = lookup(key(q[:, 0], q[:, 1], q[:, 2])), lookup(key(q[:, 0], q[:, 2], q[:, 3]))
+    by_13 = lookup(key(q[:, 1], q[:, 2], q[:, 3])), lookup(key(q[:, 1], q[:, 3], q[:, 0]))
+    ok_02 = (by_02[0] >= 0) & (by_02[1] >= 0)
+    ok_13 = (by_13[0] >= 0) & (by_13[1] >= 0)
+    assert (ok_02 | ok_13).all(), "each quad is two input triangles sharing its diagonal"
+    first = np.where(ok_02, by_02[0], by_13[0])
+    second = np.where(ok_02, by_02[1], by_13[1])
+    left = lookup(key(triangles[:, 0], triangles[:, 1], triangles[:, 2]))
+    assert (left >= 0).all(), "each triangle written is an input triangle"
+    cover = np.bincount(np.concatenate([first, second, left]), minlength=len(F))
+    assert (cover == 1).all(), "every input triangle in exactly one output face"
+
+
+@pytest.fixture(scope="module")
+def in_memory(mesh):
+    _, V, F = mesh
+    return petersen.quadrangulate(V, F)
+
+
+def check_run(stats, out, mesh, in_memory):
+    """The output checked with numpy against the input, and sized as the in-memory run's."""
+    path, V, F = mesh
+    vertex_bytes, quads, triangles = read_ply_faces(out)
+    assert np.array_equal(vertex_bytes, input_vertex_bytes(path, len(V))), "vertices unchanged"
+    check_faces(quads, triangles, F)
+    assert len(quads) == len(in_memory.quads) == stats["pairs"]
+    assert len(triangles) == stats["triangles_left"] == in_memory.stats["triangles_left"]
+    assert stats["maximum_certified"] is (len(triangles) == 0)
+    for key in ("faces_in", "vertices", "triangles"):
+        assert stats[key] == in_memory.stats[key], key
+
+
+def test_closed_mesh_of_a_million_triangles(mesh, client, in_memory, tmp_path):
+    out = tmp_path / "quads.ply"
+    stats = finish(*run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=3))
+    check_run(stats, out, mesh, in_memory)
+    assert stats["triangles_left"] == 0
+    assert stats["parts"] == 3 and stats["part_cut_edges"] > 0
+    assert not list(tmp_path.glob("*.tmp-*")), "the temporary file was renamed"
+
+
+def test_parts_left_unpaired_are_paired_across_the_cuts(small_mesh, client, tmp_path):
+    # Parts of odd sizes: each leaves a triangle the repair must pair across a cut.
+    out = tmp_path / "quads.ply"
+    m = len(small_mesh[2])
+    bounds = [0, m // 4 + 1, m // 2, 3 * m // 4 + 1, m]
+    stats = finish(*run(pd.quadrangulate, str(small_mesh[0]), str(out), client, parts=bounds))
+    check_run(stats, out, small_mesh, petersen.quadrangulate(small_mesh[1], small_mesh[2]))
+    assert stats["unpaired_after_parts"] >= 4 and stats["parts_certified"] is True
+    assert stats["repair_unpaired_before"] == stats["unpaired_after_parts"]
+    assert stats["repair_augmenting_paths"] * 2 == stats["unpaired_after_parts"]
+    assert stats["repair_unpaired_after"] == 0
+
+
+def test_an_open_mesh_keeps_the_triangles_no_pairing_takes(client, tmp_path):
+    # A grid with three triangles cut out: an odd count, so triangles stay; the bands reach over
+    # the whole of this small mesh, so the pairing is as large as the in-memory one.
+    V, F = open_grid(40, 30)
+    F = np.delete(F, [5, 700, 1333], axis=0)
+    path, out = tmp_path / "grid.ply", tmp_path / "quads.ply"
+    petersen.write_mesh(str(path), V, F)
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=3))
+    check_run(stats, out, (path, V, F), petersen.quadrangulate(V, F))
+    assert stats["triangles_left"] > 0 and stats["boundary_edges"] > 0
+
+
+def test_a_worker_killed_mid_run_costs_a_retry(mesh, client, in_memory, tmp_path):
+    pids = client.run(os.getpid)
+    out = tmp_path / "quads.ply"
+    thread, box = run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=6)
+    victim = None
+    deadline = time.monotonic() + RUN_TIMEOUT
+    while victim is None and thread.is_alive() and time.monotonic() < deadline:
+        for address, keys in client.processing().items():
+            if any("_pair_part" in str(k) for k in keys) and address in pids:
+                victim = pids[address]
+                break
+        time.sleep(0.01)
+    assert victim is not None, "no part was seen running"
+    os.kill(victim, signal.SIGKILL)
+    stats = finish(thread, box)
+    check_run(stats, out, mesh, in_memory)
+    with pytest.raises(ProcessLookupError):
+        os.kill(victim, 0)
+    assert victim not in client.run(os.getpid).values()
+
+
+def test_bad_input_is_named(client, tmp_path):
+    path = tmp_path / "quad.ply"
+    petersen.write_mesh(str(path), np.eye(4, 3), np.array([[0, 1, 2, 3]]))
+    with pytest.raises(ValueError, match="quad.ply"):
+        pd.quadrangulate(str(path), str(tmp_path / "out.ply"), client, parts=2)
+    text = tmp_path / "text.off"
+    petersen.write_mesh(str(text), np.eye(3), np.array([[0, 1, 2]]))
+    with pytest.raises(ValueError, match="not a PLY"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client)
+    with pytest.raises(TypeError, match="sharp_angle.*augment"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, sharp_angle=30)
+    assert not (tmp_path / "out.ply").exists()
