@@ -187,6 +187,7 @@ def quadrangulate(
     attributes: Optional[Attributes] = None,
     cross: Sequence[str] = (),
     threads: int = 0,
+    keep_polygons: bool = False,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -195,8 +196,9 @@ def quadrangulate(
     indices, any length >= 3, mixed lengths allowed). The pairing is a certified maximum: closed
     components are paired perfectly by ``algorithm`` (auto, sg, ps, ds, gw, frink, lemon or
     lrs), the rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that
-    are not triangles are kept. ``all_quad`` turns the triangles left into quads by splitting edges
-    (adding vertices). ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
+    are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
+    (a minimum T-join, certified: ``stats["all_quad_certified"]``, ``stats["added_vertices"]`` and
+    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``. ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
     ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
     (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
@@ -225,7 +227,7 @@ def quadrangulate(
 
     Raises ``ValueError`` with the library's message for a bad mesh (a coordinate that is not
     finite, naming the vertex; a vertex index out of range; a face of fewer than three corners; no
-    faces at all; a leftover triangle ``all_quad`` cannot reach), for ``max_corner_deviation``
+    faces at all; with ``all_quad``, a proof that no all-quad mesh exists), for ``max_corner_deviation``
     outside [0, 270] or ``sharp_angle`` outside [0, 180] (either not finite), ``threads`` above
     1024, or an unknown algorithm, augment or objective; ``TypeError`` for faces that are not
     integers or an angle that is not a number.
@@ -237,7 +239,7 @@ def quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
-        [str(c) for c in cross], _threads(threads))
+        [str(c) for c in cross], _threads(threads), bool(keep_polygons))
     return QuadResult(**r)
 
 

@@ -46,3 +46,17 @@ def render(
     width: int,
     height: int,
 ) -> None: ...
+def pair_part(
+    first_face: int, corners: np.ndarray, augment: str, band_radius: int, threads: int
+) -> Dict[str, Any]: ...
+def pair_open_edges(open_edges: np.ndarray) -> Dict[str, Any]: ...
+def repair_cuts(
+    faces: np.ndarray,
+    corners: np.ndarray,
+    sides: np.ndarray,
+    distance: np.ndarray,
+    partner: np.ndarray,
+    adjacencies: np.ndarray,
+    augment: str,
+    first_radius: int,
+) -> Dict[str, Any]: ...
