@@ -257,29 +257,13 @@ int generate(const GenerateArgs& args) {
   return 0;
 }
 
-}  // namespace
-}  // namespace petersen::cli
+// render_mesh's limits, checked before any work.
+CLI::Range picture_side() {
+  return CLI::Range(200u, 16384u);
+}
 
-int main(int argc, char** argv) {
-  using namespace petersen::cli;
-  petersen::huge_pages::enable_pool_unless_switched_off();
-  CLI::App app{
-      "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
-      "triangle meshes"};
-  app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
-
-  std::string info_path;
-  CLI::App* info_cmd =
-      app.add_subcommand("info",
-                         "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
-                         "orientability, genus and the quads' worst-corner figures");
-  info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
-
-  // render_mesh's limits, checked before any work.
-  const CLI::Range picture_side(200u, 16384u);
-
-  QuadArgs quad_args;
+// `petersen quad` and its flags, into `args`.
+CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
   CLI::App* quad_cmd = app.add_subcommand("quad",
                                           "Pair the triangles of any mesh into quads (a certified "
                                           "maximum pairing; other polygons kept)");
@@ -353,13 +337,16 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->expected(3);
   quad_cmd->add_option("--render-width", quad_args.render_width)
-      ->check(picture_side)
+      ->check(picture_side())
       ->capture_default_str();
   quad_cmd->add_option("--render-height", quad_args.render_height)
-      ->check(picture_side)
+      ->check(picture_side())
       ->capture_default_str();
+  return quad_cmd;
+}
 
-  RenderArgs render_args;
+// `petersen render` and its flags, into `args`.
+CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
   CLI::App* render_cmd = app.add_subcommand(
       "render",
       "Draw a mesh as a PNG or SVG picture: shaded, edges drawn, quads coloured by their worst "
@@ -370,12 +357,17 @@ int main(int argc, char** argv) {
   render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
       ->delimiter(',')
       ->expected(3);
-  render_cmd->add_option("--width", render_args.width)->check(picture_side)->capture_default_str();
-  render_cmd->add_option("--height", render_args.height)
-      ->check(picture_side)
+  render_cmd->add_option("--width", render_args.width)
+      ->check(picture_side())
       ->capture_default_str();
+  render_cmd->add_option("--height", render_args.height)
+      ->check(picture_side())
+      ->capture_default_str();
+  return render_cmd;
+}
 
-  GenerateArgs gen_args;
+// `petersen generate` and its flags, into `args`.
+CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
   CLI::App* gen_cmd = app.add_subcommand(
       "generate",
       "Write a test triangulation: a voxel plate with holes (genus holes-x*holes-y) or dents "
@@ -423,7 +415,34 @@ int main(int argc, char** argv) {
   gen_cmd->add_option("--fins", gen_args.fins, "triangles to add on edges (non-manifold edges)");
   gen_cmd->add_option("--pinches", gen_args.pinches, "vertex pairs to merge (pinched vertices)");
   gen_cmd->add_option("--flip-faces", gen_args.flip_faces, "faces whose orientation to reverse");
+  return gen_cmd;
+}
 
+}  // namespace
+}  // namespace petersen::cli
+
+int main(int argc, char** argv) {
+  using namespace petersen::cli;
+  petersen::huge_pages::enable_pool_unless_switched_off();
+  CLI::App app{
+      "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
+      "triangle meshes"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
+
+  std::string info_path;
+  CLI::App* info_cmd =
+      app.add_subcommand("info",
+                         "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
+                         "orientability, genus and the quads' worst-corner figures");
+  info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
+
+  QuadArgs quad_args;
+  CLI::App* quad_cmd = add_quad_command(app, quad_args);
+  RenderArgs render_args;
+  CLI::App* render_cmd = add_render_command(app, render_args);
+  GenerateArgs gen_args;
+  CLI::App* gen_cmd = add_generate_command(app, gen_args);
   MatchArgs match_args;
   CLI::App* match_cmd = add_match_command(app, match_args);
 
