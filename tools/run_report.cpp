@@ -104,8 +104,12 @@ void print_summary(std::FILE* out, const RunReport& r) {
                  quality ? "" : "; any pairs within it, --objective quality picks the cheapest");
   }
   if (s.added_vertices > 0 || s.all_quad_seconds > 0) {
-    std::fprintf(out, "all-quad    %" PRIu64 " vertices added, %" PRIu64 " faces split (%.4f s)\n",
-                 s.added_vertices, s.split_quads, s.all_quad_seconds);
+    std::fprintf(out,
+                 "all-quad    %" PRIu64 " vertices added (%" PRIu64 " midpoints, fewest %" PRIu64
+                 "%s), %" PRIu64 " faces made, worst corner median %.2f, p95 %.2f (%.4f s)\n",
+                 s.added_vertices, s.split_edges, s.added_vertices_minimum,
+                 s.all_quad_certified ? ", certified" : ", not proved", s.split_quads,
+                 s.split_quality_median, s.split_quality_p95, s.all_quad_seconds);
   }
   std::fprintf(out, "write       %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
   std::fprintf(out, "total       %.4f s\n", r.total_seconds);

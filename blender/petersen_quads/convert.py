@@ -143,11 +143,12 @@ def pair_triangles(petersen, mesh, selection, keep_edges, *, objective, face_thr
 
 def in_blender_terms(message, selection):
     """petersen's error message with the faces it names (indices among the selected triangles it
-    was given, "face N (input)") as Blender's face indices, and its option as Blender's."""
+    was given, "input face N" or "face N (input)") as Blender's face indices, and its option as
+    Blender's."""
     def face(match):
-        n = int(match.group(1))
+        n = int(match.group(1) or match.group(2))
         return f"face {selection.faces[n]}" if n < len(selection.faces) else match.group(0)
-    message = re.sub(r"face (\d+) \(input\)", face, str(message))
+    message = re.sub(r"input face (\d+)|face (\d+) \(input\)", face, str(message))
     return message.replace("--all-quad", "All Quads")
 
 
