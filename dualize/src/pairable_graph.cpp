@@ -332,7 +332,7 @@ class PairableGraphBuilder {
     // The fold in degrees, compared as the option says ("more than DEG"): comparing cosines would
     // cut a cube's exact 90-degree edges at DEG = 90, since cos(90°) is 6e-17, not 0.
     const double fold = std::acos(std::clamp(dot / norms, -1.0, 1.0)) * 180.0 / std::numbers::pi;
-    return fold > *cuts_.sharp_angle_degrees;
+    return fold > *cuts_.sharp_angle_degrees + kFoldToleranceDegrees;
   }
 
   // A seam (the two triangles give an end of the edge different ids) or a border (the faces

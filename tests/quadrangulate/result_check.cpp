@@ -260,7 +260,8 @@ bool extra_cut(const PolygonMesh& mesh, const CutOptions& cuts, std::span<const 
     const double lengths = std::hypot(n[0], n[1], n[2]) * std::hypot(m[0], m[1], m[2]);
     if (!(lengths > 0)) return true;
     const double degrees = std::acos(std::clamp(dot / lengths, -1.0, 1.0)) * 180.0 / M_PI;
-    if (degrees > *cuts.sharp_angle_degrees) return true;
+    // A fold within 1e-9 degrees of the option is that angle: not more.
+    if (degrees > *cuts.sharp_angle_degrees + 1e-9) return true;
   }
   return false;
 }

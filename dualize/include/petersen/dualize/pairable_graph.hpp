@@ -66,8 +66,15 @@ struct CutCounts {
 /// Cuts beyond the mesh's own structure; each is off while its span is empty (or the angle unset).
 /// Corner ids are per entry of PolygonMesh::corners, face ids per face: an edge is cut when its
 /// two faces disagree (different ids at one of its ends, or different face ids).
+/// How close to CutOptions::sharp_angle_degrees a fold counts as that angle: rounding in the
+/// normals moves an exact fold by about 1e-14 degrees.
+inline constexpr double kFoldToleranceDegrees = 1e-9;
+
 struct CutOptions {
-  std::optional<double> sharp_angle_degrees = {};  ///< cut where the normals differ by more
+  /// Cut where the normals differ by more than this many degrees; a fold within
+  /// kFoldToleranceDegrees of it counts as equal (not cut), so that an exact fold (a regular
+  /// 12-gon's 30°) does not fall either way by rounding.
+  std::optional<double> sharp_angle_degrees = {};
   std::span<const std::array<VertexId, 2>> user_edges = {};  ///< vertex pairs, either order
   std::span<const std::uint32_t> corner_uv = {}, corner_normal = {};
   std::span<const std::uint32_t> face_material = {}, face_group = {}, face_object = {},
