@@ -13,6 +13,7 @@
 
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/graph/seeded_random.hpp"
+#include "petersen/mesh/vec3.hpp"
 
 namespace petersen {
 
@@ -28,15 +29,7 @@ double unit(SeededRandom& rng) {
 // The face's unit normal by Newell's method (any simple polygon, planar or not); +z when the
 // face has no area.
 Point face_normal(const PolygonMesh& mesh, FaceId f) {
-  const auto c = mesh.face(f);
-  Point n{0, 0, 0};
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    const Point& p = mesh.positions[c[k]];
-    const Point& q = mesh.positions[c[(k + 1) % c.size()]];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-  }
+  const Point n = vec3::newell_normal(mesh.positions, mesh.face(f));
   const double length = std::hypot(n[0], n[1], n[2]);
   if (!(length > 0) || !std::isfinite(length)) return {0, 0, 1};
   return {n[0] / length, n[1] / length, n[2] / length};

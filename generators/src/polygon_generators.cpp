@@ -12,6 +12,7 @@
 
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/seeded_random.hpp"
+#include "petersen/mesh/vec3.hpp"
 
 namespace petersen {
 
@@ -428,15 +429,7 @@ PolygonMesh add_fins(const PolygonMesh& mesh, std::uint32_t count, std::uint64_t
     const std::uint32_t c = candidates[rng.below64(candidates.size())];
     const VertexId a = mesh.corners[c], b = mesh.corners[next_corner(mesh, face_of, c)];
     // Newell's normal of the face, then a point beside the edge's midpoint along it.
-    Point normal{0, 0, 0};
-    const auto corners = mesh.face(face_of[c]);
-    for (std::size_t i = 0; i < corners.size(); ++i) {
-      const Point& p = mesh.positions[corners[i]];
-      const Point& q = mesh.positions[corners[(i + 1) % corners.size()]];
-      normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
+    Point normal = vec3::newell_normal(mesh.positions, mesh.face(face_of[c]));
     if (!(dot(normal, normal) > 0)) normal = {0, 0, 1};
     normal = normalized(normal);
     const Point& pa = mesh.positions[a];

@@ -57,9 +57,7 @@ PolygonMesh mesh_from(const py::handle& V, const py::handle& F, const py::handle
 // The causes QuadOptions::cross accepts, by name: petersen.CROSSABLE and the error messages.
 std::vector<std::string> crossable_names() {
   std::vector<std::string> names;
-  for (int c = 0; c < kCutCauses; ++c) {
-    if (is_attribute_cause(CutCause(c))) names.emplace_back(to_string(CutCause(c)));
-  }
+  for (CutCause cause : attribute_causes()) names.emplace_back(to_string(cause));
   return names;
 }
 

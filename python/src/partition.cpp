@@ -109,16 +109,23 @@ py::dict pair_part_py(std::int64_t first_face, const Int64Array& corners,
   return d;
 }
 
+// The rows of an (r, 4) array of ids as records of four ids each (OpenEdge, CutAdjacency).
+template <class Record>
+std::vector<Record> records_of(const Int64Array& array, const char* name) {
+  const std::int64_t* rows = rows_of(array, 4, name);
+  std::vector<Record> records(static_cast<std::size_t>(array.shape(0)));
+  for (std::size_t i = 0; i < records.size(); ++i) {
+    const std::int64_t* row = rows + 4 * i;
+    records[i] = {id_of(row[0], name), id_of(row[1], name), id_of(row[2], name),
+                  id_of(row[3], name)};
+  }
+  return records;
+}
+
 // pair_open_edges on (r, 4) rows (low, high, face, apex): the cut adjacencies as (first, second,
 // low, high) rows and the counts that tell whether the mesh is closed.
 py::dict pair_open_edges_py(const Int64Array& records) {
-  const std::int64_t* rows = rows_of(records, 4, "open_edges");
-  std::vector<OpenEdge> list(static_cast<std::size_t>(records.shape(0)));
-  for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::int64_t* row = rows + 4 * i;
-    list[i] = {id_of(row[0], "open_edges"), id_of(row[1], "open_edges"),
-               id_of(row[2], "open_edges"), id_of(row[3], "open_edges")};
-  }
+  std::vector<OpenEdge> list = records_of<OpenEdge>(records, "open_edges");
   CutPairing cut;
   {
     py::gil_scoped_release release;
@@ -176,13 +183,7 @@ py::dict repair_cuts_py(const Int64Array& faces, const Int64Array& corners,
     const std::int64_t p = partner.data()[i];
     partners[i] = p < 0 ? kNoFace : id_of(p, "partner");
   }
-  const std::int64_t* a = rows_of(adjacencies, 4, "adjacencies");
-  std::vector<CutAdjacency> adjacent(static_cast<std::size_t>(adjacencies.shape(0)));
-  for (std::size_t i = 0; i < adjacent.size(); ++i) {
-    const std::int64_t* row = a + 4 * i;
-    adjacent[i] = {id_of(row[0], "adjacencies"), id_of(row[1], "adjacencies"),
-                   id_of(row[2], "adjacencies"), id_of(row[3], "adjacencies")};
-  }
+  std::vector<CutAdjacency> adjacent = records_of<CutAdjacency>(adjacencies, "adjacencies");
   RepairOptions options;
   options.augment = augment_named(augment);
   options.first_radius = first_radius;

@@ -10,6 +10,20 @@ import pytest
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
 
+class TrimeshLike:
+    """What petersen reads of a trimesh.Trimesh."""
+
+    def __init__(self, vertices, faces):
+        self.vertices, self.faces = np.asarray(vertices), np.asarray(faces)
+
+
+class PolyDataLike:
+    """What petersen reads of a pyvista.PolyData: points and padded faces."""
+
+    def __init__(self, points, faces):
+        self.points, self.faces = np.asarray(points), np.asarray(faces)
+
+
 def octahedron():
     V = np.array([[1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0], [0, 0, 1], [0, 0, -1]], float)
     F = np.array([[0, 2, 4], [2, 1, 4], [1, 3, 4], [3, 0, 4],

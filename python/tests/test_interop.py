@@ -10,21 +10,7 @@ import numpy as np
 import pytest
 
 import petersen
-from conftest import octahedron, open_grid, torus
-
-
-class TrimeshLike:
-    """What petersen reads of a trimesh.Trimesh."""
-
-    def __init__(self, vertices, faces):
-        self.vertices, self.faces = np.asarray(vertices), np.asarray(faces)
-
-
-class PolyDataLike:
-    """What petersen reads of a pyvista.PolyData: points and padded faces."""
-
-    def __init__(self, points, faces):
-        self.points, self.faces = np.asarray(points), np.asarray(faces)
+from conftest import PolyDataLike, TrimeshLike, octahedron, open_grid, torus
 
 
 def mixed_mesh():

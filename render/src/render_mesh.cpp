@@ -217,14 +217,7 @@ void render_mesh(const PolygonMesh& mesh, const std::string& path, const RenderO
   cairo_set_line_width(cr, line_width);
   for (FaceId f : order) {
     const auto face = mesh.face(f);
-    Vec normal{0, 0, 0};  // Newell's method: robust for non-planar polygons
-    for (std::size_t c = 0; c < face.size(); ++c) {
-      const Vec& p = mesh.positions[face[c]];
-      const Vec& q = mesh.positions[face[(c + 1) % face.size()]];
-      normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
+    const Vec normal = vec3::newell_normal(mesh.positions, face);
     const double length = std::sqrt(dot(normal, normal));
     const double cosine = length > 0 ? std::abs(dot(normal, view)) / length : 0;
     Rgb colour = kPolygonColour;

@@ -29,10 +29,6 @@ constexpr std::uint32_t kMaxTriangles = 8000;
 constexpr std::uint32_t kMaxTriangles = 50000;
 #endif
 
-constexpr CutCause kAttributeCauses[] = {
-    CutCause::uv_seam, CutCause::normal_seam, CutCause::material,     CutCause::group,
-    CutCause::object,  CutCause::smoothing,   CutCause::face_property};
-
 // A generated mesh by name, or nothing.
 std::optional<PolygonMesh> generated(const std::string& name) {
   if (name == "generated/quad-dominant") {
@@ -112,7 +108,7 @@ TEST_P(AllQuadOnEveryMesh, EveryOptionSetChecked) {
   sets.push_back({"kept edges", o});
   if (!mesh->attributes.empty()) {
     o = all_quad;
-    o.cross.assign(std::begin(kAttributeCauses), std::end(kAttributeCauses));
+    o.cross = attribute_causes();
     sets.push_back({"cross all", o});
   }
   if (!mesh->all_triangles()) {
@@ -138,11 +134,7 @@ TEST_P(AllQuadOnEveryMesh, EveryOptionSetChecked) {
 
 INSTANTIATE_TEST_SUITE_P(Meshes, AllQuadOnEveryMesh, ::testing::ValuesIn(all_meshes()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;  // "invalid/cow.obj.gz" -> invalid_cow
-                           name = name.substr(0, name.find('.'));
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
+                           return testing::test_name_of_file(info.param);
                          });
 
 }  // namespace

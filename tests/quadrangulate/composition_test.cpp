@@ -29,10 +29,6 @@ constexpr std::uint32_t kMostFaces = 30;
 constexpr std::uint32_t kMostFaces = 60;
 #endif
 
-constexpr CutCause kAttributeCauses[] = {
-    CutCause::uv_seam, CutCause::normal_seam, CutCause::material,     CutCause::group,
-    CutCause::object,  CutCause::smoothing,   CutCause::face_property};
-
 // The caller's kept edges: a few sides of the mesh's faces, drawn by RapidCheck.
 std::vector<std::array<VertexId, 2>> some_edges(const PolygonMesh& mesh) {
   std::vector<std::array<VertexId, 2>> edges;
@@ -67,7 +63,7 @@ std::vector<std::pair<std::string, QuadOptions>> option_sets(
     o.cuts.user_edges = kept;
     sets.push_back({tag + "kept edges", o});
     o = base;
-    o.cross.assign(std::begin(kAttributeCauses), std::end(kAttributeCauses));
+    o.cross = attribute_causes();
     sets.push_back({tag + "cross all", o});
     if (all_quad) {
       o = base;
@@ -95,7 +91,7 @@ QuadOptions random_options(const std::vector<std::array<VertexId, 2>>& kept) {
   if (*rc::gen::arbitrary<bool>()) o.max_corner_deviation = 30.0;
   if (*rc::gen::arbitrary<bool>()) o.cuts.sharp_angle_degrees = 30.0;
   if (*rc::gen::arbitrary<bool>()) o.cuts.user_edges = kept;
-  for (CutCause cause : kAttributeCauses)
+  for (CutCause cause : attribute_causes())
     if (*rc::gen::arbitrary<bool>()) o.cross.push_back(cause);
   return o;
 }

@@ -91,11 +91,7 @@ TEST_P(EveryAlgorithm, ConvertsTheMesh) {
 
 INSTANTIATE_TEST_SUITE_P(SharedMeshes, EveryAlgorithm, ::testing::ValuesIn(all_shared_files()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           std::string name = info.param;  // "invalid/cow.obj.gz" -> invalid_cow
-                           name = name.substr(0, name.find('.'));
-                           for (char& c : name)
-                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
-                           return name;
+                           return testing::test_name_of_file(info.param);
                          });
 
 // Fandisk's creases kept with a 30-degree fold threshold, a maximum pairing of

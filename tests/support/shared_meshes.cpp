@@ -1,5 +1,6 @@
 #include "shared_meshes.hpp"
 
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 
@@ -38,6 +39,13 @@ std::vector<SharedMesh> shared_meshes_up_to(std::uint32_t max_triangles) {
   for (const auto& m : shared_closed_meshes())
     if (m.triangles <= max_triangles) out.push_back(m);
   return out;
+}
+
+std::string test_name_of_file(const std::string& file) {
+  std::string name = file.substr(0, file.find('.'));
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
 }
 
 }  // namespace petersen::testing

@@ -19,5 +19,7 @@ const std::vector<SharedMesh>& shared_closed_meshes();
 std::optional<std::string> shared_mesh_dir();
 /// Meshes at most this many triangles, for tests that must stay fast under sanitizers.
 std::vector<SharedMesh> shared_meshes_up_to(std::uint32_t max_triangles);
+/// A mesh file's name as a test name: "invalid/cow.obj.gz" gives "invalid_cow".
+std::string test_name_of_file(const std::string& file);
 
 }  // namespace petersen::testing

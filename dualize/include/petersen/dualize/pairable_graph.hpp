@@ -7,6 +7,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
 #include "petersen/mesh/mesh.hpp"
@@ -38,6 +39,13 @@ inline constexpr int kCutCauses = 15;
 /// QuadOptions::cross may let pairs cross. The structure's, the caller's and shape never are.
 constexpr bool is_attribute_cause(CutCause cause) {
   return cause >= CutCause::uv_seam && cause <= CutCause::face_property;
+}
+/// Every attribute cause, in the order of CutCause: what `cross` takes to cross them all.
+inline std::vector<CutCause> attribute_causes() {
+  std::vector<CutCause> causes;
+  for (int c = 0; c < kCutCauses; ++c)
+    if (is_attribute_cause(CutCause(c))) causes.push_back(CutCause(c));
+  return causes;
 }
 /// Whether a cause is the mesh's structure (boundary to duplicate): where the surface itself is
 /// not a closed two-manifold of triangles, rather than a pair being refused.
