@@ -145,7 +145,7 @@ std::vector<BandFace> band_of(const PartTriangles& part, const PairableGraph& gr
 
 // The pairable graph without the edges of the held triangles (carried ones paired outside).
 CsrGraph csr_of(const PairableGraph& graph, std::span<const std::uint8_t> held) {
-  std::vector<std::array<NodeId, 2>> edges;
+  HugeVector<std::array<NodeId, 2>> edges;
   edges.reserve(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId a = graph.edge_ends[2 * e], b = graph.edge_ends[2 * e + 1];

@@ -83,7 +83,7 @@ inline CubicGraph dual_graph_of(const Triangulation& tri) {
   for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
     if (!tri.smallest_of_face(h)) continue;
     const Halfedge n = tri.next(h), p = tri.next(n);
-    for (const auto [k, side] : {std::pair{0, h}, std::pair{1, n}, std::pair{2, p}}) {
+    for (const auto& [k, side] : {std::pair{0, h}, std::pair{1, n}, std::pair{2, p}}) {
       node_edges[3 * std::size_t{f} + k] = Triangulation::edge(side);
       edge_ends[side] = f;
     }

@@ -4,9 +4,9 @@
 #include <array>
 #include <cstdint>
 #include <span>
-#include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/graph/huge_pages.hpp"
 
 namespace petersen {
 
@@ -40,9 +40,11 @@ class CsrGraph {
   std::uint32_t degree(NodeId v) const { return offsets_[v + 1] - offsets_[v]; }
 
  private:
-  std::vector<std::uint32_t> offsets_{0};
-  std::vector<EdgeId> node_edges_;
-  std::vector<NodeId> edge_ends_;
+  // On huge pages (huge_pages.hpp): a caller building graphs of millions of nodes one after the
+  // other (the out-of-core parts) reuses the pool's pages instead of faulting fresh ones in.
+  HugeVector<std::uint32_t> offsets_ = HugeVector<std::uint32_t>(1, 0);
+  HugeVector<EdgeId> node_edges_;
+  HugeVector<NodeId> edge_ends_;
 };
 
 }  // namespace petersen
