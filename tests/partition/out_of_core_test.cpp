@@ -17,6 +17,7 @@
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "quad_mesh_check.hpp"
 
 namespace petersen {
 namespace {
@@ -51,36 +52,14 @@ void write_triangles(const std::string& path, std::uint64_t vertices,
   out.commit();
 }
 
-using Triple = std::array<VertexId, 3>;
-Triple sorted(VertexId a, VertexId b, VertexId c) {
-  Triple t{a, b, c};
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
-// Checks the output against the input on its own; returns its quads.
+// Checks the output against the input on its own (pairing_problem); returns its quads.
 std::uint64_t checked_quads(const std::vector<VertexId>& input, const PolygonMesh& output,
                             std::uint64_t vertices) {
   EXPECT_EQ(output.positions.size(), vertices);
-  std::vector<Triple> in, out;
-  for (std::size_t i = 0; i < input.size(); i += 3) {
-    in.push_back(sorted(input[i], input[i + 1], input[i + 2]));
-  }
+  PolygonMesh source;
+  source.corners.assign(input.begin(), input.end());
   std::uint64_t quads = 0;
-  for (FaceId f = 0; f < output.face_count(); ++f) {
-    const std::span<const VertexId> q = output.face(f);
-    EXPECT_TRUE(q.size() == 3 || q.size() == 4) << "face " << f;
-    if (q.size() == 3) out.push_back(sorted(q[0], q[1], q[2]));
-    if (q.size() != 4) continue;
-    ++quads;
-    // quad_of's corners (a, d, b, c): triangles (a, b, c) and (a, d, b) across diagonal a-b.
-    out.push_back(sorted(q[0], q[2], q[3]));
-    out.push_back(sorted(q[0], q[1], q[2]));
-    EXPECT_EQ(std::set<VertexId>(q.begin(), q.end()).size(), 4u) << "face " << f;
-  }
-  std::sort(in.begin(), in.end());
-  std::sort(out.begin(), out.end());
-  EXPECT_TRUE(in == out) << "the output's triangles are not the input's, each once";
+  EXPECT_EQ(testing::pairing_problem(source, output, quads), "");
   return quads;
 }
 

@@ -1,6 +1,7 @@
 #include "quad_mesh_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -88,6 +89,54 @@ std::string count_edges(std::vector<Side>& sides, std::uint64_t& edges) {
 }
 
 }  // namespace
+
+std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output,
+                            std::uint64_t& quads) {
+  using Triple = std::array<VertexId, 3>;
+  auto sorted = [](VertexId a, VertexId b, VertexId c) {
+    Triple t{a, b, c};
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  if (!source.all_triangles()) return "the source has faces that are not triangles";
+  HugeVector<Triple> in, out;
+  in.reserve(source.face_count());
+  for (FaceId f = 0; f < source.face_count(); ++f) {
+    const std::span<const VertexId> t = source.face(f);
+    in.push_back(sorted(t[0], t[1], t[2]));
+  }
+  quads = 0;
+  out.reserve(source.face_count());
+  for (FaceId f = 0; f < output.face_count(); ++f) {
+    const std::span<const VertexId> q = output.face(f);
+    if (q.size() == 3) {
+      out.push_back(sorted(q[0], q[1], q[2]));
+      continue;
+    }
+    if (q.size() != 4) return "face " + std::to_string(f) + " has " + std::to_string(q.size()) + " corners";
+    std::array<VertexId, 4> corners{q[0], q[1], q[2], q[3]};
+    std::sort(corners.begin(), corners.end());
+    if (std::adjacent_find(corners.begin(), corners.end()) != corners.end())
+      return "quad " + std::to_string(f) + " repeats a corner";
+    out.push_back(sorted(q[0], q[2], q[3]));
+    out.push_back(sorted(q[0], q[1], q[2]));
+    ++quads;
+  }
+  std::sort(in.begin(), in.end());
+  std::sort(out.begin(), out.end());
+  if (in.size() != out.size()) {
+    return "the output holds " + std::to_string(out.size()) + " triangles, the source " +
+           std::to_string(in.size());
+  }
+  const auto [a, b] = std::mismatch(in.begin(), in.end(), out.begin());
+  if (a != in.end()) {
+    const Triple& t = *a < *b ? *a : *b;
+    return "triangle (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
+           std::to_string(t[2]) + ") is " + (*a < *b ? "missing from" : "extra in") +
+           " the output";
+  }
+  return "";
+}
 
 std::string quad_mesh_problem(const PolygonMesh& source, const PolygonMesh& quads) {
   if (quads.positions != source.positions) return "positions differ from the source's";

@@ -3,6 +3,7 @@
 // form a closed quad mesh of the same surface: what the dual and the matchings promise, checked
 // end to end.
 
+#include <cstdint>
 #include <string>
 
 #include "petersen/graph/cubic_graph.hpp"
@@ -17,6 +18,14 @@ namespace petersen::testing {
 /// verifier's message) unless the matching is a perfect matching of `dual`. O(F).
 PolygonMesh quads_of_matching(const PolygonMesh& mesh, const CubicGraph& dual,
                               const Matching& matching);
+
+/// The first way the faces of `output` fail to be the triangles of the all-triangle `source`,
+/// each used exactly once, or "": a triangle face stands for itself, a quad for the two triangles
+/// on its diagonal from corner 0 to corner 2 (quad_of's corners (a, d, b, c) for triangles
+/// (a, b, c) and (b, a, d)) and has four distinct corners; no other arity. Counts the quads into
+/// `quads`. O(F log F).
+std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output,
+                            std::uint64_t& quads);
 
 /// The first way `quads` fails to be a closed quad mesh of the surface of `source`, or "": the
 /// same positions and the same set of referenced vertices, four distinct in-range corners per

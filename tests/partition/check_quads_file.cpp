@@ -1,0 +1,41 @@
+// petersen_check_quads SOURCE OUTPUT: the independent check of a conversion's output file against
+// its input, for outputs too large for a unit test (the out-of-core runs of bench/RESULTS.md).
+// Reads both with the ordinary reader and checks, without the library's pairing code, that the
+// output's faces are the source's triangles each used once (pairing_problem) and, where every
+// face is a quad, that they form a closed quad mesh of the same surface (quad_mesh_problem).
+// Prints the counts and exits 0, or prints the first problem and exits 1. O(F log F) time; about
+// 80 bytes per triangle.
+
+#include <cstdio>
+#include <exception>
+
+#include "petersen/io/read_mesh.hpp"
+#include "quad_mesh_check.hpp"
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: %s SOURCE OUTPUT\n", argv[0]);
+    return 2;
+  }
+  try {
+    const petersen::PolygonMesh source = petersen::read_mesh(argv[1]);
+    const petersen::PolygonMesh output = petersen::read_mesh(argv[2]);
+    std::uint64_t quads = 0;
+    std::string problem = petersen::testing::pairing_problem(source, output, quads);
+    const bool all_quads = problem.empty() && 2 * quads == source.face_count();
+    if (all_quads) problem = petersen::testing::quad_mesh_problem(source, output);
+    if (!problem.empty()) {
+      std::fprintf(stderr, "%s: %s\n", argv[2], problem.c_str());
+      return 1;
+    }
+    std::printf("%s: %llu quads and %llu triangles, the source's %llu triangles each once%s\n",
+                argv[2], (unsigned long long)quads,
+                (unsigned long long)(source.face_count() - 2 * quads),
+                (unsigned long long)source.face_count(),
+                all_quads ? "; a quad mesh of the same surface" : "");
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s\n", e.what());
+    return 2;
+  }
+}
