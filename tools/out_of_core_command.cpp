@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "json_text.hpp"
 #include "petersen/generators/streamed_plate.hpp"
 #include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/file_bytes.hpp"
@@ -36,26 +37,27 @@ std::optional<std::uint64_t> available_memory() {
 }
 
 void write_stats_json(const std::string& path, const OutOfCoreStats& s) {
-  std::FILE* file = std::fopen(path.c_str(), "w");
-  if (!file) throw FileError(path, 0, "cannot open for writing");
-  std::fprintf(file,
-               "{\"mode\": \"out_of_core\", \"vertices\": %llu, \"triangles\": %llu, \"parts\": "
-               "%llu, \"part_triangles\": %llu, \"pairs\": %llu, \"triangles_left\": %llu, "
-               "\"unpaired_after_parts\": %llu, \"repaired\": %llu, \"cut_adjacencies\": %llu, "
-               "\"band_faces\": %llu, \"band_graph_faces\": %llu, \"repair_radius\": %u, "
-               "\"closed\": %s, \"perfect_certified\": %s, \"parts_certified\": %s, "
-               "\"temp_bytes\": %llu, \"read_pair_seconds\": %.3f, \"cut_seconds\": %.3f, "
-               "\"repair_seconds\": %.3f, \"write_seconds\": %.3f, \"total_seconds\": %.3f}\n",
-               (unsigned long long)s.vertices, (unsigned long long)s.triangles,
-               (unsigned long long)s.parts, (unsigned long long)s.part_triangles,
-               (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
-               (unsigned long long)s.unpaired_after_parts, (unsigned long long)s.repaired,
-               (unsigned long long)s.cut_adjacencies, (unsigned long long)s.band_faces,
-               (unsigned long long)s.band_graph_faces, s.repair_radius, s.closed ? "true" : "false",
-               s.perfect_certified ? "true" : "false", s.parts_certified ? "true" : "false",
-               (unsigned long long)s.temp_bytes, s.read_pair_seconds, s.cut_seconds,
-               s.repair_seconds, s.write_seconds, s.total_seconds);
-  std::fclose(file);
+  cli::write_printed(path, [&](std::FILE* file) {
+    std::fprintf(file,
+                 "{\"mode\": \"out_of_core\", \"vertices\": %llu, \"triangles\": %llu, \"parts\": "
+                 "%llu, \"part_triangles\": %llu, \"pairs\": %llu, \"triangles_left\": %llu, "
+                 "\"unpaired_after_parts\": %llu, \"repaired\": %llu, \"cut_adjacencies\": %llu, "
+                 "\"band_faces\": %llu, \"band_graph_faces\": %llu, \"repair_radius\": %u, "
+                 "\"closed\": %s, \"perfect_certified\": %s, \"parts_certified\": %s, "
+                 "\"temp_bytes\": %llu, \"read_pair_seconds\": %.3f, "
+                 "\"cut_seconds\": %.3f, \"repair_seconds\": %.3f, \"write_seconds\": %.3f, "
+                 "\"total_seconds\": %.3f}\n",
+                 (unsigned long long)s.vertices, (unsigned long long)s.triangles,
+                 (unsigned long long)s.parts, (unsigned long long)s.part_triangles,
+                 (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
+                 (unsigned long long)s.unpaired_after_parts, (unsigned long long)s.repaired,
+                 (unsigned long long)s.cut_adjacencies, (unsigned long long)s.band_faces,
+                 (unsigned long long)s.band_graph_faces, s.repair_radius,
+                 s.closed ? "true" : "false", s.perfect_certified ? "true" : "false",
+                 s.parts_certified ? "true" : "false", (unsigned long long)s.temp_bytes,
+                 s.read_pair_seconds, s.cut_seconds, s.repair_seconds, s.write_seconds,
+                 s.total_seconds);
+  });
 }
 
 }  // namespace
@@ -123,7 +125,7 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
               (unsigned long long)s.part_triangles);
   std::printf(
       "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "
-      "the cuts: %llu; band %llu faces, radius %u)\n",
+      "the cuts: %llu; band graph %llu faces, radius %u)\n",
       (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
       (unsigned long long)s.unpaired_after_parts, (unsigned long long)(2 * s.repaired),
       (unsigned long long)s.band_graph_faces, s.repair_radius);

@@ -113,7 +113,8 @@ std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output
       out.push_back(sorted(q[0], q[1], q[2]));
       continue;
     }
-    if (q.size() != 4) return "face " + std::to_string(f) + " has " + std::to_string(q.size()) + " corners";
+    if (q.size() != 4)
+      return "face " + std::to_string(f) + " has " + std::to_string(q.size()) + " corners";
     std::array<VertexId, 4> corners{q[0], q[1], q[2], q[3]};
     std::sort(corners.begin(), corners.end());
     if (std::adjacent_find(corners.begin(), corners.end()) != corners.end())
@@ -132,8 +133,7 @@ std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output
   if (a != in.end()) {
     const Triple& t = *a < *b ? *a : *b;
     return "triangle (" + std::to_string(t[0]) + ", " + std::to_string(t[1]) + ", " +
-           std::to_string(t[2]) + ") is " + (*a < *b ? "missing from" : "extra in") +
-           " the output";
+           std::to_string(t[2]) + ") is " + (*a < *b ? "missing from" : "extra in") + " the output";
   }
   return "";
 }
