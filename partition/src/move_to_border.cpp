@@ -43,14 +43,14 @@ void flip(Matching& matching, const Search& search) {
   }
 }
 
+// One search from `root`, taking its labels from `budget`.
 bool search_from(const CsrGraph& graph, Matching& matching, std::span<const std::uint8_t> on_border,
-                 std::uint64_t budget, NodeId root, Search& search) {
+                 std::uint64_t& budget, NodeId root, Search& search) {
   ++search.number;
   search.queue.assign(1, root);
   search.stamp[root] = search.number;
   search.parent_edge[root] = kNoEdge;
-  std::uint64_t labels = 1;
-  for (std::size_t head = 0; head < search.queue.size() && labels < budget; ++head) {
+  for (std::size_t head = 0; head < search.queue.size() && budget > 0; ++head) {
     const NodeId even = search.queue[head];
     for (EdgeId e : graph.incident_edges(even)) {
       const NodeId x = graph.other_end(e, even);
@@ -59,7 +59,7 @@ bool search_from(const CsrGraph& graph, Matching& matching, std::span<const std:
       if (search.stamp[y] == search.number) continue;
       search.stamp[y] = search.number;
       search.parent_edge[y] = e;
-      ++labels;
+      --budget;
       if (on_border[y] && trace(graph, matching, search, y)) {
         flip(matching, search);
         return true;
@@ -82,7 +82,7 @@ MoveStats move_to_border(const CsrGraph& graph, Matching& matching,
       search.stamp.assign(graph.node_count(), 0);
       search.parent_edge.assign(graph.node_count(), kNoEdge);
     }
-    if (search_from(graph, matching, on_border, budget, u, search)) {
+    if (budget > 0 && search_from(graph, matching, on_border, budget, u, search)) {
       ++stats.moved;
     } else {
       ++stats.stranded;

@@ -20,8 +20,9 @@ struct MoveStats {
 /// path is flipped, so that u is matched and y is free, and the matching keeps its size. A path
 /// that would repeat a node (it ran through an odd cycle) is not flipped and the search goes on.
 /// Any augmenting path of the whole mesh from u leaves the part through a border node it reaches
-/// this way, so a maximum matching loses nothing. Each search stops after `budget` labels.
-/// O(labels) per search, plus 8 bytes per node of search state.
+/// this way, so a maximum matching loses nothing. The searches stop once they have given `budget`
+/// labels in all (the free nodes left are stranded). O(budget), plus 8 bytes per node of search
+/// state.
 MoveStats move_to_border(const CsrGraph& graph, Matching& matching,
                          std::span<const std::uint8_t> on_border, std::uint64_t budget);
 

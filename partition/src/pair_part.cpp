@@ -225,8 +225,9 @@ HugeVector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& p
   for (NodeId v = 0; v < graph.node_count; ++v) {
     destination[v] = held[v] || (v >= part.carried && borders.open[v] != 0);
   }
-  const partition_detail::MoveStats moves =
-      move_to_border(csr, maximum.matching, destination, options.move_budget);
+  const partition_detail::MoveStats moves = move_to_border(
+      csr, maximum.matching, destination,
+      options.move_budget > 0 ? options.move_budget : 4 * std::uint64_t{graph.node_count});
   if (MatchingCheck check = verify_matching(csr, maximum.matching); !check.ok()) {
     throw std::logic_error("internal error: moving a part's unpaired triangles broke it: " +
                            check.message);

@@ -88,6 +88,27 @@ TEST(OutOfCore, ClosedPlateInManyPartsIsPerfect) {
   EXPECT_EQ(files, 2u);
 }
 
+// Whatever the part size, a closed mesh comes out perfect: a window with an odd number of free
+// triangles leaves one, which must be moved across the part to its far border to be carried
+// forward (PartPairingOptions::move_budget).
+TEST(OutOfCore, ClosedPlateIsPerfectForEveryPartSize) {
+  const TempDir dir;
+  const StreamedPlate plate = streamed_plate_of_size(100000);
+  std::vector<VertexId> corners;
+  for_each_plate_triangle(plate, [&](VertexId a, VertexId b, VertexId c) {
+    corners.insert(corners.end(), {a, b, c});
+  });
+  write_triangles(dir / "plate.ply", plate.vertices(), corners);
+  for (std::uint64_t part : {997u, 2048u, 3001u, 6250u, 7919u, 12345u, 20011u, 33333u, 49999u}) {
+    const OutOfCoreStats stats =
+        quad_out_of_core(dir / "plate.ply", dir / "quads.ply", {.part_triangles = part});
+    EXPECT_TRUE(stats.perfect_certified) << "parts of " << part;
+    EXPECT_EQ(stats.triangles_left, 0u) << "parts of " << part;
+  }
+  const PolygonMesh out = read_mesh(dir / "quads.ply");
+  EXPECT_EQ(checked_quads(corners, out, plate.vertices()), plate.triangles() / 2);
+}
+
 TEST(OutOfCore, OpenMeshMatchesTheInMemoryMaximum) {
   const TempDir dir;
   const PolygonMesh mesh = punch_holes(open_grid(60, 50), 20, 3);

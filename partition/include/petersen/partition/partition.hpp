@@ -76,9 +76,12 @@ struct PartPairingOptions {
   /// The band holds the triangles at most this many steps from the open edges: repair_cuts can
   /// grow its band graph up to here. O(band_radius · open edges) band faces on a regular surface.
   std::uint32_t band_radius = 16;
-  /// Labels one search may give while moving an unpaired triangle to the border, before it gives
-  /// up (the triangle then stays where it is, counted in PartPairing::stranded).
-  std::uint64_t move_budget = 1u << 22;
+  /// Labels the searches that move unpaired triangles to the border may give in all, before the
+  /// rest give up (their triangles then stay where they are, counted in PartPairing::stranded).
+  /// 0: four times the part's triangles, so that any one search may cross the whole part (a
+  /// triangle left far from the border, as parity may leave one in a sweep's window, is carried
+  /// forward only once it is there) while a part with many unpaired triangles stays O(m).
+  std::uint64_t move_budget = 0;
   /// Threads for the pairable graph's construction (build_pairable_graph); 0: every core.
   std::uint32_t threads = 1;
 };
