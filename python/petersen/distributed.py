@@ -269,32 +269,13 @@ def _plan(part: _Part, repair: Dict[str, Any]) -> Dict[str, np.ndarray]:
                             == first[~local] + lo).all():
         raise RuntimeError("verification failed: a pair across a cut the repair did not make")
     corners[~local] = repair["partner_corners"][across]
-    return {"heads": first, "quads": _quads_of(part.F[first], corners),
+    return {"heads": first, "quads": _petersen.quads_of_pairs(part.F[first], corners),
             "lefts": np.flatnonzero(partner < 0)}
 
 
 def _plan_counts(plan: Dict[str, np.ndarray]) -> Tuple[int, int]:
     """The quads and triangles a part writes."""
     return len(plan["heads"]), len(plan["lefts"])
-
-
-def _quads_of(first: np.ndarray, second: np.ndarray) -> np.ndarray:
-    """The quad of each pair of triangles sharing an edge, following the first's orientation
-    (quad_of in dualize/quad_of.hpp, vectorised): the first's corners with the second's opposite
-    vertex inserted at the first side whose ends the second holds. Raises RuntimeError when two
-    triangles do not share exactly one edge. O(pairs)."""
-    equal = first[:, :, None] == second[:, None, :]  # [pair, corner of first, corner of second]
-    in_first = equal.any(axis=1)
-    if not (in_first.sum(axis=1) == 2).all():
-        bad = np.flatnonzero(in_first.sum(axis=1) != 2)[0]
-        raise RuntimeError(f"verification failed: triangles {first[bad].tolist()} and "
-                           f"{second[bad].tolist()} share no single edge")
-    w = second[np.arange(len(second)), np.argmin(in_first, axis=1)]
-    # The first's corner i starts the shared edge when corners i and i+1 are in the second.
-    shared = equal.any(axis=2)
-    i = np.argmax(shared & np.roll(shared, -1, axis=1), axis=1)
-    rows = np.arange(len(first))
-    return np.stack([first[rows, i], w, first[rows, (i + 1) % 3], first[rows, (i + 2) % 3]], 1)
 
 
 def _face_bytes(corners: np.ndarray) -> bytes:

@@ -7,11 +7,14 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "arrays.hpp"
+#include "petersen/dualize/quad_of.hpp"
 #include "petersen/partition/partition.hpp"
 
 namespace petersen::python {
@@ -204,6 +207,50 @@ py::dict repair_cuts_py(const Int64Array& faces, const Int64Array& corners,
   return d;
 }
 
+// quad_of on each row of two (k, 3) arrays of paired triangles: the (k, 4) quads, in the first's
+// orientation. RuntimeError naming the first pair whose triangles do not share exactly two
+// corners. O(k), the GIL released.
+py::array_t<std::int64_t> quads_of_pairs_py(const Int64Array& first, const Int64Array& second) {
+  const std::int64_t* a = rows_of(first, 3, "first");
+  const std::int64_t* b = rows_of(second, 3, "second");
+  if (first.shape(0) != second.shape(0)) {
+    throw py::value_error("first and second: arrays of as many rows");
+  }
+  const std::size_t k = static_cast<std::size_t>(first.shape(0));
+  for (std::size_t i = 0; i < 3 * k; ++i) {
+    id_of(a[i], "first");
+    id_of(b[i], "second");
+  }
+  py::array_t<std::int64_t> quads({k, std::size_t{4}});
+  std::int64_t* q = quads.mutable_data();
+  std::size_t bad = k;
+  {
+    py::gil_scoped_release release;
+    for (std::size_t i = 0; i < k; ++i) {
+      const std::array<VertexId, 3> t1{VertexId(a[3 * i]), VertexId(a[3 * i + 1]),
+                                       VertexId(a[3 * i + 2])};
+      const std::array<VertexId, 3> t2{VertexId(b[3 * i]), VertexId(b[3 * i + 1]),
+                                       VertexId(b[3 * i + 2])};
+      int common = 0;
+      for (VertexId v : t1) common += v == t2[0] || v == t2[1] || v == t2[2];
+      if (common != 2) {
+        bad = i;
+        break;
+      }
+      const std::array<VertexId, 4> quad = quad_of(t1, t2);
+      for (int c = 0; c < 4; ++c) q[4 * i + c] = quad[c];
+    }
+  }
+  if (bad < k) {
+    throw std::runtime_error("verification failed: triangles (" + std::to_string(a[3 * bad]) +
+                             ", " + std::to_string(a[3 * bad + 1]) + ", " +
+                             std::to_string(a[3 * bad + 2]) + ") and (" +
+                             std::to_string(b[3 * bad]) + ", " + std::to_string(b[3 * bad + 1]) +
+                             ", " + std::to_string(b[3 * bad + 2]) + ") share no single edge");
+  }
+  return quads;
+}
+
 }  // namespace
 
 void add_partition(py::module_& m) {
@@ -213,6 +260,7 @@ void add_partition(py::module_& m) {
   m.def("repair_cuts", &repair_cuts_py, py::arg("faces"), py::arg("corners"), py::arg("sides"),
         py::arg("distance"), py::arg("partner"), py::arg("adjacencies"), py::arg("augment"),
         py::arg("first_radius"));
+  m.def("quads_of_pairs", &quads_of_pairs_py, py::arg("first"), py::arg("second"));
 }
 
 }  // namespace petersen::python

@@ -228,3 +228,15 @@ def test_bad_input_is_named(client, tmp_path):
     with pytest.raises(TypeError, match="sharp_angle.*augment"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, sharp_angle=30)
     assert not (tmp_path / "out.ply").exists()
+
+
+def test_the_write_stage_quads_follow_the_first_triangle_and_refuse_a_non_pair():
+    # (0, 1, 2) and (1, 0, 3) share the first's side 0-1: the quad (0, 3, 1, 2) runs the first's
+    # way; (5, 6, 7) and (6, 7, 8) share its side 6-7, which starts the quad (6, 8, 7, 5).
+    quads = petersen._petersen.quads_of_pairs(np.array([[0, 1, 2], [5, 6, 7]]),
+                                              np.array([[1, 0, 3], [6, 7, 8]]))
+    assert quads.tolist() == [[0, 3, 1, 2], [6, 8, 7, 5]]
+    with pytest.raises(RuntimeError, match=r"\(0, 1, 2\) and \(0, 1, 2\) share no single edge"):
+        petersen._petersen.quads_of_pairs(np.array([[0, 1, 2]]), np.array([[0, 1, 2]]))
+    with pytest.raises(ValueError, match="as many rows"):
+        petersen._petersen.quads_of_pairs(np.zeros((2, 3), np.int64), np.zeros((1, 3), np.int64))
