@@ -63,14 +63,20 @@ std::uint64_t checked_quads(const std::vector<VertexId>& input, const PolygonMes
   return quads;
 }
 
-TEST(OutOfCore, ClosedPlateInManyPartsIsPerfect) {
-  const TempDir dir;
-  const StreamedPlate plate = streamed_plate_of_size(60000);
+// The plate's triangles, written to `path` as binary PLY.
+std::vector<VertexId> write_plate(const StreamedPlate& plate, const std::string& path) {
   std::vector<VertexId> corners;
   for_each_plate_triangle(plate, [&](VertexId a, VertexId b, VertexId c) {
     corners.insert(corners.end(), {a, b, c});
   });
-  write_triangles(dir / "plate.ply", plate.vertices(), corners);
+  write_triangles(path, plate.vertices(), corners);
+  return corners;
+}
+
+TEST(OutOfCore, ClosedPlateInManyPartsIsPerfect) {
+  const TempDir dir;
+  const StreamedPlate plate = streamed_plate_of_size(60000);
+  const std::vector<VertexId> corners = write_plate(plate, dir / "plate.ply");
   for (std::uint64_t limit : {std::uint64_t{200} << 10, std::uint64_t{1} << 20}) {
     const OutOfCoreStats stats =
         quad_out_of_core(dir / "plate.ply", dir / "quads.ply", {.memory_limit = limit});
@@ -94,11 +100,7 @@ TEST(OutOfCore, ClosedPlateInManyPartsIsPerfect) {
 TEST(OutOfCore, ClosedPlateIsPerfectForEveryPartSize) {
   const TempDir dir;
   const StreamedPlate plate = streamed_plate_of_size(100000);
-  std::vector<VertexId> corners;
-  for_each_plate_triangle(plate, [&](VertexId a, VertexId b, VertexId c) {
-    corners.insert(corners.end(), {a, b, c});
-  });
-  write_triangles(dir / "plate.ply", plate.vertices(), corners);
+  const std::vector<VertexId> corners = write_plate(plate, dir / "plate.ply");
   for (std::uint64_t part : {997u, 2048u, 3001u, 6250u, 7919u, 12345u, 20011u, 33333u, 49999u}) {
     const OutOfCoreStats stats =
         quad_out_of_core(dir / "plate.ply", dir / "quads.ply", {.part_triangles = part});
