@@ -68,15 +68,21 @@ Best brute_force(std::uint32_t n, const Edges& edges, std::span<const Cost> cost
   return best ? *best : Best{-1, 0};  // -1: no perfect matching of the rest
 }
 
+// Costs over all of low..high at every size (RapidCheck's inRange favours the low end at small
+// sizes).
 std::vector<Cost> random_costs(std::size_t m, Cost low, Cost high) {
-  return *rc::gen::container<std::vector<Cost>>(m, rc::gen::inRange<Cost>(low, high + 1));
+  return *rc::gen::container<std::vector<Cost>>(
+      m, rc::gen::resize(100, rc::gen::inRange<Cost>(low, high + 1)));
 }
 
+// Ends drawn over all of 0..n-1 at every size (as random_costs), else most tiny graphs would
+// draw loops only.
 Edges random_edges(std::uint32_t n, std::uint32_t m) {
   Edges edges;
+  const auto end = rc::gen::resize(100, rc::gen::inRange<std::uint32_t>(0, n));
   for (std::uint32_t i = 0; i < m; ++i) {
-    const auto a = *rc::gen::inRange<std::uint32_t>(0, n);
-    const auto b = *rc::gen::inRange<std::uint32_t>(0, n);
+    const auto a = *end;
+    const auto b = *end;
     if (a != b) edges.push_back({a, b});
   }
   return edges;
@@ -241,6 +247,116 @@ TEST(MinCostMaximum, FewEdgesAmongManyFreeNodesAndFarApartCosts) {
                                                  r.unmatched_cost, r.certificate)
                     .ok());
   }
+}
+
+// ---- matchings of any size with a price per unmatched node
+
+// The least cost(M) + Σ price over the nodes M leaves free, among matchings of the nodes not
+// yet used; by recursion over the lowest free node (depth <= n, tiny graphs).
+Cost brute_force_priced(std::uint32_t n, const Edges& edges, std::span<const Cost> costs,
+                        std::span<const Cost> prices, std::vector<char>& used) {
+  NodeId v = 0;
+  while (v < n && used[v]) ++v;
+  if (v == n) return 0;
+  used[v] = 1;
+  Cost best = prices[v] + brute_force_priced(n, edges, costs, prices, used);
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    const auto [a, b] = edges[e];
+    const NodeId w = a == v ? b : a;
+    if ((a != v && b != v) || used[w]) continue;
+    used[w] = 1;
+    best = std::min(best, costs[e] + brute_force_priced(n, edges, costs, prices, used));
+    used[w] = 0;
+  }
+  used[v] = 0;
+  return best;
+}
+
+// Any prices (one per node, or one for all; of either sign), any costs: the optimum of brute
+// force, the total and the size as the matching says, and the certificate accepted.
+RC_GTEST_PROP(MinCostAnySize, TinyGraphsMatchBruteForce, ()) {
+  const auto n = *rc::gen::resize(100, rc::gen::inRange<std::uint32_t>(1, 11));
+  const Edges edges =
+      random_edges(n, *rc::gen::resize(100, rc::gen::inRange<std::uint32_t>(0, 2 * n)));
+  const std::vector<Cost> costs = random_costs(edges.size(), -30, 40);
+  const bool one_price = *rc::gen::arbitrary<bool>();
+  const std::vector<Cost> prices = random_costs(one_price ? 1 : n, -10, 25);
+  const std::vector<Cost> per_node = one_price ? std::vector<Cost>(n, prices[0]) : prices;
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  std::vector<char> used(n, 0);
+  const Cost best = brute_force_priced(n, edges, costs, per_node, used);
+  const MinCostMatchingResult r = min_cost_matching(g, costs, prices);
+  RC_ASSERT(r.total == best);
+  RC_ASSERT(verify_matching(g, r.matching).ok());
+  Cost matched = 0, unmatched = 0;
+  std::uint32_t size = 0;
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = r.matching.mate_edge[v];
+    if (e == kNoEdge) unmatched += per_node[v];
+    if (e != kNoEdge && g.endpoints(e)[0] == v) {
+      matched += costs[e];
+      ++size;
+    }
+  }
+  RC_ASSERT(r.matched_cost == matched);
+  RC_ASSERT(r.total == matched + unmatched);
+  RC_ASSERT(r.size == size);
+  const CertificateCheck check =
+      verify_min_cost_matching(n, ends_of(g), costs, prices, r.matching, r.total, r.certificate);
+  RC_ASSERT(check.ok());
+  // The same certificate does not prove a smaller total, nor the answer under other prices.
+  RC_ASSERT(!verify_min_cost_matching(n, ends_of(g), costs, prices, r.matching, r.total - 1,
+                                      r.certificate)
+                 .ok());
+  RC_TAG(size == 0 ? "empty" : 2 * size == n ? "perfect" : "partial");
+}
+
+// A price above every matching's cost difference makes the fewest free nodes cheapest: the
+// minimum-cost maximum matching's cost, on graphs too large for brute force.
+RC_GTEST_PROP(MinCostAnySize, LargePriceGivesTheMinimumCostMaximum, ()) {
+  const auto n = *rc::gen::inRange<std::uint32_t>(1, 120);
+  const Edges edges = random_edges(n, *rc::gen::inRange<std::uint32_t>(0, 3 * n));
+  const std::vector<Cost> costs = random_costs(edges.size(), -1000, 1000);
+  const CsrGraph g = CsrGraph::from_edges(n, edges);
+  const MinCostMaximumResult maximum = min_cost_maximum_matching(g, costs);
+  const std::vector<Cost> price = {maximum.unmatched_cost};
+  const MinCostMatchingResult r = min_cost_matching(g, costs, price, {.threads = 2});
+  RC_ASSERT(r.size == maximum.size);
+  RC_ASSERT(r.matched_cost == maximum.total_cost);
+  RC_ASSERT(
+      verify_min_cost_matching(n, ends_of(g), costs, price, r.matching, r.total, r.certificate)
+          .ok());
+}
+
+// Maximum weight of any size (costs = −weight, price 0) on a path 0–1–2–3 of weights 2, 3, 2:
+// the two end edges (4) beat the middle one (3), and a negative weight is never taken.
+TEST(MinCostAnySize, MaximumWeightIsNegatedCostsAtPriceZero) {
+  const Edges edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4}};
+  const std::vector<Cost> costs = {-2, -3, -2, 5};
+  const std::vector<Cost> zero = {0};
+  const CsrGraph g = CsrGraph::from_edges(5, edges);
+  const MinCostMatchingResult r = min_cost_matching(g, costs, zero);
+  std::vector<char> used(5, 0);
+  EXPECT_EQ(r.total, brute_force_priced(5, edges, costs, std::vector<Cost>(5, 0), used));
+  EXPECT_EQ(r.size, 2u);
+  EXPECT_EQ(r.matching.mate_edge[4], kNoEdge);
+  const CertificateCheck check =
+      verify_min_cost_matching(5, ends_of(g), costs, zero, r.matching, r.total, r.certificate);
+  EXPECT_TRUE(check.ok()) << check.problem;
+}
+
+TEST(MinCostAnySize, RejectsBadPrices) {
+  const CsrGraph g = CsrGraph::from_edges(3, Edges{{0, 1}, {1, 2}});
+  const std::vector<Cost> costs = {1, 2};
+  EXPECT_THROW(min_cost_matching(g, costs, std::vector<Cost>{1, 2}), std::invalid_argument);
+  EXPECT_THROW(min_cost_matching(g, costs, std::vector<Cost>{}), std::invalid_argument);
+  EXPECT_THROW(min_cost_matching(g, costs, std::vector<Cost>{kMaxCost + 1}), std::invalid_argument);
+  const CsrGraph empty = CsrGraph::from_edges(0, Edges{});
+  const MinCostMatchingResult r = min_cost_matching(empty, {}, std::vector<Cost>{7});
+  EXPECT_EQ(r.total, 0);
+  EXPECT_TRUE(
+      verify_min_cost_matching(0, {}, {}, std::vector<Cost>{7}, r.matching, r.total, r.certificate)
+          .ok());
 }
 
 // cheapest_maximum_matching picks the perfect solver or the maximum one; either way the answer

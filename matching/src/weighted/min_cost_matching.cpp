@@ -1,11 +1,13 @@
 #include "petersen/matching/min_cost_matching.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "blossom_solver.hpp"
 #include "breadth_first_order.hpp"
@@ -81,6 +83,59 @@ MinCostResult solve_perfect(const Graph& graph, std::span<const Cost> costs,
   return result;
 }
 
+// The first copy of an optimal perfect matching of the doubled graph (min_cost_matching.hpp).
+struct FirstCopy {
+  Matching matching;
+  std::uint32_t size = 0;
+  WideCost matched_cost = 0;
+  MatchingCertificate certificate;
+  MinCostStats stats;
+};
+
+// The reduction of min_cost_matching and min_cost_maximum_matching: H = G ∪ G' plus v–v' (edge
+// 2m + v) at pair_costs[v], solved as a perfect matching; H always has one (every v–v').
+// Returns G's part. O(n + m) besides the solve of 2n nodes and 2m + n edges.
+FirstCopy solve_doubled(const CsrGraph& graph, std::span<const Cost> costs,
+                        std::span<const Cost> pair_costs, const MinCostOptions& options) {
+  const std::uint32_t n = graph.node_count(), m = graph.edge_count();
+  if (n > 0x7FFFFFFFu || std::uint64_t{2} * m + n > 0xFFFFFFFEu) {
+    throw std::invalid_argument("min-cost matching: the doubled graph needs 32-bit ids");
+  }
+  std::vector<std::array<NodeId, 2>> edges;
+  edges.reserve(std::size_t{2} * m + n);
+  for (EdgeId e = 0; e < m; ++e) edges.push_back(graph.endpoints(e));
+  for (EdgeId e = 0; e < m; ++e) {
+    const auto [a, b] = graph.endpoints(e);
+    edges.push_back({n + a, n + b});
+  }
+  for (NodeId v = 0; v < n; ++v) edges.push_back({v, n + v});
+  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges);
+  std::vector<Cost> doubled_costs(costs.begin(), costs.end());
+  doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
+  doubled_costs.insert(doubled_costs.end(), pair_costs.begin(), pair_costs.end());
+
+  // The doubled graph's own total (up to n edges of cost K) is not needed: the first copy's is.
+  MinCostResult inner;
+  solve(doubled, doubled_costs, options, inner);
+  FirstCopy first;
+  first.matching = Matching(n);
+  // Both copies are optimal halves of equal objective (else the cheaper one, doubled, would
+  // beat the optimum), so the first copy is optimal.
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = inner.matching.mate_edge[v];
+    if (e < m) {
+      first.matching.mate_edge[v] = e;
+      if (graph.endpoints(e)[0] == v) {
+        ++first.size;
+        first.matched_cost += costs[e];
+      }
+    }
+  }
+  first.certificate = std::move(inner.certificate);
+  first.stats = inner.stats;
+  return first;
+}
+
 // Every node of degree 3 (a CsrGraph has no loops) and no bridge.
 bool cubic_bridgeless(const CsrGraph& graph) {
   const std::uint32_t n = graph.node_count();
@@ -129,9 +184,6 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
                                                const MinCostOptions& options) {
   check_costs(costs, graph.edge_count(), kMaxCost);
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
-  if (n > 0x7FFFFFFFu || std::uint64_t{2} * m + n > 0xFFFFFFFEu) {
-    throw std::invalid_argument("min_cost_maximum_matching: the doubled graph needs 32-bit ids");
-  }
   Cost most = 0, least = 0;
   for (Cost c : costs) {
     most = std::max(most, c);
@@ -153,41 +205,50 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
         "for this many matchable edges)");
   }
   const Cost unmatched_cost = static_cast<Cost>(k);
-  std::vector<std::array<NodeId, 2>> edges;
-  edges.reserve(std::size_t{2} * m + n);
-  for (EdgeId e = 0; e < m; ++e) edges.push_back(graph.endpoints(e));
-  for (EdgeId e = 0; e < m; ++e) {
-    const auto [a, b] = graph.endpoints(e);
-    edges.push_back({n + a, n + b});
-  }
-  for (NodeId v = 0; v < n; ++v) edges.push_back({v, n + v});
-  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges);
-  std::vector<Cost> doubled_costs(costs.begin(), costs.end());
-  doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
-  doubled_costs.insert(doubled_costs.end(), n, unmatched_cost);
-
-  // The doubled graph's own total (up to n edges of cost K) is not needed: the first copy's is.
-  MinCostResult inner;
-  solve(doubled, doubled_costs, options, inner);
+  const std::vector<Cost> pair_costs(n, unmatched_cost);
+  FirstCopy first = solve_doubled(graph, costs, pair_costs, options);
   MinCostMaximumResult result;
-  result.matching = Matching(n);
+  result.matching = std::move(first.matching);
+  result.size = first.size;
+  result.total_cost = fitting_total(first.matched_cost);
   result.unmatched_cost = unmatched_cost;
-  // Both copies are optimal halves of equal cost (else the cheaper one, doubled, would beat the
-  // optimum), so the first copy is a minimum-cost maximum matching.
-  WideCost total = 0;
-  for (NodeId v = 0; v < n; ++v) {
-    const EdgeId e = inner.matching.mate_edge[v];
-    if (e < m) {
-      result.matching.mate_edge[v] = e;
-      if (graph.endpoints(e)[0] == v) {
-        ++result.size;
-        total += costs[e];
-      }
-    }
+  result.certificate = std::move(first.certificate);
+  result.stats = first.stats;
+  return result;
+}
+
+MinCostMatchingResult min_cost_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                        std::span<const Cost> unmatched_cost,
+                                        const MinCostOptions& options) {
+  check_costs(costs, graph.edge_count(), kMaxCost);
+  const std::uint32_t n = graph.node_count();
+  if (unmatched_cost.size() != n && unmatched_cost.size() != 1) {
+    throw std::invalid_argument("min_cost_matching: " + std::to_string(unmatched_cost.size()) +
+                                " unmatched-node prices for " + std::to_string(n) +
+                                " nodes (one per node, or one for all)");
   }
-  result.total_cost = fitting_total(total);
-  result.certificate = std::move(inner.certificate);
-  result.stats = inner.stats;
+  auto price = [&](NodeId v) { return unmatched_cost[unmatched_cost.size() == 1 ? 0 : v]; };
+  std::vector<Cost> pair_costs(n);
+  for (NodeId v = 0; v < n; ++v) {
+    if (price(v) > kMaxCost || price(v) < -kMaxCost) {
+      throw std::invalid_argument("min_cost_matching: unmatched-node price " +
+                                  std::to_string(price(v)) + " of node " + std::to_string(v) +
+                                  " is out of range");
+    }
+    pair_costs[v] = 2 * price(v);
+  }
+  FirstCopy first = solve_doubled(graph, costs, pair_costs, options);
+  WideCost total = first.matched_cost;
+  for (NodeId v = 0; v < n; ++v) {
+    if (!first.matching.is_matched(v)) total += price(v);
+  }
+  MinCostMatchingResult result;
+  result.matching = std::move(first.matching);
+  result.size = first.size;
+  result.matched_cost = fitting_total(first.matched_cost);
+  result.total = fitting_total(total);
+  result.certificate = std::move(first.certificate);
+  result.stats = first.stats;
   return result;
 }
 

@@ -4,6 +4,7 @@
 #include "petersen/matching/verify_min_cost.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -214,6 +215,49 @@ CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_end
   return check_duals(n, edge_ends, costs, matching, primal, certificate, family);
 }
 
+// The free nodes of a matching of the right size.
+std::uint64_t free_count(const Matching& matching) {
+  return static_cast<std::uint64_t>(
+      std::count(matching.mate_edge.begin(), matching.mate_edge.end(), kNoEdge));
+}
+
+// The doubled graph H: G on 0..n-1 (edge e), G' on n..2n-1 (edge m + e), v–v' (edge 2m + v) at
+// pair_costs[v]; the perfect matching M ∪ M' ∪ {v–v' : v free in M}, checked with the certificate
+// at total h_total. The caller has checked the sizes of costs and matching.
+CertificateCheck check_doubled(std::uint32_t n, std::span<const NodeId> edge_ends,
+                               std::span<const Cost> costs, const std::vector<Cost>& pair_costs,
+                               const Matching& matching, Wide h_total,
+                               const MatchingCertificate& certificate) {
+  const std::size_t m = edge_ends.size() / 2;
+  std::vector<NodeId> ends;
+  ends.reserve(4 * m + 2 * n);
+  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(edge_ends[i]);
+  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(n + edge_ends[i]);
+  for (NodeId v = 0; v < n; ++v) {
+    ends.push_back(v);
+    ends.push_back(n + v);
+  }
+  std::vector<Cost> h_costs(costs.begin(), costs.end());
+  h_costs.insert(h_costs.end(), costs.begin(), costs.end());
+  h_costs.insert(h_costs.end(), pair_costs.begin(), pair_costs.end());
+  Matching h(2 * n);
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = matching.mate_edge[v];
+    if (e == kNoEdge) {
+      h.mate_edge[v] = h.mate_edge[n + v] = static_cast<EdgeId>(2 * m + v);
+    } else if (e >= m) {
+      return fail("node " + std::to_string(v) + " names edge " + std::to_string(e) +
+                  " out of range");
+    } else {
+      h.mate_edge[v] = e;
+      h.mate_edge[n + v] = static_cast<EdgeId>(m + e);
+    }
+  }
+  CertificateCheck check = check_perfect(2 * n, ends, h_costs, h, h_total, certificate);
+  if (!check.ok()) check.problem = "doubled graph: " + check.problem;
+  return check;
+}
+
 }  // namespace
 
 CertificateCheck verify_min_cost_perfect_matching(std::uint32_t n,
@@ -254,37 +298,42 @@ CertificateCheck verify_min_cost_maximum_matching(std::uint32_t n,
   if (Wide{unmatched_cost} < needed) {
     return fail("unmatched cost " + std::to_string(unmatched_cost) + " is below " + str(needed));
   }
-  // H: G on 0..n-1 (edge e), G' on n..2n-1 (edge m + e), v–v' (edge 2m + v).
-  std::vector<NodeId> ends;
-  ends.reserve(4 * m + 2 * n);
-  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(edge_ends[i]);
-  for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(n + edge_ends[i]);
+  const Wide h_total = 2 * Wide{total_cost} + Wide{unmatched_cost} * free_count(matching);
+  return check_doubled(n, edge_ends, costs, std::vector<Cost>(n, unmatched_cost), matching, h_total,
+                       certificate);
+}
+
+CertificateCheck verify_min_cost_matching(std::uint32_t n, std::span<const NodeId> edge_ends,
+                                          std::span<const Cost> costs,
+                                          std::span<const Cost> unmatched_cost,
+                                          const Matching& matching, Cost total,
+                                          const MatchingCertificate& certificate) {
+  const std::size_t m = edge_ends.size() / 2;
+  if (costs.size() != m) return fail("costs: wrong size");
+  if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
+  if (unmatched_cost.size() != n && unmatched_cost.size() != 1)
+    return fail("unmatched costs: " + std::to_string(unmatched_cost.size()) + " for " +
+                std::to_string(n) + " nodes");
+  // The objective: the matched edges (counted at their first end) and the free nodes' prices.
+  std::vector<Cost> pair_costs(n);
+  Wide objective = 0;
   for (NodeId v = 0; v < n; ++v) {
-    ends.push_back(v);
-    ends.push_back(n + v);
-  }
-  std::vector<Cost> h_costs(costs.begin(), costs.end());
-  h_costs.insert(h_costs.end(), costs.begin(), costs.end());
-  h_costs.insert(h_costs.end(), n, unmatched_cost);
-  Matching h(2 * n);
-  std::uint64_t free_nodes = 0;
-  for (NodeId v = 0; v < n; ++v) {
+    const Cost price = unmatched_cost[unmatched_cost.size() == 1 ? 0 : v];
+    if (price > INT64_MAX / 2 || price < INT64_MIN / 2)
+      return fail("node " + std::to_string(v) + " has price " + std::to_string(price) +
+                  ", past 2^62");
+    pair_costs[v] = 2 * price;
     const EdgeId e = matching.mate_edge[v];
     if (e == kNoEdge) {
-      h.mate_edge[v] = h.mate_edge[n + v] = static_cast<EdgeId>(2 * m + v);
-      ++free_nodes;
-    } else if (e >= m) {
-      return fail("node " + std::to_string(v) + " names edge " + std::to_string(e) +
-                  " out of range");
-    } else {
-      h.mate_edge[v] = e;
-      h.mate_edge[n + v] = static_cast<EdgeId>(m + e);
+      objective += price;
+    } else if (e < m && edge_ends[2 * std::size_t{e}] == v) {
+      objective += costs[e];
     }
   }
-  const Wide h_total = 2 * Wide{total_cost} + Wide{unmatched_cost} * free_nodes;
-  CertificateCheck check = check_perfect(2 * n, ends, h_costs, h, h_total, certificate);
-  if (!check.ok()) check.problem = "doubled graph: " + check.problem;
-  return check;
+  if (objective != total)
+    return fail("the matched costs and unmatched prices sum to " + str(objective) + ", not " +
+                str(total));
+  return check_doubled(n, edge_ends, costs, pair_costs, matching, 2 * Wide{total}, certificate);
 }
 
 }  // namespace petersen

@@ -113,6 +113,36 @@ MinCostResult min_cost_perfect_matching(const CubicGraph& graph, std::span<const
 MinCostResult min_cost_perfect_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                         const MinCostOptions& options = {});
 
+/// The result of min_cost_matching. The certificate is of the doubled graph described there,
+/// whose nodes are v and n + v and whose edges are e, m + e and 2m + v.
+struct MinCostMatchingResult {
+  Matching matching;                ///< of the input graph; any size
+  std::uint32_t size = 0;           ///< matched edges
+  Cost matched_cost = 0;            ///< sum of the matched edges' costs
+  Cost total = 0;                   ///< matched_cost + the prices of the unmatched nodes
+  MatchingCertificate certificate;  ///< of the doubled graph's perfect matching
+  MinCostStats stats;
+};
+
+/// A matching of `graph` of any size minimizing cost(M) + Σ price(v) over the nodes v that M
+/// leaves unmatched, with its certificate. `unmatched_cost` holds one price per node, or a
+/// single price for every node (|price| <= kMaxCost, any sign); costs one per edge id (|cost| <=
+/// kMaxCost). Price 0 and costs = −weight give a maximum-weight matching of any size; a price
+/// above every matching's cost difference gives min_cost_maximum_matching.
+/// By reduction: the doubled graph H has G, a copy G' (node n + v, edge m + e, same costs) and
+/// an edge v–v' (edge 2m + v) of cost 2·price(v). A perfect matching of H is M1 ∪ M2' plus v–v'
+/// for the nodes F both leave free, costing cost(M1) + cost(M2) + 2·Σ_F price; M ∪ M' for any M
+/// costs twice M's objective, so H's optimum is twice G's and each copy of an optimal H is
+/// optimal: the first is returned. The certificate proves the perfect matching M ∪ M' ∪ {v–v'}
+/// of H optimal with total 2·total; verify_min_cost_matching rebuilds H and checks it.
+/// Twice the work of min_cost_perfect_matching on a graph of n nodes: worst case O(n² m), in
+/// practice near the trees' regions (see min_cost_perfect_matching). Throws
+/// std::invalid_argument when costs or unmatched_cost has the wrong size or a value out of range
+/// (or the doubled graph would pass 32-bit ids), std::overflow_error when a total passes 2^63.
+MinCostMatchingResult min_cost_matching(const CsrGraph& graph, std::span<const Cost> costs,
+                                        std::span<const Cost> unmatched_cost,
+                                        const MinCostOptions& options = {});
+
 /// The result of min_cost_maximum_matching. The certificate is of the doubled graph described
 /// there, whose nodes are v and n + v and whose edges are e, m + e and 2m + v.
 struct MinCostMaximumResult {
@@ -130,11 +160,11 @@ struct MinCostMaximumResult {
 /// with an edge, the edges) bounds a matching's size. A perfect matching of H is M ∪ M' plus
 /// v–v' for the u nodes M leaves free, costing 2·cost(M) + K·u; K exceeds the cost difference
 /// of any two matchings of G, so the cheapest perfect matching of H leaves the fewest nodes
-/// free, and among those costs the least. The certificate proves that perfect
-/// matching of H optimal; verify_min_cost_maximum_matching rebuilds H and checks it. Throws
-/// std::invalid_argument when costs has the wrong size, a cost is out of range or K would pass
-/// 2^52, and std::overflow_error when the total cost passes 2^63. Twice the work of
-/// min_cost_perfect_matching on a graph of n nodes.
+/// free, and among those costs the least: min_cost_matching's reduction with K for 2·price.
+/// The certificate proves that perfect matching of H optimal; verify_min_cost_maximum_matching
+/// rebuilds H and checks it. Throws std::invalid_argument when costs has the wrong size, a cost is
+/// out of range or K would pass 2^52, and std::overflow_error when the total cost passes 2^63.
+/// Twice the work of min_cost_perfect_matching on a graph of n nodes.
 MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<const Cost> costs,
                                                const MinCostOptions& options = {});
 

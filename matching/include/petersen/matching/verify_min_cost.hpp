@@ -32,6 +32,18 @@ CertificateCheck verify_min_cost_perfect_matching(std::uint32_t node_count,
                                                   const Matching& matching, Cost total_cost,
                                                   const MatchingCertificate& certificate);
 
+/// Checks a min_cost_matching result: rebuilds the doubled graph H (see min_cost_matching.hpp)
+/// with v–v' at 2·price(v) (`unmatched_cost`: one price per node, or one for all) and its
+/// perfect matching M ∪ M' ∪ {v–v' : v free in M} from `matching`, checks that `total` is the
+/// matched costs plus the prices of the free nodes, and checks the certificate on H with total
+/// 2·total. Then no matching of any size has a smaller cost plus prices. In 128-bit integers.
+CertificateCheck verify_min_cost_matching(std::uint32_t node_count,
+                                          std::span<const NodeId> edge_ends,
+                                          std::span<const Cost> costs,
+                                          std::span<const Cost> unmatched_cost,
+                                          const Matching& matching, Cost total,
+                                          const MatchingCertificate& certificate);
+
 /// Checks a min_cost_maximum_matching result: rebuilds the doubled graph H and its perfect
 /// matching M ∪ M' ∪ {v–v' : v free in M} from `matching` (see min_cost_matching.hpp), checks
 /// that `unmatched_cost` is at least 1 + ν̄·(max(0, max cost) − min(0, min cost)), ν̄ the
