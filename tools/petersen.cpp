@@ -93,7 +93,7 @@ int render(const RenderArgs& args) {
 }
 
 struct QuadArgs {
-  std::string input, output, algorithm = "auto", augment = "local", objective = "pairs", stats_json,
+  std::string input, output, algorithm = "auto", augment = "local", objective = "quads", stats_json,
                              render;
   std::vector<double> view;
   std::uint32_t render_width = 800, render_height = 800;
@@ -101,6 +101,7 @@ struct QuadArgs {
   std::uint32_t threads = 0;
   bool all_quad = false, keep_polygons = false;
   std::optional<double> sharp_angle, max_corner_deviation;
+  double triangle_cost = kDefaultTriangleCost, flow_weight = kDefaultFlowWeight;
   std::string keep_edges;
   std::vector<std::string> cross;
   std::string memory_limit;
@@ -123,6 +124,12 @@ int quad(const QuadArgs& args) {
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  if (*objective != Objective::pairs && *algorithm != Algorithm::automatic) {
+    throw CLI::ValidationError(
+        "--algorithm", "chooses how --objective pairs pairs, and --objective " + args.objective +
+                           " pairs by the minimum-cost matching: add "
+                           "--objective pairs");
+  }
   mesh_format_of(args.output);  // an unknown output format fails before any work
   std::vector<CutCause> cross;
   for (const std::string& name : args.cross) {
@@ -148,6 +155,8 @@ int quad(const QuadArgs& args) {
   report.options.all_quad = args.all_quad;
   report.options.keep_polygons = args.keep_polygons;
   report.options.objective = *objective;
+  report.options.triangle_cost = args.triangle_cost;
+  report.options.flow_weight = args.flow_weight;
   report.options.peer = &lemon_peer::maximum_matching;
   report.options.cross = cross;
   report.options.threads = args.threads;
@@ -190,16 +199,17 @@ int quad(const QuadArgs& args) {
     options.width = args.render_width;
     options.height = args.render_height;
     options.first_added_vertex = input_vertices;
-    options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
-                           (report.options.objective == Objective::quality
-                                ? std::string("min-cost (objective quality)")
-                                : std::string(to_string(report.options.algorithm))) +
-                           (args.all_quad ? ", all quads" : ""),
-                       std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) +
-                           " pairs, " + std::to_string(s.triangles_left) + " triangles left, " +
-                           std::to_string(s.polygons_kept) + " polygons kept, " +
-                           std::to_string(s.added_vertices) + " vertices added",
-                       describe(quality_figures(quad_costs(result.mesh)))};
+    options.caption = {
+        std::filesystem::path(args.input).filename().string() + " by " +
+            (report.options.objective != Objective::pairs
+                 ? "min-cost (objective " + std::string(to_string(report.options.objective)) + ")"
+                 : std::string(to_string(report.options.algorithm))) +
+            (args.all_quad ? ", all quads" : ""),
+        std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) + " pairs, " +
+            std::to_string(s.triangles_left) + " triangles left, " +
+            std::to_string(s.polygons_kept) + " polygons kept, " +
+            std::to_string(s.added_vertices) + " vertices added",
+        describe(quality_figures(quad_costs(result.mesh)))};
     render_mesh(result.mesh, args.render, options);
   }
   return 0;
@@ -287,8 +297,21 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
       ->capture_default_str();
   quad_cmd
       ->add_option("--objective", quad_args.objective,
-                   "pairs (any maximum pairing, by --algorithm) or quality (the exact "
-                   "minimum-cost pairing by quad shape, certified)")
+                   "quads (the exact least-cost pairing by quad shape and edge flow, leaving a "
+                   "triangle where pairing it costs more than --triangle-cost; certified), "
+                   "pairs (any maximum pairing, by --algorithm: fastest) or quality (the exact "
+                   "maximum pairing of least quad shape cost, certified)")
+      ->capture_default_str();
+  quad_cmd
+      ->add_option("--triangle-cost", quad_args.triangle_cost,
+                   "--objective quads: what leaving a triangle costs, in degrees of quad cost "
+                   "(higher pairs more)")
+      ->check(finite_in(0, petersen::kMaxTriangleCost))
+      ->capture_default_str();
+  quad_cmd
+      ->add_option("--flow-weight", quad_args.flow_weight,
+                   "--objective quads: degrees of shape per degree of edge flow (0: shape alone)")
+      ->check(finite_in(0, petersen::kMaxFlowWeight))
       ->capture_default_str();
   quad_cmd
       ->add_option("--sharp-angle", quad_args.sharp_angle,

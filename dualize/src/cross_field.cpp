@@ -39,8 +39,7 @@ Frame frame_of(const PolygonMesh& mesh, std::span<const VertexId> t) {
 }
 
 // The angle of side k (corner k to corner k + 1) in the triangle's frame.
-double side_angle(const PolygonMesh& mesh, std::span<const VertexId> t, const Frame& frame,
-                  int k) {
+double side_angle(const PolygonMesh& mesh, std::span<const VertexId> t, const Frame& frame, int k) {
   const vec3::Vec3 d = vec3::sub(mesh.positions[t[(k + 1) % 3]], mesh.positions[t[k]]);
   return std::atan2(vec3::dot(d, frame.y), vec3::dot(d, frame.x));
 }
@@ -60,7 +59,8 @@ SideDirections side_directions(const PairableGraph& graph, const PolygonMesh& me
     const Frame frame = frame_of(mesh, corners);
     sides.valid[t] = frame.valid;
     if (!frame.valid) continue;
-    for (int k = 0; k < 3; ++k) sides.power[t][k] = std::polar(1.0, 4 * side_angle(mesh, corners, frame, k));
+    for (int k = 0; k < 3; ++k)
+      sides.power[t][k] = std::polar(1.0, 4 * side_angle(mesh, corners, frame, k));
   }
   return sides;
 }
@@ -102,12 +102,14 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
     target[t] = lambda * q;
   }
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    const NodeId s = graph.edge_ends[2 * std::size_t{e}], t = graph.edge_ends[2 * std::size_t{e} + 1];
+    const NodeId s = graph.edge_ends[2 * std::size_t{e}],
+                 t = graph.edge_ends[2 * std::size_t{e} + 1];
     if (!sides.valid[s] || !sides.valid[t]) continue;
     // The shared edge's direction is side i of s and side j of t (opposite or equal ways: a half
     // turn is a whole turn in the fourth power), so a cross at angle β in t's frame is at
     // β + α_s − α_t in s's: r_st = e^{4i(α_s − α_t)}.
-    const Complex r = sides.power[s][side_of(graph, s, e)] * std::conj(sides.power[t][side_of(graph, t, e)]);
+    const Complex r =
+        sides.power[s][side_of(graph, s, e)] * std::conj(sides.power[t][side_of(graph, t, e)]);
     entries.emplace_back(s, t, -r);
     entries.emplace_back(t, s, -std::conj(r));
     diagonal[s] += 1;
@@ -132,10 +134,10 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
   return field;
 }
 
-HugeVector<double> side_misalignment(const PairableGraph& graph, const PolygonMesh& mesh,
-                                     const CrossField& field) {
+HugeVector<double> side_alignment(const PairableGraph& graph, const PolygonMesh& mesh,
+                                  const CrossField& field) {
   const SideDirections sides = side_directions(graph, mesh);
-  HugeVector<double> misalignment(3 * std::size_t{graph.node_count}, 0.0);
+  HugeVector<double> alignment(3 * std::size_t{graph.node_count}, 0.0);
   for (NodeId t = 0; t < graph.node_count; ++t) {
     const Complex u = field.cross[t];
     const double confidence = std::min(1.0, std::abs(u));
@@ -143,25 +145,23 @@ HugeVector<double> side_misalignment(const PairableGraph& graph, const PolygonMe
     const Complex towards = u / std::abs(u);
     for (int k = 0; k < 3; ++k) {
       // cos 4δ for δ the angle to the nearest of the cross's four directions, δ in [0, 45°].
-      const double cosine = std::clamp(std::real(sides.power[t][k] * std::conj(towards)), -1.0, 1.0);
-      misalignment[3 * std::size_t{t} + k] =
-          confidence * std::acos(cosine) / 4 * (180 / std::numbers::pi);
+      const double cosine =
+          std::clamp(std::real(sides.power[t][k] * std::conj(towards)), -1.0, 1.0);
+      const double degrees = std::acos(cosine) / 4 * (180 / std::numbers::pi);
+      alignment[3 * std::size_t{t} + k] = confidence * (45 - degrees);
     }
   }
-  return misalignment;
+  return alignment;
 }
 
 HugeVector<double> pairable_edge_flow(const PairableGraph& graph,
-                                      std::span<const double> misalignment) {
+                                      std::span<const double> alignment) {
   HugeVector<double> flow(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    double sum = 0;
-    for (int end = 0; end < 2; ++end) {
-      const NodeId t = graph.edge_ends[2 * std::size_t{e} + end];
-      const int shared = side_of(graph, t, e);
-      for (int k = 0; k < 3; ++k) sum += k == shared ? 0 : misalignment[3 * std::size_t{t} + k];
-    }
-    flow[e] = sum;
+    const NodeId s = graph.edge_ends[2 * std::size_t{e}],
+                 t = graph.edge_ends[2 * std::size_t{e} + 1];
+    flow[e] = alignment[3 * std::size_t{s} + side_of(graph, s, e)] +
+              alignment[3 * std::size_t{t} + side_of(graph, t, e)];
   }
   return flow;
 }

@@ -43,7 +43,7 @@ Augment augment_of(const std::string& name) {
 
 Objective objective_of(const std::string& name) {
   if (auto o = parse_objective(name)) return *o;
-  throw py::value_error("unknown objective '" + name + "': pairs or quality");
+  throw py::value_error("unknown objective '" + name + "': quads, pairs or quality");
 }
 
 PolygonMesh mesh_from(const py::handle& V, const py::handle& F, const py::handle& attributes) {
@@ -109,7 +109,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
                           const std::string& objective, std::optional<double> sharp_angle,
                           const py::handle& keep_edges, std::optional<double> max_corner_deviation,
                           const py::handle& attributes, const py::handle& cross,
-                          std::uint32_t threads, bool keep_polygons) {
+                          std::uint32_t threads, bool keep_polygons, double triangle_cost,
+                          double flow_weight) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -129,6 +130,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.all_quad = all_quad;
   options.keep_polygons = keep_polygons;
   options.objective = objective_of(objective);
+  options.triangle_cost = triangle_cost;
+  options.flow_weight = flow_weight;
   options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
   options.max_corner_deviation = max_corner_deviation;
@@ -342,7 +345,8 @@ PYBIND11_MODULE(_petersen, m) {
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
         py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"),
         py::arg("attributes"), py::arg("cross"), py::arg("threads"),
-        py::arg("keep_polygons") = false);
+        py::arg("keep_polygons") = false, py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("flow_weight") = kDefaultFlowWeight);
   m.def("read_mesh", &read_mesh_py, py::arg("path"));
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
         py::arg("attributes"));

@@ -23,9 +23,14 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   if (!run.input.empty()) add("input", run.input);
   if (!run.output.empty()) add("output", run.output);
   const Algorithm a = options.algorithm;
-  const bool quality = options.objective == Objective::quality;
+  // Both cost objectives run the minimum-cost matching, not the algorithm.
+  const bool quality = options.objective != Objective::pairs;
   add("objective", std::string(to_string(options.objective)));
   add("algorithm", quality ? std::string("min-cost") : std::string(to_string(a)));
+  if (options.objective == Objective::quads) {
+    d("triangle_cost", options.triangle_cost);
+    d("flow_weight", options.flow_weight);
+  }
   if (!quality && (a == Algorithm::automatic || a == Algorithm::sg || a == Algorithm::ps ||
                    a == Algorithm::lrs)) {
     add("augment", std::string(to_string(options.augment)));
@@ -49,6 +54,10 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("inconsistent_edges", s.inconsistent_edges);
   if (run.load_seconds) d("load_seconds", *run.load_seconds);
   d("check_seconds", s.check_seconds);
+  if (options.objective == Objective::quads && options.flow_weight > 0) {
+    d("field_seconds", s.field_seconds);
+    u("field_iterations", s.field_iterations);
+  }
   d("dual_seconds", s.dual_seconds);
   d("initial_seconds", s.matching.initial_seconds);
   d("initial_paired_percent",

@@ -30,12 +30,12 @@ TEST(CrossField, FollowsTheQuadsOfATriangulatedGrid) {
   const CrossField field = cross_field(graph, mesh);
   ASSERT_EQ(field.cross.size(), graph.node_count);
   EXPECT_LT(field.residual, 1e-5);
-  const HugeVector<double> misalignment = side_misalignment(graph, mesh, field);
+  const HugeVector<double> alignment = side_alignment(graph, mesh, field);
   double side_sum = 0, diagonal_sum = 0;
   int sides = 0, diagonals = 0;
   for (NodeId t = 0; t < graph.node_count; ++t) {
     for (int k = 0; k < 3; ++k) {
-      const double m = misalignment[3 * t + k];
+      const double m = alignment[3 * t + k];
       ASSERT_GE(m, 0);
       ASSERT_LE(m, 45 + 1e-9);
       if (is_diagonal(mesh, t, k)) {
@@ -48,30 +48,30 @@ TEST(CrossField, FollowsTheQuadsOfATriangulatedGrid) {
     }
   }
   ASSERT_EQ(2 * diagonals, sides);
-  EXPECT_LT(side_sum / sides, 8.0);
-  EXPECT_GT(diagonal_sum / diagonals, 30.0);
+  EXPECT_GT(side_sum / sides, 37.0);
+  EXPECT_LT(diagonal_sum / diagonals, 15.0);
 }
 
 TEST(CrossField, FlowOfAPairIsLeastAcrossTheDiagonal) {
   const PolygonMesh mesh = jittered_grid({.nx = 16, .ny = 16, .jitter = 0.05, .seed = 5});
   const PairableGraph graph = build_pairable_graph(mesh);
   const HugeVector<double> flow =
-      pairable_edge_flow(graph, side_misalignment(graph, mesh, cross_field(graph, mesh)));
+      pairable_edge_flow(graph, side_alignment(graph, mesh, cross_field(graph, mesh)));
   ASSERT_EQ(flow.size(), graph.edge_count());
-  // Each square's two triangles (faces 2q, 2q + 1) share its diagonal: that pair's quad has the
-  // square's four sides, every other pair's quad two diagonals among its sides.
+  // Each square's two triangles (faces 2q, 2q + 1) share its diagonal, which runs across the field;
+  // every other pair would remove a side of a square, which runs along it.
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId a = graph.edge_ends[2 * e], b = graph.edge_ends[2 * e + 1];
     if (a / 2 == b / 2) {
-      EXPECT_LT(flow[e], 20.0) << "square " << a / 2;
+      EXPECT_LT(flow[e], 25.0) << "square " << a / 2;
     } else {
-      EXPECT_GT(flow[e], 50.0) << "triangles " << a << ", " << b;
+      EXPECT_GT(flow[e], 65.0) << "triangles " << a << ", " << b;
     }
   }
 }
 
 TEST(CrossField, DoesNotDependOnTheMeshsPlacement) {
-  // A rigid motion moves the frames with the mesh: the misalignment of every side is the same.
+  // A rigid motion moves the frames with the mesh: the alignment of every side is the same.
   const PolygonMesh mesh = jittered_grid({.nx = 10, .ny = 8, .jitter = 0.2, .seed = 9});
   PolygonMesh moved = mesh;
   const double c = std::cos(0.7), s = std::sin(0.7);
@@ -79,8 +79,8 @@ TEST(CrossField, DoesNotDependOnTheMeshsPlacement) {
     p = {c * p[0] - s * p[2] + 3, p[1] - 2, s * p[0] + c * p[2] + 1};
   }
   const PairableGraph graph = build_pairable_graph(mesh);
-  const HugeVector<double> before = side_misalignment(graph, mesh, cross_field(graph, mesh));
-  const HugeVector<double> after = side_misalignment(graph, moved, cross_field(graph, moved));
+  const HugeVector<double> before = side_alignment(graph, mesh, cross_field(graph, mesh));
+  const HugeVector<double> after = side_alignment(graph, moved, cross_field(graph, moved));
   ASSERT_EQ(before.size(), after.size());
   for (std::size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(before[i], after[i], 1e-6) << i;
 }
@@ -90,10 +90,10 @@ TEST(CrossField, DegenerateTrianglesHaveNoCross) {
   mesh.positions[5] = mesh.positions[6];  // two triangles at vertex 5 lose their area
   const PairableGraph graph = build_pairable_graph(mesh);
   const CrossField field = cross_field(graph, mesh);
-  const HugeVector<double> misalignment = side_misalignment(graph, mesh, field);
+  const HugeVector<double> alignment = side_alignment(graph, mesh, field);
   for (NodeId t = 0; t < graph.node_count; ++t) {
     ASSERT_TRUE(std::isfinite(std::abs(field.cross[t])));
-    for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(misalignment[3 * t + k]));
+    for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(alignment[3 * t + k]));
   }
 }
 

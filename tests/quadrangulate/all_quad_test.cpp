@@ -121,7 +121,7 @@ TEST(AllQuad, APrismsCapsAreJoinedThroughItsQuads) {
     SCOPED_TRACE(rows);
     const PolygonMesh mesh = prism(rows);
     for (Objective objective : {Objective::pairs, Objective::quality}) {
-      const QuadOptions options{.all_quad = true, .objective = objective};
+      const QuadOptions options{.objective = objective, .all_quad = true};
       const QuadResult result = quadrangulate(mesh, options);
       EXPECT_EQ(result.stats.triangles_left, 2u);
       expect_all_quad(mesh, result, options);
@@ -248,7 +248,7 @@ TEST(AllQuad, ThresholdRunOnASharedMesh) {
   mesh.attributes = {};
   for (Objective objective : {Objective::pairs, Objective::quality}) {
     const QuadOptions options{
-        .all_quad = true, .objective = objective, .max_corner_deviation = 30.0};
+        .objective = objective, .all_quad = true, .max_corner_deviation = 30.0};
     const QuadResult result = quadrangulate(mesh, options);
     EXPECT_GT(result.stats.triangles_left, 100u);
     expect_all_quad(mesh, result, options);
@@ -263,9 +263,9 @@ TEST(AllQuad, ThresholdRunOnASharedMesh) {
 // says so), the counts consistent and the T-join certified.
 RC_GTEST_PROP(AllQuad, EveryMeshAllQuadsOrAParityProof, ()) {
   const PolygonMesh mesh = *testing::mixed_meshes();
-  const QuadOptions options{.all_quad = true,
-                            .keep_polygons = *rc::gen::arbitrary<bool>(),
-                            .objective = *rc::gen::element(Objective::pairs, Objective::quality)};
+  const QuadOptions options{.objective = *rc::gen::element(Objective::pairs, Objective::quality),
+                            .all_quad = true,
+                            .keep_polygons = *rc::gen::arbitrary<bool>()};
   QuadResult result;
   try {
     result = quadrangulate(mesh, options);

@@ -7,18 +7,21 @@
 // with an alignment term). A cross on triangle t is a complex number u_t in t's own frame whose
 // argument is four times the cross's angle, so the four directions of a cross are one value. It
 // minimises
-//   sum over pairable edges {s, t} of |u_s − r_st u_t|²  +  λ · sum over triangles t of |u_t − q_t|²
+//   sum over pairable edges {s, t} of |u_s − r_st u_t|²  +  λ · sum over triangles t of |u_t −
+//   q_t|²
 // where r_st turns t's frame into s's across their shared edge (the discrete Levi-Civita
-// connection, raised to the fourth power), and q_t is what the triangle's own sides say: three times
-// the mean of e^{4iα} over its sides at angles α (a cut side: boundary, sharp fold, seam, polygon
-// border, counting kFeatureSideWeight times), at most 1 in modulus, so that a right isosceles
-// triangle says 1 and an equilateral one nothing. On a triangulated quad mesh two of each triangle's three sides
-// are quad sides at right angles, which agree in the fourth power, while the diagonal near 45°
-// points the other way: the smoothed field follows the quads' edge loops. The field is fixed
-// before any pairing, so each pair's flow cost is its own and the minimum-cost matching stays exact.
+// connection, raised to the fourth power), and q_t is what the triangle's own sides say: three
+// times the mean of e^{4iα} over its sides at angles α (a cut side: boundary, sharp fold, seam,
+// polygon border, counting kFeatureSideWeight times), at most 1 in modulus, so that a right
+// isosceles triangle says 1 and an equilateral one nothing. On a triangulated quad mesh two of each
+// triangle's three sides are quad sides at right angles, which agree in the fourth power, while the
+// diagonal near 45° points the other way: the smoothed field follows the quads' edge loops. The
+// field is fixed before any pairing, so each pair's flow cost is its own and the minimum-cost
+// matching stays exact.
 
 #include <complex>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
@@ -58,15 +61,17 @@ struct CrossField {
 CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
                        const CrossFieldOptions& options = {});
 
-/// Per node t and side k (index 3t + k): the angle in degrees, in [0, 45], between side k and the
-/// nearest direction of t's cross, weighted by the cross's confidence min(1, |u_t|): 0 where the
-/// side runs along the field, 45 where it runs diagonally across it. O(n).
-HugeVector<double> side_misalignment(const PairableGraph& graph, const PolygonMesh& mesh,
-                                     const CrossField& field);
+/// Per node t and side k (index 3t + k): how closely side k runs along t's cross, in degrees:
+/// 45 − δ for δ in [0, 45] the angle between the side and the cross's nearest direction, weighted
+/// by the cross's confidence min(1, |u_t|). 45 where the side runs along the field (a quad side),
+/// 0 where it runs diagonally across it (a quad's diagonal) or where the field says nothing. O(n).
+HugeVector<double> side_alignment(const PairableGraph& graph, const PolygonMesh& mesh,
+                                  const CrossField& field);
 
-/// For each edge of `graph`, the flow cost of the quad its two triangles make: the misalignment of
-/// the quad's four sides (each triangle's two sides other than the shared one), summed. O(m).
+/// For each edge of `graph`, the flow cost of removing it to pair its two triangles: its alignment
+/// (side_alignment) in each of them, summed, in [0, 90]. Removing a quad's diagonal costs nothing;
+/// removing a side that an edge loop runs along costs up to 90. O(m).
 HugeVector<double> pairable_edge_flow(const PairableGraph& graph,
-                                      std::span<const double> misalignment);
+                                      std::span<const double> alignment);
 
 }  // namespace petersen
