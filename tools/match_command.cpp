@@ -232,6 +232,7 @@ int run_match(const MatchArgs& args) {
     write_stats_json({args, format ? *format : graph_format_of(args.input), graph, matched,
                       cheapest, size, perfect, read_seconds, cost_seconds, match_seconds,
                       write_seconds, total_seconds, write});
+    std::printf("written     %s\n", args.stats_json.c_str());
   }
   if (!write) {
     std::fprintf(stderr, "petersen: %s has no perfect matching; nothing written to %s\n",

@@ -180,6 +180,7 @@ int quad(const QuadArgs& args) {
   print_summary(stdout, report);
   if (!args.stats_json.empty()) {
     write_printed(args.stats_json, [&](std::FILE* out) { write_json(out, report); });
+    std::printf("written     %s\n", args.stats_json.c_str());
   }
   if (!args.render.empty()) {
     const QuadStats& s = result.stats;
@@ -288,6 +289,7 @@ PolygonMesh generated_mesh(const GenerateArgs& args) {
 
 int generate(const GenerateArgs& args) {
   if (args.kind == "streamed-plate") return generate_streamed_plate(args.output, args.triangles);
+  mesh_format_of(args.output);  // an unknown format fails before any work
   check_grid_size(args);
   const PolygonMesh mesh = generated_mesh(args);
   write_mesh(args.output, mesh);
