@@ -432,8 +432,10 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
   gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")
       ->required()
       ->check(in_existing_folder());
-  gen_cmd->add_option("--holes-x", gen_args.holes_x)->capture_default_str();
-  gen_cmd->add_option("--holes-y", gen_args.holes_y)->capture_default_str();
+  gen_cmd->add_option("--holes-x", gen_args.holes_x, "plate: through-holes along x")
+      ->capture_default_str();
+  gen_cmd->add_option("--holes-y", gen_args.holes_y, "plate: through-holes along y")
+      ->capture_default_str();
   gen_cmd
       ->add_option("--subdivision", gen_args.subdivision,
                    "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
@@ -447,7 +449,11 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
       ->capture_default_str();
   gen_cmd->add_option("--flips", gen_args.flips, "random edge flips, for irregularity")
       ->capture_default_str();
-  gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
+  gen_cmd
+      ->add_option("--seed", gen_args.seed,
+                   "seed of the random choices (splits, flips, jitter, diagonals, holes, fins, "
+                   "pinches, flipped faces)")
+      ->capture_default_str();
   gen_cmd
       ->add_option("--kind", gen_args.kind,
                    "plate (a voxel plate with holes), trefoil (a tube round a trefoil knot, "

@@ -66,7 +66,9 @@ void print_summary(std::FILE* out, const RunReport& r) {
   if (s.lrs_fallback_components > 0) {
     // The default algorithm takes what lrs refuses (quadrangulate.hpp); the reason is the first
     // component's.
-    std::fprintf(out, "            %" PRIu64 " closed component%s paired by auto, not lrs: %s\n",
+    std::fprintf(out,
+                 "            lrs refused %" PRIu64
+                 " closed component%s (paired by auto instead): %s\n",
                  s.lrs_fallback_components, s.lrs_fallback_components == 1 ? "" : "s",
                  s.lrs_fallback_reason.c_str());
   }

@@ -73,6 +73,16 @@ std::vector<std::string> generated_meshes() {
           "generated/flat-shaded-holed", "generated/flat-shaded-quad-dominant"};
 }
 
+// Every 97th side of the faces: kept edges spread over the mesh.
+std::vector<std::array<VertexId, 2>> spread_edges(const PolygonMesh& mesh) {
+  std::vector<std::array<VertexId, 2>> edges;
+  for (FaceId f = 0; f < mesh.face_count(); f += 97) {
+    const auto c = mesh.face(f);
+    edges.push_back({c[0], c[1]});
+  }
+  return edges;
+}
+
 class AllQuadOnEveryMesh : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(AllQuadOnEveryMesh, EveryOptionSetChecked) {

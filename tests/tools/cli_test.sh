@@ -244,6 +244,9 @@ grep -q "^written     $work/t.png$" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: no written line for --render"; cat "$work/out"; }
 grep -q "^cut edges   0 of 6528$" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: cut edges line"; cat "$work/out"; }
+check "lrs on a Klein bottle" "$petersen" quad "$work/k-klein.obj" "$work/kq.obj" --algorithm lrs
+grep -q "^            lrs refused 1 closed component (paired by auto instead): not a closed surface: inconsistently oriented edge" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: the lrs refusal line"; cat "$work/out"; }
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
