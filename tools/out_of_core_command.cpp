@@ -129,8 +129,8 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
                                              .part_triangles = args.part_triangles,
                                              .augment = *augment,
                                              .threads = args.threads});
-  std::printf("%s: %llu triangles in %llu parts of %llu, out of core\n", args.input.c_str(),
-              (unsigned long long)s.triangles, (unsigned long long)s.parts,
+  std::printf("%s: %llu triangles in %llu part%s of %llu, out of core\n", args.input.c_str(),
+              (unsigned long long)s.triangles, (unsigned long long)s.parts, s.parts == 1 ? "" : "s",
               (unsigned long long)s.part_triangles);
   std::printf(
       "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "

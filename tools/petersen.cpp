@@ -239,6 +239,13 @@ std::array<std::uint32_t, 2> grid_size(const GenerateArgs& args) {
 void check_grid_size(const GenerateArgs& args) {
   const auto [nx, ny] = grid_size(args);
   const std::string size = std::to_string(nx) + " x " + std::to_string(ny);
+  const bool grid = args.kind == "klein" || args.kind == "trefoil" || args.kind == "open-grid" ||
+                    args.kind.starts_with("jittered-");
+  if (!grid && (args.nx || args.ny)) {
+    throw CLI::ValidationError("--nx, --ny", args.kind +
+                                                 " has no grid to size: --nx and --ny "
+                                                 "are for klein, trefoil and the grids");
+  }
   const bool closed = args.kind == "klein" || args.kind == "trefoil";
   if (closed && (nx < 3 || ny < 3)) {
     throw CLI::ValidationError("--nx, --ny",

@@ -180,10 +180,11 @@ refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.ob
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 
 # generate --kind: V and F of the OFF header are those of the generator's grid.
-for spec in "klein 20 40" "open-grid 30 40" "projective 21 40"; do
-  read -r kind vertices faces <<<"$spec"
-  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" --nx 5 \
-    --ny 4 --subdivision 1
+for spec in "klein 20 40 --nx 5 --ny 4" "open-grid 30 40 --nx 5 --ny 4" \
+  "projective 21 40 --subdivision 1"; do
+  read -r kind vertices faces size <<<"$spec"
+  # shellcheck disable=SC2086 # $size is flags
+  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" $size
   header=$(sed -n 2p "$work/$kind.off")
   [ "$header" = "$vertices $faces 0" ] || {
     failed=$((failed + 1)); echo "FAILED: generate --kind $kind wrote header $header"; }
@@ -235,6 +236,8 @@ refuses "--part-triangles alone" "give --memory-limit" \
 for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus; do
   check "generate --kind $kind by default" "$petersen" generate "$work/k-$kind.obj" --kind "$kind"
 done
+refuses "--nx for a kind without a grid" "plate has no grid to size" \
+  "$petersen" generate "$work/x.obj" --nx 5
 refuses "a torus too thin" "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny" \
   "$petersen" generate "$work/x.obj" --kind jittered-torus --nx 20 --ny 10
 # The summary reads as a success: no dangling colon, a written line for each file.
