@@ -107,10 +107,41 @@ struct QuadArgs {
   std::vector<std::string> cross;
   std::string memory_limit;
   std::uint64_t part_triangles = 0;
+  std::vector<std::string> given;  // the flags on the command line (given_flags)
 };
+
+// The flags given on `command`'s command line, by their long names.
+std::vector<std::string> given_flags(const CLI::App& command) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() > 0 && !option->get_lnames().empty()) {
+      names.push_back("--" + option->get_lnames().front());
+    }
+  }
+  return names;
+}
+
+// The out-of-core conversion pairs by the default algorithm and writes the mesh and its stats:
+// any other flag would be ignored there, so it is refused.
+void refuse_out_of_core_flags(const std::vector<std::string>& given) {
+  std::string refused;
+  for (const std::string& flag : given) {
+    if (flag != "--memory-limit" && flag != "--part-triangles" && flag != "--augment" &&
+        flag != "--threads" && flag != "--stats-json") {
+      refused += (refused.empty() ? "" : ", ") + flag;
+    }
+  }
+  if (!refused.empty()) {
+    throw CLI::ValidationError("--memory-limit",
+                               "the out-of-core conversion takes --part-triangles, --augment, "
+                               "--threads and --stats-json only, not " +
+                                   refused);
+  }
+}
 
 int quad(const QuadArgs& args) {
   if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
+    refuse_out_of_core_flags(args.given);
     return quad_out_of_core_command({.input = args.input,
                                      .output = args.output,
                                      .augment = args.augment,
@@ -531,7 +562,10 @@ int main(int argc, char** argv) {
   }
   try {
     if (info_cmd->parsed()) return info(info_path);
-    if (quad_cmd->parsed()) return quad(quad_args);
+    if (quad_cmd->parsed()) {
+      quad_args.given = given_flags(*quad_cmd);
+      return quad(quad_args);
+    }
     if (gen_cmd->parsed()) return generate(gen_args);
     if (render_cmd->parsed()) return render(render_args);
     if (match_cmd->parsed()) return run_match(match_args);

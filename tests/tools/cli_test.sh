@@ -230,12 +230,15 @@ for command in "render $example" "generate" "match $work/g.txt" "quad $example";
 done
 refuses "--memory-limit on an OFF" "out-of-core conversion reads a binary PLY" \
   "$petersen" quad "$example" "$work/x.ply" --memory-limit 1G
+refuses "--memory-limit with a flag out of core cannot honour" "not --objective, --all-quad" \
+  "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --all-quad
 refuses "--part-triangles alone" "give --memory-limit" \
   "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000
 # Every generator kind works with its defaults.
 for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus; do
   check "generate --kind $kind by default" "$petersen" generate "$work/k-$kind.obj" --kind "$kind"
 done
+check "generate a trefoil PLY" "$petersen" generate "$work/k-trefoil.ply" --kind trefoil
 refuses "--nx for a kind without a grid" "plate has no grid to size" \
   "$petersen" generate "$work/x.obj" --nx 5
 refuses "a torus too thin" "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny" \
