@@ -2,10 +2,10 @@
 """docs/cli.md checked against the CLI itself:
 cli_reference_test.py PETERSEN CLI_MD EXAMPLE_MESH [--without TEXT].
 
-Every option `petersen SUB --help` lists must appear as `--name` in the section of docs/cli.md on
-SUB (from its `## \\`petersen SUB` heading to the next `## `). Every exit code measured below, by
-running the binary on each kind of bad command line of each subcommand, must have a row in the
-exit-code table (`| CODE | when | subcommands |`) that names the subcommand or says "every
+Every option `petersen SUB --help` lists must have a row of its own in an option table of the
+section of docs/cli.md on SUB (from its `## \\`petersen SUB` heading to the next `## `): `--name`
+in the row's first cell. Every exit code measured below, by running the binary on each kind of
+bad command line of each subcommand, must have a row in the exit-code table (`| CODE | when | subcommands |`) that names the subcommand or says "every
 subcommand". Prints each miss and exits 1 if there is one. --without TEXT checks docs/cli.md
 with the lines containing TEXT left out: how ctest shows that the check fails when a line goes."""
 
@@ -38,9 +38,10 @@ for sub in ["info", "quad", "generate", "match", "render"]:
     body = section(sub)
     if not body:
         misses.append(f"docs/cli.md has no section `petersen {sub}`")
+    first_cells = "\n".join(re.findall(r"^\|([^|]*)\|", body, re.M))
     for option in help_options(sub):
-        if not re.search(r"`" + re.escape(option) + r"(?![\w-])", body):
-            misses.append(f"petersen {sub} {option}: not in docs/cli.md's section on {sub}")
+        if not re.search(r"`" + re.escape(option) + r"(?![\w-])", first_cells):
+            misses.append(f"petersen {sub} {option}: no row in docs/cli.md's table of {sub}")
 
 rows = {}
 for code, subcommands in re.findall(r"^\| (\d+) \|[^|]*\|([^|]*)\|$", doc, re.M):
