@@ -63,8 +63,8 @@ void draw_text(cairo_t* cr, double x, double y, const std::string& text) {
 }
 
 // The colour bar of the quad costs, 0° at the bottom up to `top` degrees (90, or the worst quad's
-// cost rounded up to 30° when a quad is non-convex, so that the bar covers every colour drawn),
-// then the swatches of the other faces.
+// cost rounded up to 30° when a quad is non-convex, so that the bar covers every colour drawn;
+// the convex 0° to 90° then keep two thirds of its height), then the swatches of the other faces.
 void draw_legend(cairo_t* cr, double x, double y, double height, double top_degrees, bool triangles,
                  bool polygons, bool added) {
   const double bar_h = std::max(40.0, height - 90), w = 18;
@@ -73,18 +73,24 @@ void draw_legend(cairo_t* cr, double x, double y, double height, double top_degr
   draw_text(cr, x, y + 10, "worst corner");
   const double top = y + 26;
   const int degrees = int(top_degrees);
-  auto at = [&](double deg) { return top + bar_h * (top_degrees - deg) / top_degrees; };
+  const double convex_h = degrees > 90 ? bar_h * 2 / 3 : bar_h;
+  auto at = [&](double deg) {  // the height of `deg` on the bar, from the picture's top
+    return deg <= 90 ? top + bar_h - convex_h * deg / 90
+                     : top + (bar_h - convex_h) * (top_degrees - deg) / (top_degrees - 90);
+  };
   for (int i = 0; i < degrees; ++i) {  // one band per degree
     set_colour(cr, quality_colour(i + 0.5));
-    cairo_rectangle(cr, x, at(i + 1), w, bar_h / top_degrees + 0.5);
+    cairo_rectangle(cr, x, at(i + 1), w, at(i) - at(i + 1) + 0.5);
     cairo_fill(cr);
   }
   set_colour(cr, {0, 0, 0});
-  const int step = degrees > 90 ? 45 : 30;
-  for (int deg = 0; deg <= degrees; deg += step) {
+  for (int deg = 0; deg <= 90; deg += 30) {
     draw_text(cr, x + w + 4, at(deg) + 4, std::to_string(deg) + "\xc2\xb0");
   }
-  if (degrees > 90) draw_text(cr, x + w + 4, at(90) - 12, "non-convex");
+  if (degrees > 90) {
+    draw_text(cr, x + w + 4, at(degrees) + 4, std::to_string(degrees) + "\xc2\xb0");
+    draw_text(cr, x + w + 4, (at(90) + at(degrees)) / 2 + 4, "non-convex");
+  }
   double swatch_y = top + bar_h + 14;
   auto swatch = [&](const Rgb& colour, const char* label) {
     set_colour(cr, colour);
