@@ -69,8 +69,8 @@ std::vector<std::string> shared_meshes() {
 }
 
 std::vector<std::string> generated_meshes() {
-  return {"generated/quad-dominant", "generated/quad-dominant-torus",
-          "generated/flat-shaded-holed", "generated/flat-shaded-quad-dominant"};
+  return {"generated/quad-dominant", "generated/quad-dominant-torus", "generated/flat-shaded-holed",
+          "generated/flat-shaded-quad-dominant"};
 }
 
 // Every 97th side of the faces: kept edges spread over the mesh.
