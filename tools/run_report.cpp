@@ -48,11 +48,11 @@ void print_summary(std::FILE* out, const RunReport& r) {
                s.faces_in, s.triangles, s.polygons_kept, s.vertices);
   std::fprintf(out, "components  %" PRIu64 " (%" PRIu64 " closed)\n", s.components,
                s.closed_components);
-  std::fprintf(out, "cut edges   %" PRIu64 " of %" PRIu64 ":", s.cuts.total(), s.mesh_edges);
-  for (int c = 0; c < kCutCauses; ++c) {
+  std::fprintf(out, "cut edges   %" PRIu64 " of %" PRIu64, s.cuts.total(), s.mesh_edges);
+  for (int c = 0, listed = 0; c < kCutCauses; ++c) {
     if (s.cuts.by_cause[c] > 0) {
-      std::fprintf(out, " %s %" PRIu64, std::string(to_string(CutCause(c))).c_str(),
-                   s.cuts.by_cause[c]);
+      std::fprintf(out, "%s %s %" PRIu64, listed++ == 0 ? ":" : ",",
+                   std::string(to_string(CutCause(c))).c_str(), s.cuts.by_cause[c]);
     }
   }
   const Algorithm a = r.options.algorithm;
@@ -66,8 +66,13 @@ void print_summary(std::FILE* out, const RunReport& r) {
                augments ? ", augment " : "",
                augments ? std::string(to_string(r.options.augment)).c_str() : "");
   if (s.lrs_fallback_components > 0) {
-    std::fprintf(out, "            %" PRIu64 " closed components by ps: lrs needs %s\n",
-                 s.lrs_fallback_components, s.lrs_fallback_reason.c_str());
+    // The default algorithm takes what lrs refuses (quadrangulate.hpp); the reason is the first
+    // component's.
+    std::fprintf(out,
+                 "            lrs refused %" PRIu64
+                 " closed component%s (paired by auto instead): %s\n",
+                 s.lrs_fallback_components, s.lrs_fallback_components == 1 ? "" : "s",
+                 s.lrs_fallback_reason.c_str());
   }
   std::fprintf(out, "load        %.4f s\n", r.load_seconds);
   std::fprintf(out, "check       %.4f s\n", s.check_seconds);
@@ -124,7 +129,7 @@ void print_summary(std::FILE* out, const RunReport& r) {
                  s.all_quad_certified ? ", certified" : ", not proved", s.split_quads,
                  s.split_quality_median, s.split_quality_p95, s.all_quad_seconds);
   }
-  std::fprintf(out, "write       %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
+  std::fprintf(out, "written     %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
   std::fprintf(out, "total       %.4f s\n", r.total_seconds);
 }
 

@@ -81,7 +81,7 @@ check "a threshold alone" "$petersen" quad "$work/trapezoid.off" "$work/mixed-t.
   --max-corner-deviation 1
 grep -q "^threshold .*--objective quality picks the cheapest" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: threshold hint"; cat "$work/out"; }
-refuses "--cross shape" "not a cut of the mesh's attributes" \
+refuses "--cross shape" "unknown value shape: one of uv_seam, normal_seam" \
   "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
 # A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
@@ -174,16 +174,17 @@ refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \
   --cross uv_seam,material,face_property
-refuses "--cross a cut of the structure" "not a cut of the mesh's attributes: boundary" \
+refuses "--cross a cut of the structure" "unknown value boundary: one of uv_seam" \
   "$petersen" quad "$work/open.off" "$work/x.off" --cross uv_seam,boundary
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 
 # generate --kind: V and F of the OFF header are those of the generator's grid.
-for spec in "klein 20 40" "open-grid 30 40" "projective 21 40"; do
-  read -r kind vertices faces <<<"$spec"
-  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" --nx 5 \
-    --ny 4 --subdivision 1
+for spec in "klein 20 40 --nx 5 --ny 4" "open-grid 30 40 --nx 5 --ny 4" \
+  "projective 21 40 --subdivision 1"; do
+  read -r kind vertices faces size <<<"$spec"
+  # shellcheck disable=SC2086 # $size is flags
+  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" $size
   header=$(sed -n 2p "$work/$kind.off")
   [ "$header" = "$vertices $faces 0" ] || {
     failed=$((failed + 1)); echo "FAILED: generate --kind $kind wrote header $header"; }
@@ -206,6 +207,52 @@ refuses "a picture that is not png or svg" "png or .svg" "$petersen" render "$ex
 refuses "quad --render to a jpg" "png or .svg" "$petersen" quad "$example" "$work/x.obj" \
   --render "$work/x.jpg"
 refuses "a view of three zeros" "view" "$petersen" render "$example" "$work/x.png" --view 0,0,0
+
+# Messages that help: the values of a bad enum listed (names taken in any case), the closest flag
+# or subcommand to a misspelt one, output folders checked before any work in every subcommand.
+check "an enum value in capitals" "$petersen" quad "$example" "$work/x.obj" --algorithm PS \
+  --objective Pairs --augment LOCAL
+refuses "a bad algorithm lists the algorithms" "one of auto, sg, ps, ds, gw, frink, lemon, lrs" \
+  "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
+refuses "a bad objective lists the objectives" "unknown value best: one of pairs, quality" \
+  "$petersen" quad "$example" "$work/x.obj" --objective best
+refuses "match lrs" "lrs works on meshes" "$petersen" match "$work/g.txt" "$work/m.txt" --algorithm lrs
+refuses "a bad graph format" "one of dimacs, edges" \
+  "$petersen" match "$work/g.txt" "$work/m.txt" --format graphml
+refuses "a bad generator kind" "one of plate, trefoil, klein" \
+  "$petersen" generate "$work/x.obj" --kind donut
+refuses "a misspelt flag" "did you mean --all-quad" "$petersen" quad "$example" "$work/x.obj" --all-quads
+refuses "a misspelt subcommand" "did you mean quad" "$petersen" qaud "$example" "$work/x.obj"
+for command in "render $example" "generate" "match $work/g.txt" "quad $example"; do
+  # shellcheck disable=SC2086 # the words of $command are separate arguments
+  refuses "$command into no folder" "no such folder to write into: $work/nope" \
+    "$petersen" $command "$work/nope/x.obj"
+done
+refuses "--memory-limit on an OFF" "out-of-core conversion reads a binary PLY" \
+  "$petersen" quad "$example" "$work/x.ply" --memory-limit 1G
+refuses "--memory-limit with a flag out of core cannot honour" "not --objective, --all-quad" \
+  "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --all-quad
+refuses "--part-triangles alone" "give --memory-limit" \
+  "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000
+# Every generator kind works with its defaults.
+for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus; do
+  check "generate --kind $kind by default" "$petersen" generate "$work/k-$kind.obj" --kind "$kind"
+done
+check "generate a trefoil PLY" "$petersen" generate "$work/k-trefoil.ply" --kind trefoil
+refuses "--nx for a kind without a grid" "plate has no grid to size" \
+  "$petersen" generate "$work/x.obj" --nx 5
+refuses "a torus too thin" "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny" \
+  "$petersen" generate "$work/x.obj" --kind jittered-torus --nx 20 --ny 10
+# The summary reads as a success: no dangling colon, a written line for each file.
+check "quad --render's written line" "$petersen" quad "$work/k-trefoil.obj" "$work/t.obj" \
+  --render "$work/t.png"
+grep -q "^written     $work/t.png$" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: no written line for --render"; cat "$work/out"; }
+grep -q "^cut edges   0 of 6528$" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: cut edges line"; cat "$work/out"; }
+check "lrs on a Klein bottle" "$petersen" quad "$work/k-klein.obj" "$work/kq.obj" --algorithm lrs
+grep -q "^            lrs refused 1 closed component (paired by auto instead): not a closed surface: inconsistently oriented edge" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: the lrs refusal line"; cat "$work/out"; }
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
