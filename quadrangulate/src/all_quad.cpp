@@ -62,6 +62,8 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   PolygonMesh& mesh = result.mesh;
   if (!has_work(mesh, kinds, options.keep_polygons)) {
     stats.all_quad_certified = true;  // nothing to split: zero midpoints, trivially fewest
+    for (FaceId f = 0; f < mesh.face_count(); ++f)
+      stats.degenerate_faces += kinds[f] != FaceKind::pair && repeats_a_vertex(mesh.face(f));
     return;
   }
   const PolygonHalfedges half(mesh);
@@ -91,6 +93,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   }
   out.positions = std::move(mesh.positions);
   stats.split_edges = plan.edge_count();
+  stats.degenerate_faces = plan.degenerate_faces;
   stats.centre_vertices = cut.centres;
   stats.added_vertices = stats.split_edges + stats.centre_vertices;
   stats.added_vertices_minimum = plan.minimum;

@@ -15,6 +15,7 @@
 #include "petersen/graph/parallel.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "shape_cuts.hpp"
 #include "validate_input.hpp"
 
@@ -124,6 +125,13 @@ void record_graph_figures(QuadRun& run) {
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
   stats.cuts = graph.cuts;
+  // A face with the same corners as another shares all its edges with it: those edges have three
+  // or more faces, or just the two (a duplicate cut). Without such cuts there is nothing to count,
+  // and the sort of the faces is saved.
+  if (graph.cuts.by_cause[static_cast<int>(CutCause::non_manifold)] > 0 ||
+      graph.cuts.by_cause[static_cast<int>(CutCause::duplicate)] > 0) {
+    stats.duplicate_faces = duplicate_faces(run.mesh).size();
+  }
   stats.inconsistent_edges = graph.inconsistent_edges;
   stats.euler_characteristic =
       run.referenced_vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);

@@ -83,11 +83,18 @@ grep -q "^threshold .*--objective quality picks the cheapest" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: threshold hint"; cat "$work/out"; }
 refuses "--cross shape" "not a cut of the mesh's attributes" \
   "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
-# A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
+# A degenerate triangle is kept as it is under --all-quad, and counted.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
+check "all-quad on a degenerate triangle" "$petersen" quad "$work/degenerate.off" \
+  "$work/degenerate-q.off" --all-quad
+grep -q "^degenerate  1 faces" "$work/out" || { failed=$((failed + 1)); echo "FAILED: degenerate count"; }
+# A failed run leaves the existing output as it was: a prism's two triangles, each walled in by
+# the quads --keep-polygons keeps, cannot become quads.
+printf 'OFF\n6 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 1\n0 1 1\n3 0 2 1\n3 3 4 5\n4 0 1 4 3\n4 1 2 5 4\n4 2 0 3 5\n' \
+  >"$work/prism.off"
 cp "$work/mixed-q.off" "$work/keep.off"
-refuses "all-quad on a degenerate triangle" "repeats a vertex" \
-  "$petersen" quad "$work/degenerate.off" "$work/keep.off" --all-quad
+refuses "all-quad on walled-in triangles" "no all-quad mesh exists" \
+  "$petersen" quad "$work/prism.off" "$work/keep.off" --all-quad --keep-polygons
 cmp -s "$work/keep.off" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: OUT damaged"; }
 ls "$work" | grep -q "tmp" && { failed=$((failed + 1)); echo "FAILED: a temporary file was left"; }
 # Nor does one that fails on its stats: OUT is written (whole), the old stats file stays whole.
@@ -125,7 +132,7 @@ zero4='\x00\x00\x00\x00' one4='\x3f\x80\x00\x00' inf4='\xff\x80\x00\x00'
   printf "$zero4$zero4$zero4$one4$inf4$zero4$zero4$one4$zero4"
   printf '\x03\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x02'; } >"$work/inf-be.ply"
 refuses "NaN in an OFF" "nan.off:4: vertex 1" "$petersen" quad "$work/nan.off" "$work/x.off"
-refuses "-inf in an OBJ" "inf.obj:2: vertex 1" "$petersen" quad "$work/inf.obj" "$work/x.off"
+refuses "-inf in an OBJ" "inf.obj:2: vertex 2" "$petersen" quad "$work/inf.obj" "$work/x.off"
 refuses "NaN in an ascii PLY" "nan-ascii.ply:11: vertex 1" \
   "$petersen" quad "$work/nan-ascii.ply" "$work/x.off"
 refuses "NaN in a binary PLY of doubles" "nan-le.ply: vertex 1: non-finite y" \
