@@ -160,18 +160,34 @@ class PlyReader {
     }
   }
 
-  // A tristrips record: strips a b c d ... separated by -1, each the triangles (a, b, c),
-  // (c, b, d), (c, d, e), ...: the k-th triangle of a strip (from 0) is its corners k, k + 1,
-  // k + 2, the first two swapped when k is odd, so that every triangle turns the way the first
+  // What ends a strip: -1, or in an unsigned index type its largest value (-1's bits, as a
+  // primitive-restart index is written).
+  static std::int64_t strip_restart(ScalarType type) {
+    switch (type) {
+      case ScalarType::uint8:
+        return 0xFF;
+      case ScalarType::uint16:
+        return 0xFFFF;
+      case ScalarType::uint32:
+        return 0xFFFFFFFF;
+      default:
+        return -1;
+    }
+  }
+
+  // A tristrips record: strips a b c d ... separated by -1 (strip_restart), each the triangles (a,
+  // b, c), (c, b, d), (c, d, e), ...: the k-th triangle of a strip (from 0) is its corners k, k +
+  // 1, k + 2, the first two swapped when k is odd, so that every triangle turns the way the first
   // does. A triangle repeating a vertex is how strips turn or join, no face: left out, counted.
   template <class Source>
   void read_strips(const Element& element, std::uint64_t i, const Property& property, Source& in) {
     const std::uint64_t items = in.list_length(property);
+    const std::int64_t restart = strip_restart(property.type);
     std::uint64_t strip = 0, in_strip = 0;  // the strip being read, and its items so far
     VertexId a = 0, b = 0;                  // its last two corners
     for (std::uint64_t j = 0; j < items; ++j) {
       const std::int64_t index = in.list_index(property);
-      if (index == -1) {
+      if (index == restart) {
         ++strip;
         in_strip = 0;
         continue;

@@ -115,7 +115,8 @@ class QuadResult:
     ``V``: (n', 3) float64, the input's positions followed by the vertices ``all_quad`` added.
     ``quads``: (k, 4) int64, the quads: one per pair of triangles (following its first triangle's
     orientation) and those ``all_quad`` made by splitting.
-    ``triangles``: (t, 3) int64, the triangles left unpaired (none with ``all_quad``).
+    ``triangles``: (t, 3) int64, the triangles left unpaired (with ``all_quad``, only those
+    repeating a vertex, kept as they are).
     ``polygons``: list of int64 arrays, the input faces that are not triangles, kept as they were.
     ``sources``: (k + t + p, 2) int64, for each output face *in the order quads, triangles,
     polygons* the input faces it came from: both triangles of a pair's quad, ``[f, -1]`` for a
@@ -188,6 +189,7 @@ def quadrangulate(
     cross: Sequence[str] = (),
     threads: int = 0,
     keep_polygons: bool = False,
+    drop_duplicate_faces: bool = False,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -198,7 +200,12 @@ def quadrangulate(
     lrs), the rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that
     are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
     (a minimum T-join, certified: ``stats["all_quad_certified"]``, ``stats["added_vertices"]`` and
-    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``. ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
+    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``; a face
+    repeating a vertex is kept as it is (``stats["degenerate_faces"]``). ``augment`` is "local"
+    or "faithful", ``seed`` seeds auto, sg and ps. Faces with the same vertices as an earlier face
+    are counted in ``stats["duplicate_faces"]`` (no pair crosses their edges);
+    ``drop_duplicate_faces=True`` drops them first, keeping the first of each (``sources`` still
+    name the faces as given).
     ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
     (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
@@ -239,7 +246,8 @@ def quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
-        [str(c) for c in cross], _threads(threads), bool(keep_polygons))
+        [str(c) for c in cross], _threads(threads), bool(keep_polygons),
+        bool(drop_duplicate_faces))
     return QuadResult(**r)
 
 
@@ -290,16 +298,18 @@ def _mesh_parts(
     return points, faces, own if attributes is None else attributes
 
 
-def read_mesh(path: str, as_meshio: bool = False) -> Any:
+def read_mesh(path: str, as_meshio: bool = False, strict: bool = False) -> Any:
     """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity,
     with its attributes (``Mesh.attributes``).
 
     What the reader reads past (OBJ ``l`` lines, other PLY elements) is in ``Mesh.dropped`` and
     warned as ``DroppedWarning``. Raises ``ValueError`` naming the file and line (text) or element
-    (binary) for a bad file. ``as_meshio=True`` returns a ``meshio.Mesh`` instead
-    (``Mesh.to_meshio``).
+    (binary) for a bad file. A texture coordinate or normal index past those the file has drops
+    that attribute of that face, warned once per attribute; ``strict=True`` raises
+    ``ValueError`` naming the file and line instead. ``as_meshio=True`` returns a ``meshio.Mesh``
+    instead (``Mesh.to_meshio``).
     """
-    V, F, attributes, dropped = _petersen.read_mesh(str(path))
+    V, F, attributes, dropped = _petersen.read_mesh(str(path), bool(strict))
     _warn_dropped(path, dropped, "read past")
     mesh = Mesh(V, F, attributes, dropped)
     return mesh.to_meshio() if as_meshio else mesh

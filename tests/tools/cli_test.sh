@@ -199,6 +199,47 @@ check "generate with holes, fins, pinches, flips" "$petersen" generate "$work/mi
   --kind klein --holes 2 --fins 2 --pinches 1 --flip-faces 3 --seed 5
 refuses "an unknown kind" "torus" "$petersen" generate "$work/x.off" --kind torus
 
+# Files as they come. Dangling OBJ normal and texture coordinate indices: each attribute dropped
+# for its faces with one warning, the faces paired; --strict refuses, naming the line.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1//1 2//1 3//1\nf 1/1 3/2 4/1\n' \
+  >"$work/dangling.obj"
+check "dangling OBJ indices" "$petersen" quad "$work/dangling.obj" "$work/dangling-q.obj"
+[ "$(grep -c "warning: .*dangling.obj: dropped 1 faces' " "$work/out")" = 2 ] || {
+  failed=$((failed + 1)); echo "FAILED: dangling warnings"; cat "$work/out"; }
+grep -q "^pairs       1 " "$work/out" || { failed=$((failed + 1)); echo "FAILED: dangling pairs"; }
+refuses "--strict on a dangling normal" "dangling.obj:6: face 1: normal index 1 out of range" \
+  "$petersen" quad "$work/dangling.obj" "$work/x.obj" --strict
+refuses "info --strict" "dangling.obj:6: face 1" "$petersen" info "$work/dangling.obj" --strict
+# Every face twice: the summary names the duplicates and the flag; dropped, the result is the
+# single copy's.
+"$petersen" generate "$work/single.off" --kind plate >/dev/null
+awk 'NR == 2 { split($0, n, " "); print n[1], 2 * n[2], 0; v = n[1]; f = n[2]; next }
+     NR > 2 && NR <= 2 + v { print; next }
+     NR > 2 + v { print; faces[++k] = $0 }
+     NR == 1 { print }
+     END { for (i = 1; i <= k; ++i) { split(faces[i], c, " "); print 3, c[4], c[3], c[2] } }' \
+  "$work/single.off" >"$work/doubled.off"
+check "doubled faces" "$petersen" quad "$work/doubled.off" "$work/doubled-q.off"
+grep -q "^duplicates  .*--drop-duplicate-faces" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: duplicates not named"; cat "$work/out"; }
+grep -q "^pairs       0 " "$work/out" || { failed=$((failed + 1)); echo "FAILED: doubled pairs"; }
+check "single copy" "$petersen" quad "$work/single.off" "$work/single-q.off"
+check "--drop-duplicate-faces" "$petersen" quad "$work/doubled.off" "$work/dropped-q.off" \
+  --drop-duplicate-faces
+cmp -s "$work/single-q.off" "$work/dropped-q.off" || {
+  failed=$((failed + 1)); echo "FAILED: dropped copies pair otherwise"; }
+check "info on doubled faces" "$petersen" info "$work/doubled.off"
+grep -q "duplicate faces [1-9]" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: info names no duplicates"; }
+# A tristrip PLY pairs as the same triangles written as faces.
+printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 0 1 2 3 -1\n' \
+  >"$work/strip.ply"
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n' >"$work/strip-faces.off"
+check "tristrips" "$petersen" quad "$work/strip.ply" "$work/strip-q.off"
+check "tristrips as faces" "$petersen" quad "$work/strip-faces.off" "$work/strip-faces-q.off"
+cmp -s "$work/strip-q.off" "$work/strip-faces-q.off" || {
+  failed=$((failed + 1)); echo "FAILED: tristrips pair otherwise"; }
+
 # render: PNG and SVG of a mesh and of a quad result (the pixels are checked by tests/render).
 png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8}'; }
 check "render a mesh" "$petersen" render "$example" "$work/example.png" --width 640 --height 480

@@ -43,7 +43,7 @@ MeshFormat mesh_format_of(const std::string& path);
 ///   a list named vertex_indices or vertex_index; every other scalar vertex or face property with
 ///   its type; MeshLab's per-corner `texcoord` face list as corner texture coordinates. Or, for
 ///   the faces, a `tristrips` element (one record or more of a vertex_indices list, -1 ending a
-///   strip): each strip a b c d ... read as the triangles (a, b, c), (c, b, d), (c, d, e), ...,
+///   strip, or in an unsigned index type its largest value): each strip a b c d ... read as the triangles (a, b, c), (c, b, d), (c, d, e), ...,
 ///   every other one reversed so that all keep the first's orientation; a triangle repeating a
 ///   vertex (what strip writers use to turn a corner) is left out and counted in `dropped`.
 /// Everything else (OBJ `l`, `p`, `curv` lines; other PLY elements and lists; values an OFF
