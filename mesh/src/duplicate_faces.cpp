@@ -38,12 +38,9 @@ Values kept_entries(const Values& values, const PolygonMesh& mesh,
   return out;
 }
 
-}  // namespace
-
-std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh) {
-  const auto faces = static_cast<FaceId>(mesh.face_count());
-  std::vector<std::pair<std::uint64_t, FaceId>> order(faces);
-  for (FaceId f = 0; f < faces; ++f) order[f] = {multiset_hash(mesh.face(f)), f};
+// The faces of `order` ({hash, face} for each face looked at) that repeat an earlier one.
+std::vector<FaceId> copies_in(const PolygonMesh& mesh,
+                              std::vector<std::pair<std::uint64_t, FaceId>>& order) {
   std::sort(order.begin(), order.end());
   // Within a run of equal hashes (almost always one kind of face), each face is compared with the
   // first faces of the kinds seen so far in the run; the run's faces are in ascending order, so
@@ -69,6 +66,23 @@ std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh) {
   }
   std::sort(copies.begin(), copies.end());
   return copies;
+}
+
+}  // namespace
+
+std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh) {
+  const auto faces = static_cast<FaceId>(mesh.face_count());
+  std::vector<std::pair<std::uint64_t, FaceId>> order(faces);
+  for (FaceId f = 0; f < faces; ++f) order[f] = {multiset_hash(mesh.face(f)), f};
+  return copies_in(mesh, order);
+}
+
+std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh, std::span<const FaceId> among) {
+  std::vector<std::pair<std::uint64_t, FaceId>> order(among.size());
+  for (std::size_t i = 0; i < among.size(); ++i) {
+    order[i] = {multiset_hash(mesh.face(among[i])), among[i]};
+  }
+  return copies_in(mesh, order);
 }
 
 DroppedFaces drop_duplicate_faces(const PolygonMesh& mesh) {

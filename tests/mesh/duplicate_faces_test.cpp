@@ -90,6 +90,9 @@ RC_GTEST_PROP(DuplicateFaces, AgreeWithSortedCorners, ()) {
     if (!seen.insert(sorted).second) expected.push_back(f);
   }
   RC_ASSERT(duplicate_faces(mesh) == expected);
+  std::vector<FaceId> backwards(mesh.face_count());
+  for (FaceId f = 0; f < backwards.size(); ++f) backwards[f] = FaceId(backwards.size() - 1 - f);
+  RC_ASSERT(duplicate_faces(mesh, backwards) == expected);
   const DroppedFaces dropped = drop_duplicate_faces(mesh);
   RC_ASSERT(dropped.mesh.face_count() == seen.size());
   RC_ASSERT(duplicate_faces(dropped.mesh).empty());

@@ -3,6 +3,7 @@
 // holds every triangle twice makes every edge an edge of four faces, so that nothing pairs; these
 // find the copies and drop them (as MeshLab's "Remove Duplicate Faces" does).
 
+#include <span>
 #include <vector>
 
 #include "petersen/mesh/mesh.hpp"
@@ -14,6 +15,11 @@ namespace petersen {
 /// ascending order; the first face of each kind is never among them. Corners need not be in
 /// range. O(C + F log F) for C corners and F faces.
 std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh);
+/// The same judgement among the faces `among` alone (any order, each once): those that repeat an
+/// earlier face of `among`, ascending. A caller that knows where copies can be (a triangle's copy
+/// shares all its edges, so both have only edges of three or more faces, or of just the two) saves
+/// the sort of the rest. O(A log A + their corners).
+std::vector<FaceId> duplicate_faces(const PolygonMesh& mesh, std::span<const FaceId> among);
 
 struct DroppedFaces {
   PolygonMesh mesh;

@@ -129,8 +129,10 @@ struct QuadStats {
   std::uint64_t polygons_kept = 0;  ///< faces that are not triangles, kept as they are
   /// Faces with the same corners as an earlier face (duplicate_faces, petersen/mesh/
   /// duplicate_faces.hpp): their edges are edges of three or more faces (or of a face and its
-  /// copy), so no pair crosses them; drop_duplicate_faces removes them before a run. Counted only
-  /// where some edge is cut as non-manifold or duplicate: elsewhere there can be none.
+  /// copy), so no pair crosses them; drop_duplicate_faces removes them before a run. Looked for
+  /// only where some edge is cut as non-manifold or duplicate, among the polygons and the
+  /// triangles cut on every side: a copy of a triangle can be nowhere else, a copy of a polygon
+  /// nowhere else that matters to the pairing.
   std::uint64_t duplicate_faces = 0;
   std::uint64_t pairs = 0;           ///< quads made of two input triangles
   std::uint64_t triangles_left = 0;  ///< triangles no maximum pairing can pair (before all_quad)
