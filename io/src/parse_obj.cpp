@@ -349,9 +349,9 @@ class ObjReader {
   NameTable materials_, groups_, objects_;
   std::uint32_t material_ = kNoAttribute, group_ = kNoAttribute, object_ = kNoAttribute;
   std::uint32_t smoothing_ = 0;
-  bool face_statements_ = false;       // a usemtl, g, o or s line has been read
-  bool dangling_[2] = {false, false};  // the face being read has a dangling texture coordinate,
-                                       // normal index
+  bool face_statements_ = false;  // a usemtl, g, o or s line has been read
+  // Per attribute (texture coordinate, normal): the face being read names one not read so far.
+  bool dangling_[2] = {false, false};
   DroppedTally tally_;
   std::uint64_t uncoloured_vertices_ = 0;
 };

@@ -160,7 +160,7 @@ class PlyReader {
     }
   }
 
-  // What ends a strip: -1, or in an unsigned index type its largest value (-1's bits, as a
+  // What ends a strip besides -1: in an unsigned index type its largest value (-1's bits, as a
   // primitive-restart index is written).
   static std::int64_t strip_restart(ScalarType type) {
     switch (type) {
@@ -187,7 +187,7 @@ class PlyReader {
     VertexId a = 0, b = 0;                  // its last two corners
     for (std::uint64_t j = 0; j < items; ++j) {
       const std::int64_t index = in.list_index(property);
-      if (index == restart) {
+      if (index == -1 || index == restart) {
         ++strip;
         in_strip = 0;
         continue;

@@ -62,8 +62,13 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   PolygonMesh& mesh = result.mesh;
   if (!has_work(mesh, kinds, options.keep_polygons)) {
     stats.all_quad_certified = true;  // nothing to split: zero midpoints, trivially fewest
-    for (FaceId f = 0; f < mesh.face_count(); ++f)
-      stats.degenerate_faces += kinds[f] != FaceKind::pair && repeats_a_vertex(mesh.face(f));
+    // Every face is a quad or a polygon keep_polygons keeps: the other quads repeating a vertex
+    // are the degenerate faces plan_splits would have kept.
+    for (FaceId f = 0; f < mesh.face_count(); ++f) {
+      const bool kept_polygon = options.keep_polygons && kinds[f] == FaceKind::kept;
+      stats.degenerate_faces += kinds[f] != FaceKind::pair && !kept_polygon && mesh.arity(f) == 4 &&
+                                repeats_a_vertex(mesh.face(f));
+    }
     return;
   }
   const PolygonHalfedges half(mesh);
