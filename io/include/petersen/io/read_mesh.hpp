@@ -43,16 +43,18 @@ MeshFormat mesh_format_of(const std::string& path);
 ///   a list named vertex_indices or vertex_index; every other scalar vertex or face property with
 ///   its type; MeshLab's per-corner `texcoord` face list as corner texture coordinates. Or, for
 ///   the faces, a `tristrips` element (one record or more of a vertex_indices list, -1 ending a
-///   strip, or in an unsigned index type its largest value): each strip a b c d ... read as the triangles (a, b, c), (c, b, d), (c, d, e), ...,
-///   every other one reversed so that all keep the first's orientation; a triangle repeating a
-///   vertex (what strip writers use to turn a corner) is left out and counted in `dropped`.
+///   strip, or in an unsigned index type its largest value): each strip a b c d ... read as the
+///   triangles (a, b, c), (c, b, d), (c, d, e), ..., every other one reversed so that all keep
+///   the first's orientation; a triangle repeating a vertex (what strip writers use to turn a
+///   corner) is left out and counted in `dropped`; an error names the strip and list position.
 /// Everything else (OBJ `l`, `p`, `curv` lines; other PLY elements and lists; values an OFF
 /// keyword does not declare) is read past, and when `dropped` is given, one line per kind of thing
 /// is appended to it ("3 'l' lines, the first at line 12").
 /// Throws FileError with the file name and the line (text) or element index (binary) on: an
 /// empty file, no faces, an unknown format, truncation, wrong counts, NaN or infinite
-/// coordinates, negative or out-of-range indices, faces of fewer than 3 corners, counts the file
-/// cannot hold (checked before anything is allocated), a corrupt or absurdly large gzip stream.
+/// coordinates, negative or out-of-range vertex indices (attribute ones only when strict), faces
+/// of fewer than 3 corners, counts the file cannot hold (checked before anything is allocated), a
+/// corrupt or absurdly large gzip stream.
 /// O(file size).
 PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped = nullptr,
                       const ReadMeshOptions& options = {});
