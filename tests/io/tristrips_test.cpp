@@ -66,6 +66,13 @@ TEST(Tristrips, OrientationAlternatesAndRestarts) {
       parse_mesh(testing::tristrip_ply(square, {{0, 1, 2, 3, -1, 1, 4, 3}}, PlyEncoding::ascii),
                  MeshFormat::ply, "in");
   EXPECT_EQ(corners_of(mesh), (std::vector<VertexId>{0, 1, 2, 2, 1, 3, 1, 4, 3}));
+  // An unsigned index type may spell the restart -1 in ascii too.
+  const std::string minus =
+      "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty "
+      "float z\nelement tristrips 1\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n"
+      "1 0 0\n0 1 0\n1 1 0\n7 0 1 2 -1 1 3 2\n";
+  EXPECT_EQ(corners_of(parse_mesh(minus, MeshFormat::ply, "in")),
+            (std::vector<VertexId>{0, 1, 2, 1, 3, 2}));
   // Strips of fewer than three vertices make no triangle; a trailing -1 ends nothing.
   EXPECT_EQ(error_of(testing::tristrip_ply(square, {{0, 1, -1, 2, -1}}, PlyEncoding::ascii)),
             "in: no faces");
