@@ -22,6 +22,7 @@
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
@@ -39,15 +40,15 @@ void warn_dropped(const std::string& path, const std::vector<std::string>& dropp
   }
 }
 
-PolygonMesh read_mesh_warning(const std::string& path) {
+PolygonMesh read_mesh_warning(const std::string& path, bool strict = false) {
   std::vector<std::string> dropped;
-  PolygonMesh mesh = read_mesh(path, &dropped);
+  PolygonMesh mesh = read_mesh(path, &dropped, {.strict = strict});
   warn_dropped(path, dropped);
   return mesh;
 }
 
-int info(const std::string& path) {
-  const PolygonMesh mesh = read_mesh_warning(path);
+int info(const std::string& path, bool strict) {
+  const PolygonMesh mesh = read_mesh_warning(path, strict);
   std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
   // The quads' shape, by the measure `petersen quad` reports and --objective quality minimises.
   const QualityFigures quality = quality_figures(quad_costs(mesh));
@@ -101,7 +102,7 @@ struct QuadArgs {
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   std::uint32_t threads = 0;
-  bool all_quad = false, keep_polygons = false;
+  bool all_quad = false, keep_polygons = false, strict = false, drop_duplicate_faces = false;
   std::optional<double> sharp_angle, max_corner_deviation;
   double triangle_cost = kDefaultTriangleCost, flow_weight = kDefaultFlowWeight;
   std::string keep_edges;
@@ -124,25 +125,36 @@ std::vector<std::string> given_flags(const CLI::App& command) {
 
 // The out-of-core conversion pairs by the default algorithm and writes the mesh and its stats:
 // any other flag would be ignored there, so it is refused.
-void refuse_out_of_core_flags(const std::vector<std::string>& given) {
+// The out-of-core conversion pairs the maximum, part by part (--objective pairs): the cost
+// objectives need the whole pairable graph at once. Without --objective it says so in one line.
+void refuse_out_of_core_flags(const QuadArgs& args) {
   std::string refused;
-  for (const std::string& flag : given) {
+  bool objective_given = false;
+  for (const std::string& flag : args.given) {
+    if (flag == "--objective" && args.objective == "pairs") objective_given = true;
     if (flag != "--memory-limit" && flag != "--part-triangles" && flag != "--augment" &&
-        flag != "--threads" && flag != "--stats-json") {
+        flag != "--threads" && flag != "--stats-json" &&
+        !(flag == "--objective" && objective_given)) {
       refused += (refused.empty() ? "" : ", ") + flag;
     }
   }
   if (!refused.empty()) {
     throw CLI::ValidationError("--memory-limit",
                                "the out-of-core conversion takes --part-triangles, --augment, "
-                               "--threads and --stats-json only, not " +
+                               "--threads, --stats-json and --objective pairs only, not " +
                                    refused);
+  }
+  if (!objective_given) {
+    std::fputs(
+        "petersen: out of core: pairing the maximum, part by part (--objective pairs); the "
+        "default objective, quads, needs the whole mesh in memory\n",
+        stderr);
   }
 }
 
 int quad(const QuadArgs& args) {
   if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
-    refuse_out_of_core_flags(args.given);
+    refuse_out_of_core_flags(args);
     return quad_out_of_core_command({.input = args.input,
                                      .output = args.output,
                                      .augment = args.augment,
@@ -193,7 +205,16 @@ int quad(const QuadArgs& args) {
   // lrs free the input's corners early (12 bytes per triangle at its peak).
   report.options.sources = false;
   Stopwatch total, clock;
-  PolygonMesh mesh = read_mesh_warning(args.input);
+  PolygonMesh mesh = read_mesh_warning(args.input, args.strict);
+  if (args.drop_duplicate_faces) {
+    DroppedFaces copies = drop_duplicate_faces(mesh);
+    if (!copies.dropped.empty()) {
+      warn_dropped(args.input, {std::to_string(copies.dropped.size()) +
+                                " duplicate faces (--drop-duplicate-faces), the first face " +
+                                std::to_string(copies.dropped[0])});
+    }
+    mesh = std::move(copies.mesh);
+  }
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges, mesh.positions.size());
@@ -432,6 +453,11 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
   quad_cmd->add_flag(
       "--keep-polygons", quad_args.keep_polygons,
       "with --all-quad: keep the input's polygons that are not triangles as they are");
+  quad_cmd->add_flag("--drop-duplicate-faces", quad_args.drop_duplicate_faces,
+                     "drop faces with the same vertices as an earlier face before pairing");
+  quad_cmd->add_flag("--strict", quad_args.strict,
+                     "refuse a texture coordinate or normal index the file does not have, "
+                     "instead of dropping it with a warning");
   quad_cmd
       ->add_option("--stats-json", quad_args.stats_json,
                    "also write the summary as one JSON object to this file (whole, then renamed "
@@ -561,11 +587,14 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
 
   std::string info_path;
+  bool info_strict = false;
   CLI::App* info_cmd =
       app.add_subcommand("info",
                          "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
                          "orientability, genus and the quads' worst-corner figures");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
+  info_cmd->add_flag("--strict", info_strict,
+                     "refuse a texture coordinate or normal index the file does not have");
 
   QuadArgs quad_args;
   CLI::App* quad_cmd = add_quad_command(app, quad_args);
@@ -584,7 +613,7 @@ int main(int argc, char** argv) {
     return code;
   }
   try {
-    if (info_cmd->parsed()) return info(info_path);
+    if (info_cmd->parsed()) return info(info_path, info_strict);
     if (quad_cmd->parsed()) {
       quad_args.given = given_flags(*quad_cmd);
       return quad(quad_args);

@@ -110,6 +110,13 @@ void print_summary(std::FILE* out, const RunReport& r) {
   std::fprintf(out, "pairs       %" PRIu64 "  triangles left %" PRIu64 " (%.4f s)\n", s.pairs,
                s.triangles_left, s.quads_seconds);
   print_left_causes(out, s);
+  if (s.duplicate_faces > 0) {
+    std::fprintf(out,
+                 "duplicates  %" PRIu64
+                 " faces repeat an earlier face's vertices: no pair crosses "
+                 "their edges; --drop-duplicate-faces drops the copies\n",
+                 s.duplicate_faces);
+  }
   std::fprintf(out,
                "quality     median %.2f, 95th percentile %.2f degrees, %" PRIu64
                " non-convex, total %.4f%s\n",
@@ -128,6 +135,10 @@ void print_summary(std::FILE* out, const RunReport& r) {
                  s.added_vertices, s.split_edges, s.added_vertices_minimum,
                  s.all_quad_certified ? ", certified" : ", not proved", s.split_quads,
                  s.split_quality_median, s.split_quality_p95, s.all_quad_seconds);
+  }
+  if (s.degenerate_faces > 0) {
+    std::fprintf(out, "degenerate  %" PRIu64 " faces repeat a vertex: kept as they are\n",
+                 s.degenerate_faces);
   }
   std::fprintf(out, "written     %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
   std::fprintf(out, "total       %.4f s\n", r.total_seconds);

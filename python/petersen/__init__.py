@@ -115,7 +115,8 @@ class QuadResult:
     ``V``: (n', 3) float64, the input's positions followed by the vertices ``all_quad`` added.
     ``quads``: (k, 4) int64, the quads: one per pair of triangles (following its first triangle's
     orientation) and those ``all_quad`` made by splitting.
-    ``triangles``: (t, 3) int64, the triangles left unpaired (none with ``all_quad``).
+    ``triangles``: (t, 3) int64, the triangles left unpaired (with ``all_quad``, only those
+    repeating a vertex, kept as they are).
     ``polygons``: list of int64 arrays, the input faces that are not triangles, kept as they were.
     ``sources``: (k + t + p, 2) int64, for each output face *in the order quads, triangles,
     polygons* the input faces it came from: both triangles of a pair's quad, ``[f, -1]`` for a
@@ -190,6 +191,7 @@ def quadrangulate(
     keep_polygons: bool = False,
     triangle_cost: float = 90.0,
     flow_weight: float = 0.0,
+    drop_duplicate_faces: bool = False,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
@@ -205,7 +207,12 @@ def quadrangulate(
     sg, ps, ds, gw, frink, lemon or lrs), the rest by greedy pairing and augmenting paths with a
     Tutte-Berge witness. Faces that are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
     (a minimum T-join, certified: ``stats["all_quad_certified"]``, ``stats["added_vertices"]`` and
-    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``. ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
+    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``; a face
+    repeating a vertex is kept as it is (``stats["degenerate_faces"]``). ``augment`` is "local"
+    or "faithful", ``seed`` seeds auto, sg and ps. Faces with the same vertices as an earlier face
+    are counted in ``stats["duplicate_faces"]`` (no pair crosses their edges);
+    ``drop_duplicate_faces=True`` drops them first, keeping the first of each (``sources`` still
+    name the faces as given).
     ``objective="quality"`` gives the maximum pairing of least total ``quad_quality`` cost
     (certified: ``stats["optimality_certified"]``); ``algorithm`` is used by "pairs" only.
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
@@ -248,7 +255,8 @@ def quadrangulate(
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
         [str(c) for c in cross], _threads(threads), bool(keep_polygons),
-        _number("triangle_cost", triangle_cost, 10000.0), _number("flow_weight", flow_weight, 100.0))
+        _number("triangle_cost", triangle_cost, 10000.0), _number("flow_weight", flow_weight, 100.0),
+        bool(drop_duplicate_faces))
     return QuadResult(**r)
 
 
@@ -306,16 +314,18 @@ def _mesh_parts(
     return points, faces, own if attributes is None else attributes
 
 
-def read_mesh(path: str, as_meshio: bool = False) -> Any:
+def read_mesh(path: str, as_meshio: bool = False, strict: bool = False) -> Any:
     """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity,
     with its attributes (``Mesh.attributes``).
 
     What the reader reads past (OBJ ``l`` lines, other PLY elements) is in ``Mesh.dropped`` and
     warned as ``DroppedWarning``. Raises ``ValueError`` naming the file and line (text) or element
-    (binary) for a bad file. ``as_meshio=True`` returns a ``meshio.Mesh`` instead
-    (``Mesh.to_meshio``).
+    (binary) for a bad file. A texture coordinate or normal index past those the file has drops
+    that attribute of that face, warned once per attribute; ``strict=True`` raises
+    ``ValueError`` naming the file and line instead. ``as_meshio=True`` returns a ``meshio.Mesh``
+    instead (``Mesh.to_meshio``).
     """
-    V, F, attributes, dropped = _petersen.read_mesh(str(path))
+    V, F, attributes, dropped = _petersen.read_mesh(str(path), bool(strict))
     _warn_dropped(path, dropped, "read past")
     mesh = Mesh(V, F, attributes, dropped)
     return mesh.to_meshio() if as_meshio else mesh

@@ -423,7 +423,9 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
       options.objective != Objective::pairs ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();
   stats.optimality_certified = options.objective != Objective::pairs;
-  if (options.objective == Objective::quads) {
+  // With all_quad every triangle left is split into quads anyway: the quads objective then pairs
+  // the cheapest maximum, as quality does, which leaves the fewest triangles to split.
+  if (options.objective == Objective::quads && !options.all_quad) {
     pair_at_least_cost(graph, costs, options, pairing, stats, clock);
     return pairing;
   }

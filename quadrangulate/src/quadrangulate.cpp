@@ -16,6 +16,7 @@
 #include "petersen/graph/parallel.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "shape_cuts.hpp"
 #include "validate_input.hpp"
 
@@ -138,6 +139,27 @@ void add_flow_to_costs(QuadRun& run) {
   run.edge_flow = HugeVector<double>();
 }
 
+// The faces that may have the same corners as another: the polygons, and the triangles cut on
+// every side (a triangle's copy shares all its edges with it, so each is an edge of three or more
+// faces or a duplicate cut). Without non-manifold or duplicate cuts there are no copies of
+// triangles, and the caller does not ask. O(F).
+std::vector<FaceId> duplicate_candidates(const QuadRun& run) {
+  const PairableGraph& graph = run.graph;
+  std::vector<FaceId> faces;
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    const EdgeId* sides = graph.node_edges.data() + 3 * std::size_t{v};
+    if (sides[0] == kNoEdge && sides[1] == kNoEdge && sides[2] == kNoEdge) {
+      faces.push_back(graph.node_face.empty() ? v : graph.node_face[v]);
+    }
+  }
+  if (!run.mesh.all_triangles()) {
+    for (FaceId f = 0; f < run.face_count; ++f) {
+      if (run.mesh.arity(f) != 3) faces.push_back(f);
+    }
+  }
+  return faces;
+}
+
 void record_graph_figures(QuadRun& run) {
   QuadStats& stats = run.stats();
   const PairableGraph& graph = run.graph;
@@ -148,6 +170,10 @@ void record_graph_figures(QuadRun& run) {
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
   stats.cuts = graph.cuts;
+  if (graph.cuts.by_cause[static_cast<int>(CutCause::non_manifold)] > 0 ||
+      graph.cuts.by_cause[static_cast<int>(CutCause::duplicate)] > 0) {
+    stats.duplicate_faces = duplicate_faces(run.mesh, duplicate_candidates(run)).size();
+  }
   stats.inconsistent_edges = graph.inconsistent_edges;
   stats.euler_characteristic =
       run.referenced_vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);

@@ -40,6 +40,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("faces_in", s.faces_in);
   u("triangles", s.triangles);
   u("polygons_kept", s.polygons_kept);
+  u("duplicate_faces", s.duplicate_faces);
   if (s.genus) add("genus", *s.genus);
   add("euler_characteristic", s.euler_characteristic);
   u("components", s.components);
@@ -97,6 +98,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("added_vertices", s.added_vertices);
   if (options.all_quad) {
     u("split_edges", s.split_edges);
+    u("degenerate_faces", s.degenerate_faces);
     u("centre_vertices", s.centre_vertices);
     u("added_vertices_minimum", s.added_vertices_minimum);
     add("all_quad_certified", s.all_quad_certified);

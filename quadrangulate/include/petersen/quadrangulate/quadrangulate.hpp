@@ -68,7 +68,8 @@ inline constexpr std::uint32_t kMaxQuadThreads = 1024;
 
 struct QuadOptions {
   /// Objective::quads pairs by the exact minimum-cost matching of any size with a price per left
-  /// triangle (min_cost_matching in min_cost_matching.hpp) over the whole pairable graph;
+  /// triangle (min_cost_matching in min_cost_matching.hpp) over the whole pairable graph (with
+  /// all_quad, which splits every triangle left, the cheapest maximum pairing, as quality);
   /// Objective::quality by the minimum-cost matching of the quads' worst-corner deviation,
   /// perfect on closed components and the cheapest maximum one elsewhere. Each is proved optimal
   /// by its dual certificate. Objective::pairs runs `algorithm`, `augment` and `seed`, which the
@@ -107,10 +108,12 @@ struct QuadOptions {
   /// chosen first, by elimination over GF(2), and the minimum is then the T-join's given them
   /// (all_quad_certified is false, as it is wherever a non-manifold edge borders faces that
   /// need splits: splitting it flips all of its faces at once, which the T-join does not weigh).
+  /// A face repeating a vertex (a degenerate triangle such as {a, a, b}) has no cut into quads
+  /// that repeats none: it is kept as it is, its sides never split, and counted in
+  /// QuadStats::degenerate_faces, while every other face becomes quads.
   /// Input vertices never move and the surface's topology is
   /// unchanged. Throws MeshError only with a proof that no all-quad mesh exists (faces whose total
-  /// side count stays odd whatever is split, naming an input face), or for a face repeating a
-  /// vertex that would have to change.
+  /// side count stays odd whatever is split, naming an input face), the kept faces as they are.
   bool all_quad = false;
   /// With all_quad: the input's faces that are not triangles are kept exactly as they are (never
   /// in T, their edges never split); where that leaves a region of odd total side count, the
@@ -161,13 +164,23 @@ struct QuadStats {
   std::uint64_t vertices = 0;       ///< vertices of the input (referenced or not)
   std::uint64_t triangles = 0;      ///< triangles of the input
   std::uint64_t polygons_kept = 0;  ///< faces that are not triangles, kept as they are
-  std::uint64_t pairs = 0;          ///< quads made of two input triangles
+  /// Faces with the same corners as an earlier face (duplicate_faces, petersen/mesh/
+  /// duplicate_faces.hpp): their edges are edges of three or more faces (or of a face and its
+  /// copy), so no pair crosses them; drop_duplicate_faces removes them before a run. Looked for
+  /// only where some edge is cut as non-manifold or duplicate, among the polygons and the
+  /// triangles cut on every side: a copy of a triangle can be nowhere else, a copy of a polygon
+  /// nowhere else that matters to the pairing.
+  std::uint64_t duplicate_faces = 0;
+  std::uint64_t pairs = 0;  ///< quads made of two input triangles
   /// Triangles left unpaired (before all_quad): none that a maximum pairing can pair, except with
   /// Objective::quads, which leaves those that cost less as triangles.
   std::uint64_t triangles_left = 0;
   /// all_quad: every new vertex, split_edges + centre_vertices.
   std::uint64_t added_vertices = 0;
-  std::uint64_t split_edges = 0;      ///< all_quad: edges given a midpoint
+  std::uint64_t split_edges = 0;  ///< all_quad: edges given a midpoint
+  /// all_quad: faces (not pairs) repeating a vertex, which no cut into quads can fix, kept as they
+  /// are; their sides are never split.
+  std::uint64_t degenerate_faces = 0;
   std::uint64_t centre_vertices = 0;  ///< all_quad: centres of faces cut around one
   /// all_quad: the fewest midpoints that make every face even for this pairing (the minimum
   /// T-join's size, plus the non-manifold splits when parity forced some).
