@@ -6,6 +6,7 @@ and by Blender's own Tris to Quads, side by side in one Blender.
 
 PETERSEN_PYTHONPATH as for tests/blender/test_addon.py. Each MESH (OFF, OBJ or PLY, gzip too, read
 by petersen.read_mesh) becomes quad models the way users meet them:
+- the model itself, when it has quads (a quad model as published);
 - "ccN": Blender's Subdivision Surface modifier (Catmull-Clark) at level N = 1, 2 (--quick: 1 only),
   all quads;
 - "cc1+tri": the level-1 model with 1 % of its edges collapsed (each collapse turns the two quads
@@ -238,6 +239,8 @@ def main():
         if scans:
             rows += scan_rows(name, np.asarray(mesh.V, np.float64), faces)
             continue
+        if any(len(f) == 4 for f in faces):
+            rows += recovery_rows(name, np.asarray(mesh.V, np.float64), faces, rng)
         for levels in (1,) if quick else (1, 2):
             V, quads = catmull_clark(mesh.V, faces, levels)
             rows += recovery_rows(f"{name}-cc{levels}", V, quads, rng)
