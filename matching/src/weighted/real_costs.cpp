@@ -57,4 +57,12 @@ IntegerCosts integer_costs(std::span<const double> costs, Cost limit) {
   return result;
 }
 
+Cost maximum_matching_cost_limit(std::uint64_t largest_matching) {
+  // K <= 1 + ν · 2 · limit < 2^52.
+  constexpr std::uint64_t kRoom = (std::uint64_t{1} << 52) - 2;
+  if (largest_matching == 0) return kMaxCost;
+  return static_cast<Cost>(std::clamp<std::uint64_t>(kRoom / (2 * largest_matching), 1,
+                                                     static_cast<std::uint64_t>(kMaxCost)));
+}
+
 }  // namespace petersen

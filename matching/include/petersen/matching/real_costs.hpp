@@ -34,4 +34,10 @@ struct IntegerCosts {
 /// std::invalid_argument naming the first cost that is not finite, or for a limit below 1. O(m).
 IntegerCosts integer_costs(std::span<const double> costs, Cost limit = kMaxCost);
 
+/// The largest |cost| integer_costs may give for min_cost_maximum_matching on a graph whose
+/// matchings have at most `largest_matching` edges: its unmatched cost K = 1 + largest_matching ·
+/// (cost range) must stay below 2^52, whatever the costs' signs. kMaxCost for 0 or 1 edges,
+/// then less. O(1).
+Cost maximum_matching_cost_limit(std::uint64_t largest_matching);
+
 }  // namespace petersen
