@@ -86,6 +86,8 @@ def _weight_array(weights: npt.ArrayLike, m: int) -> np.ndarray:
         array = array.astype(np.float64, copy=False)
     elif kind == "i":
         array = array.astype(np.int64, copy=False)
+        if array.size and array.min() == np.iinfo(np.int64).min:  # -w would wrap
+            array = array.astype(np.float64)
     else:
         raise TypeError(f"weights must be numbers, not {array.dtype}")
     if array.shape != (m,):
