@@ -72,12 +72,7 @@ SolverCosts solver_costs(const GraphFile& graph, bool negate, std::uint64_t larg
     if (negate) r = -r;
     largest = std::max(largest, std::abs(r));
   }
-  const std::int64_t limit =
-      largest_matching == 0
-          ? kMaxCost
-          : std::max<std::int64_t>(
-                1, std::min<std::int64_t>(
-                       kMaxCost, (kMaxK - 2) / (2 * static_cast<std::int64_t>(largest_matching))));
+  const std::int64_t limit = maximum_matching_cost_limit(largest_matching);
   result.rounded = integer_costs(reals, limit);
   result.reals = reals;
   result.rounded->exact = false;
