@@ -10,21 +10,52 @@ pybind11-dev, the libraries of scripts/ensure-deps) and setuptools is Debian's t
 
 Nothing is downloaded. CMAKE_BUILD_PARALLEL_LEVEL sets the build's jobs (default: all cores).
 
-PETERSEN_CMAKE_BUILD_DIR names an existing build tree to build the module in instead (configured
-with -DPETERSEN_PYTHON=ON for this interpreter, as scripts/test does with its Release tree): its
-libraries are compiled once for the tools, the tests and the module, and the module is copied from
-there.
+An existing build tree is reused when there is one: PETERSEN_CMAKE_BUILD_DIR names it, and
+without it build/release is taken when it was configured with -DPETERSEN_PYTHON=ON (as scripts/run
+and scripts/test configure it). Its libraries are compiled once for the tools, the tests and the
+module, and the module is copied from there; PETERSEN_CMAKE_BUILD_DIR= (empty) builds afresh.
+
+pip shows a build's output only with -v, so the build's progress lines go to the terminal
+(/dev/tty) when there is one.
 """
 
+import functools
 import os
 import pathlib
 import shutil
 import subprocess
 import sys
 import sysconfig
+from typing import List
 
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
+
+
+@functools.lru_cache(maxsize=None)
+def progress_stream():
+    """Where the build's progress goes: the terminal when there is one (pip captures stdout and
+    stderr until the end), else stderr."""
+    try:
+        return open("/dev/tty", "w", buffering=1)
+    except OSError:
+        return sys.stderr
+
+
+def run_with_progress(command: List[str]) -> None:
+    out = progress_stream()
+    print("petersen: " + " ".join(command), file=out)
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          bufsize=1) as build:
+        for line in build.stdout:
+            print("petersen: " + line.rstrip(), file=out)
+    if build.returncode != 0:
+        raise subprocess.CalledProcessError(build.returncode, command)
+
+
+def configured_for_python(build_dir: pathlib.Path) -> bool:
+    cache = build_dir / "CMakeCache.txt"
+    return "PETERSEN_PYTHON:BOOL=ON" in (cache.read_text() if cache.exists() else "")
 
 
 class CMakeExtension(Extension):
@@ -38,6 +69,8 @@ class CMakeBuild(build_ext):
         out_dir = pathlib.Path(self.get_ext_fullpath(ext.name)).parent.resolve()
         jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL", str(os.cpu_count() or 1))
         existing = os.environ.get("PETERSEN_CMAKE_BUILD_DIR")
+        if existing is None and configured_for_python(root / "build" / "release"):
+            existing = str(root / "build" / "release")
         if existing:
             self.build_in_existing_tree(pathlib.Path(existing).resolve(), out_dir, jobs)
             return
@@ -53,18 +86,18 @@ class CMakeBuild(build_ext):
             f"-DPython_EXECUTABLE={sys.executable}",
             f"-DCMAKE_LIBRARY_OUTPUT_DIRECTORY={out_dir}",
         ]
-        subprocess.run(configure, check=True)
-        subprocess.run(["cmake", "--build", str(build_dir), "--target", "_petersen",
-                        "--parallel", jobs], check=True)
+        run_with_progress(configure)
+        run_with_progress(["cmake", "--build", str(build_dir), "--target", "_petersen",
+                           "--parallel", jobs])
 
     @staticmethod
     def build_in_existing_tree(build_dir: pathlib.Path, out_dir: pathlib.Path, jobs: str) -> None:
-        cache = build_dir / "CMakeCache.txt"
-        if "PETERSEN_PYTHON:BOOL=ON" not in (cache.read_text() if cache.exists() else ""):
+        if not configured_for_python(build_dir):
             sys.exit(f"PETERSEN_CMAKE_BUILD_DIR={build_dir}: not a build tree configured with "
                      "-DPETERSEN_PYTHON=ON")
-        subprocess.run(["cmake", "--build", str(build_dir), "--target", "_petersen",
-                        "--parallel", jobs], check=True)
+        print(f"petersen: reusing the build tree {build_dir}", file=progress_stream())
+        run_with_progress(["cmake", "--build", str(build_dir), "--target", "_petersen",
+                           "--parallel", jobs])
         # The tree's Python is the one it was configured with: its module must be this one's.
         module = build_dir / "python" / ("_petersen" + sysconfig.get_config_var("EXT_SUFFIX"))
         if not module.exists():

@@ -34,14 +34,15 @@ std::uint64_t greedy_left(const PolygonMesh& mesh) {
 }
 
 void run(const std::string& name, const PolygonMesh& mesh) {
-  const QuadResult best = quadrangulate(mesh, {.algorithm = Algorithm::automatic});
+  const QuadResult best =
+      quadrangulate(mesh, {.objective = Objective::pairs, .algorithm = Algorithm::automatic});
   const QuadStats& s = best.stats;
   std::string all_quad = "refused";
   double all_quad_seconds = 0;
   std::uint64_t added = 0;
   try {
-    const QuadResult result =
-        quadrangulate(mesh, {.algorithm = Algorithm::automatic, .all_quad = true});
+    const QuadResult result = quadrangulate(
+        mesh, {.objective = Objective::pairs, .algorithm = Algorithm::automatic, .all_quad = true});
     added = result.stats.added_vertices;
     all_quad_seconds = result.stats.total_seconds;
     all_quad = std::to_string(added);

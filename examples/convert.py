@@ -19,7 +19,9 @@ import petersen
 
 
 def convert(mesh, algorithm, objective, all_quad):
-    result = petersen.quadrangulate(mesh.V, mesh.F, algorithm=algorithm, objective=objective,
+    # The algorithm is the pairs objective's: the cost objectives run the minimum-cost matching.
+    result = petersen.quadrangulate(mesh.V, mesh.F, objective=objective,
+                                    algorithm=algorithm if objective == "pairs" else "auto",
                                     all_quad=all_quad)
     cost = petersen.quad_quality(result.V, result.quads)
     return result, cost

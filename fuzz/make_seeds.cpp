@@ -1,6 +1,7 @@
 // Writes the fuzzers' seed corpora: small meshes made by the project's own generators and
-// writers, in every format the readers take (OFF, OBJ in several corner spellings, PLY ascii,
-// binary little and big endian), triangles and polygons; and small graphs from the graph
+// writers, in every format the readers take (OFF, OBJ in several corner spellings and with
+// dangling attribute references, PLY ascii, binary little and big endian, faces and triangle
+// strips), triangles, polygons, degenerate and duplicate faces; and small graphs from the graph
 // generators as DIMACS and edge lists, with and without costs. Usage: petersen_fuzz_seeds DIR;
 // writes DIR/off, DIR/obj, DIR/ply, DIR/dimacs and DIR/edges.
 
@@ -170,6 +171,77 @@ std::string ply_other(const PolygonMesh& mesh, bool ascii) {
   return out;
 }
 
+// The mesh's triangles as PLY triangle strips (ascii or binary little endian): each triangle a
+// strip of its own, the first few joined into one strip by a repeated vertex, a -1 between
+// strips.
+std::string ply_tristrips(const PolygonMesh& mesh, bool ascii) {
+  std::vector<std::int32_t> items;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const auto c = mesh.face(f);
+    if (c.size() != 3) continue;
+    items.insert(items.end(), c.begin(), c.end());
+    if (f % 2 == 0) items.push_back(c[2]);  // a turn: triangles repeating a vertex
+    items.push_back(-1);
+  }
+  std::string out = std::string("ply\nformat ") + (ascii ? "ascii" : "binary_little_endian") +
+                    " 1.0\nelement vertex " + std::to_string(mesh.positions.size()) +
+                    "\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1"
+                    "\nproperty list int int vertex_indices\nend_header\n";
+  auto put = [&](const void* p, std::size_t n) {
+    std::string raw(static_cast<const char*>(p), n);
+    if (std::endian::native == std::endian::big) raw = std::string(raw.rbegin(), raw.rend());
+    out += raw;
+  };
+  for (const auto& p : mesh.positions) {
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    if (ascii) {
+      out += std::to_string(xyz[0]) + " " + std::to_string(xyz[1]) + " " + std::to_string(xyz[2]) +
+             "\n";
+    } else {
+      for (float x : xyz) put(&x, 4);
+    }
+  }
+  const auto count = static_cast<std::int32_t>(items.size());
+  if (ascii) {
+    out += std::to_string(count);
+    for (std::int32_t v : items) out += " " + std::to_string(v);
+    out += "\n";
+  } else {
+    put(&count, 4);
+    for (std::int32_t v : items) put(&v, 4);
+  }
+  return out;
+}
+
+// An OBJ whose faces name normals and texture coordinates the file does not have (as a
+// subdivision test suite writes them), every other face.
+std::string obj_dangling(const PolygonMesh& mesh) {
+  std::string out = "# seed\nvt 0 0\n";
+  for (const auto& p : mesh.positions) {
+    out += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) +
+           "\n";
+  }
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    out += "f";
+    for (VertexId v : mesh.face(f)) {
+      out += " " + std::to_string(v + 1) + (f % 2 == 0 ? "//1" : "/2");
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+// The mesh with degenerate faces (a triangle's corner collapsed onto the one before it) and a
+// duplicate of its first face.
+PolygonMesh with_degenerate_faces(PolygonMesh mesh) {
+  const std::array<VertexId, 3> sliver{mesh.corners[0], mesh.corners[1], mesh.corners[0]};
+  const std::vector<VertexId> first(mesh.face(0).begin(), mesh.face(0).end());
+  mesh.add_face(sliver);
+  mesh.add_face(first);
+  mesh.corners[mesh.face(1).data() - mesh.corners.data() + 1] = mesh.face(1)[0];
+  return mesh;
+}
+
 // A graph as DIMACS (1-based, a comment, costs on every edge line when `costs`) and as an edge
 // list (0-based, a header and a comment, the same costs).
 void save_graph(const fs::path& dir, const std::string& name, const CubicGraph& graph, bool costs) {
@@ -214,6 +286,12 @@ int main(int argc, char** argv) {
     save(dir / "obj" / (name + "-spellings.obj"), obj_spellings(mesh));
     save(dir / "ply" / (name + "-ascii.ply"), ply_other(mesh, true));
     save(dir / "ply" / (name + "-big-endian.ply"), ply_other(mesh, false));
+    save(dir / "obj" / (name + "-dangling.obj"), obj_dangling(mesh));
+    write_mesh((dir / "off" / (name + "-degenerate.off")).string(), with_degenerate_faces(mesh));
+    if (mesh.all_triangles()) {
+      save(dir / "ply" / (name + "-tristrips-ascii.ply"), ply_tristrips(mesh, true));
+      save(dir / "ply" / (name + "-tristrips.ply"), ply_tristrips(mesh, false));
+    }
   }
   save_graph(dir, "petersen", petersen_graph(), false);
   save_graph(dir, "petersen-costs", petersen_graph(), true);

@@ -155,6 +155,13 @@ void write_stats_json(const MatchReport& r) {
   write_printed(r.args.stats_json, [&](std::FILE* out) { print_stats_json(out, r); });
 }
 
+// The algorithms that run on a graph: all but lrs, which needs a mesh.
+std::vector<std::string> graph_algorithm_names() {
+  std::vector<std::string> names = names_of<Algorithm>();
+  std::erase(names, std::string(to_string(Algorithm::lrs)));
+  return names;
+}
+
 }  // namespace
 
 CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
@@ -169,11 +176,14 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
       ->required();
   cmd->add_option("OUT", args.output,
                   "matched edges to write, one 'U V' line each, in the input's ids")
-      ->required();
-  cmd->add_option("--format", args.format, "dimacs or edges (default: from IN's extension)");
+      ->required()
+      ->check(in_existing_folder());
+  cmd->add_option("--format", args.format, "dimacs or edges (default: from IN's extension)")
+      ->transform(one_of(names_of<GraphFormat>()));
   cmd->add_option("--algorithm", args.algorithm,
                   "for a cubic bridgeless graph: auto (the fastest pairing, then augmenting "
                   "paths), sg, ps (Puli-Segal as the paper has it), ds, gw, frink or lemon")
+      ->transform(one_of(graph_algorithm_names(), " (lrs works on meshes: petersen quad)"))
       ->capture_default_str();
   cmd->add_option("--objective", args.objective,
                   "size: a maximum matching (perfect when there is one); from the numbers the "
@@ -181,8 +191,10 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
                   "cheapest maximum matching; weight: the heaviest matching of any size; "
                   "weight-maximum: the heaviest maximum matching; perfect-cost: the cheapest "
                   "perfect matching (exit 3 with a Tutte-Berge proof when there is none)")
+      ->transform(one_of({"size", "cost", "weight", "weight-maximum", "perfect-cost"}))
       ->capture_default_str();
   cmd->add_option("--augment", args.augment, "augmenting-path variant: local or faithful")
+      ->transform(one_of(names_of<Augment>()))
       ->capture_default_str();
   cmd->add_option("--seed", args.seed, "seed of the random orders (auto, sg, ps)")
       ->capture_default_str();
@@ -301,6 +313,7 @@ int run_match(const MatchArgs& args) {
     write_stats_json({args, format ? *format : graph_format_of(args.input), graph, matched,
                       cheapest, costs, size, perfect, refused, gap, read_seconds, cost_seconds,
                       match_seconds, write_seconds, total_seconds, write});
+    std::printf("written     %s\n", args.stats_json.c_str());
   }
   if (refused) {
     std::fprintf(stderr, "petersen: %s has no perfect matching (%s); nothing written to %s\n",

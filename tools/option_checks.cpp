@@ -1,5 +1,7 @@
 #include "option_checks.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -41,6 +43,27 @@ CLI::Validator in_existing_folder() {
         return "no such folder to write into: " + folder.string();
       },
       "");
+}
+
+CLI::Validator one_of(std::vector<std::string> names, std::string note) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "" : ", ") + name;
+  auto lower = [](std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    return text;
+  };
+  return CLI::Validator(
+      [names, list, note, lower](std::string& text) -> std::string {
+        for (const std::string& name : names) {
+          if (lower(name) == lower(text)) {
+            text = name;
+            return {};
+          }
+        }
+        return "unknown value " + text + ": one of " + list + note;
+      },
+      "{" + list + "}");
 }
 
 }  // namespace petersen::cli

@@ -88,7 +88,16 @@ std::uint64_t parse_memory_size(const std::string& text) {
 
 std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
                                                const std::string& memory_limit) {
-  if (!memory_limit.empty()) return parse_memory_size(memory_limit);
+  if (!memory_limit.empty()) {
+    if (!ends_with_nocase(input, ".ply")) {
+      throw CLI::ValidationError(
+          "--memory-limit",
+          "the out-of-core conversion reads a binary PLY of triangles (.ply), "
+          "not " +
+              input + "; without --memory-limit it is converted in memory");
+    }
+    return parse_memory_size(memory_limit);
+  }
   std::error_code error;
   const std::uintmax_t bytes = std::filesystem::file_size(input, error);
   if (error || !ends_with_nocase(input, ".ply")) return std::nullopt;
@@ -120,8 +129,8 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
                                              .part_triangles = args.part_triangles,
                                              .augment = *augment,
                                              .threads = args.threads});
-  std::printf("%s: %llu triangles in %llu parts of %llu, out of core\n", args.input.c_str(),
-              (unsigned long long)s.triangles, (unsigned long long)s.parts,
+  std::printf("%s: %llu triangles in %llu part%s of %llu, out of core\n", args.input.c_str(),
+              (unsigned long long)s.triangles, (unsigned long long)s.parts, s.parts == 1 ? "" : "s",
               (unsigned long long)s.part_triangles);
   std::printf(
       "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "

@@ -7,12 +7,14 @@
 #include <optional>
 #include <vector>
 
+#include "flag_suggestions.hpp"
 #include "json_text.hpp"
 #include "keep_edges.hpp"
 #include "match_command.hpp"
 #include "option_checks.hpp"
 #include "out_of_core_command.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/generators/knot_tube.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/huge_pages.hpp"
@@ -20,6 +22,7 @@
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/render/render_mesh.hpp"
@@ -37,15 +40,15 @@ void warn_dropped(const std::string& path, const std::vector<std::string>& dropp
   }
 }
 
-PolygonMesh read_mesh_warning(const std::string& path) {
+PolygonMesh read_mesh_warning(const std::string& path, bool strict = false) {
   std::vector<std::string> dropped;
-  PolygonMesh mesh = read_mesh(path, &dropped);
+  PolygonMesh mesh = read_mesh(path, &dropped, {.strict = strict});
   warn_dropped(path, dropped);
   return mesh;
 }
 
-int info(const std::string& path) {
-  const PolygonMesh mesh = read_mesh_warning(path);
+int info(const std::string& path, bool strict) {
+  const PolygonMesh mesh = read_mesh_warning(path, strict);
   std::fputs(describe(inspect_mesh(mesh)).c_str(), stdout);
   // The quads' shape, by the measure `petersen quad` reports and --objective quality minimises.
   const QualityFigures quality = quality_figures(quad_costs(mesh));
@@ -93,22 +96,65 @@ int render(const RenderArgs& args) {
 }
 
 struct QuadArgs {
-  std::string input, output, algorithm = "auto", augment = "local", objective = "pairs", stats_json,
+  std::string input, output, algorithm = "auto", augment = "local", objective = "quads", stats_json,
                              render;
   std::vector<double> view;
   std::uint32_t render_width = 800, render_height = 800;
   std::uint64_t seed = 1;
   std::uint32_t threads = 0;
-  bool all_quad = false, keep_polygons = false;
+  bool all_quad = false, keep_polygons = false, strict = false, drop_duplicate_faces = false;
   std::optional<double> sharp_angle, max_corner_deviation;
+  double triangle_cost = kDefaultTriangleCost, flow_weight = kDefaultFlowWeight;
   std::string keep_edges;
   std::vector<std::string> cross;
   std::string memory_limit;
   std::uint64_t part_triangles = 0;
+  std::vector<std::string> given;  // the flags on the command line (given_flags)
 };
+
+// The flags given on `command`'s command line, by their long names.
+std::vector<std::string> given_flags(const CLI::App& command) {
+  std::vector<std::string> names;
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->count() > 0 && !option->get_lnames().empty()) {
+      names.push_back("--" + option->get_lnames().front());
+    }
+  }
+  return names;
+}
+
+// The out-of-core conversion pairs by the default algorithm and writes the mesh and its stats:
+// any other flag would be ignored there, so it is refused.
+// The out-of-core conversion pairs the maximum, part by part (--objective pairs): the cost
+// objectives need the whole pairable graph at once. Without --objective it says so in one line.
+void refuse_out_of_core_flags(const QuadArgs& args) {
+  std::string refused;
+  bool objective_given = false;
+  for (const std::string& flag : args.given) {
+    if (flag == "--objective" && args.objective == "pairs") objective_given = true;
+    if (flag != "--memory-limit" && flag != "--part-triangles" && flag != "--augment" &&
+        flag != "--threads" && flag != "--stats-json" &&
+        !(flag == "--objective" && objective_given)) {
+      refused += (refused.empty() ? "" : ", ") + flag;
+    }
+  }
+  if (!refused.empty()) {
+    throw CLI::ValidationError("--memory-limit",
+                               "the out-of-core conversion takes --part-triangles, --augment, "
+                               "--threads, --stats-json and --objective pairs only, not " +
+                                   refused);
+  }
+  if (!objective_given) {
+    std::fputs(
+        "petersen: out of core: pairing the maximum, part by part (--objective pairs); the "
+        "default objective, quads, needs the whole mesh in memory\n",
+        stderr);
+  }
+}
 
 int quad(const QuadArgs& args) {
   if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
+    refuse_out_of_core_flags(args);
     return quad_out_of_core_command({.input = args.input,
                                      .output = args.output,
                                      .augment = args.augment,
@@ -117,24 +163,26 @@ int quad(const QuadArgs& args) {
                                      .part_triangles = args.part_triangles,
                                      .threads = args.threads});
   }
+  if (args.part_triangles > 0) {
+    throw CLI::ValidationError("--part-triangles",
+                               "sizes the parts of the out-of-core conversion: give --memory-limit "
+                               "with it (IN a binary PLY)");
+  }
   const auto algorithm = parse_algorithm(args.algorithm);
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
-  mesh_format_of(args.output);  // an unknown output format fails before any work
-  std::vector<CutCause> cross;
-  for (const std::string& name : args.cross) {
-    const auto cause = parse_cut_cause(name);
-    if (!cause || !is_attribute_cause(*cause)) {
-      throw CLI::ValidationError("--cross",
-                                 "not a cut of the mesh's attributes: " + name +
-                                     " (uv_seam, normal_seam, material, group, object, smoothing "
-                                     "or face_property)");
-    }
-    cross.push_back(*cause);
+  if (*objective != Objective::pairs && *algorithm != Algorithm::automatic) {
+    throw CLI::ValidationError(
+        "--algorithm", "chooses how --objective pairs pairs, and --objective " + args.objective +
+                           " pairs by the minimum-cost matching: add "
+                           "--objective pairs");
   }
+  mesh_format_of(args.output);  // an unknown output format fails before any work
+  std::vector<CutCause> cross;  // names checked by --cross's one_of
+  for (const std::string& name : args.cross) cross.push_back(*parse_cut_cause(name));
   const auto view = parse_view(args.view);
   if (!args.render.empty() && !is_picture_path(args.render)) {
     throw CLI::ValidationError("--render", "a picture must be .png or .svg: " + args.render);
@@ -148,6 +196,8 @@ int quad(const QuadArgs& args) {
   report.options.all_quad = args.all_quad;
   report.options.keep_polygons = args.keep_polygons;
   report.options.objective = *objective;
+  report.options.triangle_cost = args.triangle_cost;
+  report.options.flow_weight = args.flow_weight;
   report.options.peer = &lemon_peer::maximum_matching;
   report.options.cross = cross;
   report.options.threads = args.threads;
@@ -155,7 +205,16 @@ int quad(const QuadArgs& args) {
   // lrs free the input's corners early (12 bytes per triangle at its peak).
   report.options.sources = false;
   Stopwatch total, clock;
-  PolygonMesh mesh = read_mesh_warning(args.input);
+  PolygonMesh mesh = read_mesh_warning(args.input, args.strict);
+  if (args.drop_duplicate_faces) {
+    DroppedFaces copies = drop_duplicate_faces(mesh);
+    if (!copies.dropped.empty()) {
+      warn_dropped(args.input, {std::to_string(copies.dropped.size()) +
+                                " duplicate faces (--drop-duplicate-faces), the first face " +
+                                std::to_string(copies.dropped[0])});
+    }
+    mesh = std::move(copies.mesh);
+  }
   const std::vector<std::array<VertexId, 2>> keep_edges =
       args.keep_edges.empty() ? std::vector<std::array<VertexId, 2>>{}
                               : read_keep_edges(args.keep_edges, mesh.positions.size());
@@ -182,6 +241,7 @@ int quad(const QuadArgs& args) {
   print_summary(stdout, report);
   if (!args.stats_json.empty()) {
     write_printed(args.stats_json, [&](std::FILE* out) { write_json(out, report); });
+    std::printf("written     %s\n", args.stats_json.c_str());
   }
   if (!args.render.empty()) {
     const QuadStats& s = result.stats;
@@ -190,17 +250,19 @@ int quad(const QuadArgs& args) {
     options.width = args.render_width;
     options.height = args.render_height;
     options.first_added_vertex = input_vertices;
-    options.caption = {std::filesystem::path(args.input).filename().string() + " by " +
-                           (report.options.objective == Objective::quality
-                                ? std::string("min-cost (objective quality)")
-                                : std::string(to_string(report.options.algorithm))) +
-                           (args.all_quad ? ", all quads" : ""),
-                       std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) +
-                           " pairs, " + std::to_string(s.triangles_left) + " triangles left, " +
-                           std::to_string(s.polygons_kept) + " polygons kept, " +
-                           std::to_string(s.added_vertices) + " vertices added",
-                       describe(quality_figures(quad_costs(result.mesh)))};
+    options.caption = {
+        std::filesystem::path(args.input).filename().string() + " by " +
+            (report.options.objective != Objective::pairs
+                 ? "min-cost (objective " + std::string(to_string(report.options.objective)) + ")"
+                 : std::string(to_string(report.options.algorithm))) +
+            (args.all_quad ? ", all quads" : ""),
+        std::to_string(s.faces_in) + " faces in: " + std::to_string(s.pairs) + " pairs, " +
+            std::to_string(s.triangles_left) + " triangles left, " +
+            std::to_string(s.polygons_kept) + " polygons kept, " +
+            std::to_string(s.added_vertices) + " vertices added",
+        describe(quality_figures(quad_costs(result.mesh)))};
     render_mesh(result.mesh, args.render, options);
+    std::printf("written     %s\n", args.render.c_str());
   }
   return 0;
 }
@@ -208,7 +270,8 @@ int quad(const QuadArgs& args) {
 struct GenerateArgs {
   std::string output, kind = "plate";
   std::uint32_t holes_x = 2, holes_y = 1, subdivision = 4, splits = 0, flips = 0;
-  std::uint32_t nx = 16, ny = 16, holes = 0, fins = 0, pinches = 0, flip_faces = 0;
+  std::optional<std::uint32_t> nx, ny;  // each kind's own default when not given (grid_size)
+  std::uint32_t holes = 0, fins = 0, pinches = 0, flip_faces = 0;
   bool dents = false, spatial_order = false;
   double jitter = 0.1;
   std::uint64_t seed = 1;
@@ -224,13 +287,58 @@ PolygonMesh randomized_plate(const GenerateArgs& args) {
   return mesh;
 }
 
+// --nx and --ny as given, or the kind's defaults: a torus's lattice wraps round a ring of major
+// radius nx/ny, so it needs nx >= 3 ny for its hole; the trefoil's quads are near square at
+// 8.5 segments per side.
+std::array<std::uint32_t, 2> grid_size(const GenerateArgs& args) {
+  const std::array<std::uint32_t, 2> defaults = args.kind == "jittered-torus" ? std::array{48u, 16u}
+                                                : args.kind == "trefoil" ? std::array{136u, 16u}
+                                                                         : std::array{16u, 16u};
+  return {args.nx.value_or(defaults[0]), args.ny.value_or(defaults[1])};
+}
+
+// The sizes each kind needs, named by the flags that set them, before any work.
+void check_grid_size(const GenerateArgs& args) {
+  const auto [nx, ny] = grid_size(args);
+  const std::string size = std::to_string(nx) + " x " + std::to_string(ny);
+  const bool grid = args.kind == "klein" || args.kind == "trefoil" || args.kind == "open-grid" ||
+                    args.kind.starts_with("jittered-");
+  if (!grid && (args.nx || args.ny)) {
+    throw CLI::ValidationError("--nx, --ny", args.kind +
+                                                 " has no grid to size: --nx and --ny "
+                                                 "are for klein, trefoil and the grids");
+  }
+  const bool closed = args.kind == "klein" || args.kind == "trefoil";
+  if (closed && (nx < 3 || ny < 3)) {
+    throw CLI::ValidationError("--nx, --ny",
+                               args.kind + " needs --nx >= 3 and --ny >= 3, not " + size);
+  }
+  if (args.kind == "jittered-torus" && (ny < 3 || nx < 3 * std::uint64_t{ny})) {
+    throw CLI::ValidationError("--nx, --ny",
+                               "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny (the ring "
+                               "round its hole), not " +
+                                   size);
+  }
+  if ((args.kind == "open-grid" || args.kind == "jittered-grid") && (nx == 0 || ny == 0)) {
+    throw CLI::ValidationError("--nx, --ny", args.kind + " needs --nx >= 1 and --ny >= 1");
+  }
+  if (6 * std::uint64_t{nx} * ny > 0xFFFFFFFFull) {
+    throw CLI::ValidationError("--nx, --ny",
+                               size +
+                                   " makes more than 2^32 - 1 corners (at most about 715 "
+                                   "million triangles)");
+  }
+}
+
 PolygonMesh generated_surface(const GenerateArgs& args) {
-  if (args.kind == "klein") return klein_bottle(args.nx, args.ny);
+  const auto [nx, ny] = grid_size(args);
+  if (args.kind == "klein") return klein_bottle(nx, ny);
   if (args.kind == "projective") return projective_plane(args.subdivision);
-  if (args.kind == "open-grid") return open_grid(args.nx, args.ny);
+  if (args.kind == "open-grid") return open_grid(nx, ny);
+  if (args.kind == "trefoil") return trefoil_tube({.segments = nx, .sides = ny});
   if (args.kind == "jittered-grid" || args.kind == "jittered-torus") {
-    return jittered_grid({.nx = args.nx,
-                          .ny = args.ny,
+    return jittered_grid({.nx = nx,
+                          .ny = ny,
                           .jitter = args.jitter,
                           .torus = args.kind == "jittered-torus",
                           .seed = args.seed});
@@ -250,6 +358,8 @@ PolygonMesh generated_mesh(const GenerateArgs& args) {
 
 int generate(const GenerateArgs& args) {
   if (args.kind == "streamed-plate") return generate_streamed_plate(args.output, args.triangles);
+  mesh_format_of(args.output);  // an unknown format fails before any work
+  check_grid_size(args);
   const PolygonMesh mesh = generated_mesh(args);
   write_mesh(args.output, mesh);
   std::printf("%zu triangles, %zu vertices written to %s\n", mesh.face_count(),
@@ -260,6 +370,13 @@ int generate(const GenerateArgs& args) {
 // render_mesh's limits, checked before any work.
 CLI::Range picture_side() {
   return CLI::Range(200u, 16384u);
+}
+
+// What --cross takes: the causes of the cuts of the mesh's attributes.
+std::vector<std::string> attribute_cause_names() {
+  std::vector<std::string> names;
+  for (const CutCause cause : attribute_causes()) names.emplace_back(to_string(cause));
+  return names;
 }
 
 // `petersen quad` and its flags, into `args`.
@@ -278,17 +395,33 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
       ->add_option("--algorithm", quad_args.algorithm,
                    "auto (the fastest pairing, then augmenting paths), sg, ps (Puli-Segal as the "
                    "paper has it), ds, gw, frink, lemon or lrs")
+      ->transform(one_of(names_of<Algorithm>()))
       ->capture_default_str();
   quad_cmd
       ->add_option("--augment", quad_args.augment,
                    "augmenting-path variant for auto, sg and ps: local or faithful")
+      ->transform(one_of(names_of<Augment>()))
       ->capture_default_str();
   quad_cmd->add_option("--seed", quad_args.seed, "seed of the random orders (auto, sg, ps)")
       ->capture_default_str();
   quad_cmd
       ->add_option("--objective", quad_args.objective,
-                   "pairs (any maximum pairing, by --algorithm) or quality (the exact "
-                   "minimum-cost pairing by quad shape, certified)")
+                   "quads (the exact least-cost pairing by quad shape and edge flow, leaving a "
+                   "triangle where pairing it costs more than --triangle-cost; certified), "
+                   "pairs (any maximum pairing, by --algorithm: fastest) or quality (the exact "
+                   "maximum pairing of least quad shape cost, certified)")
+      ->transform(one_of(names_of<Objective>()))
+      ->capture_default_str();
+  quad_cmd
+      ->add_option("--triangle-cost", quad_args.triangle_cost,
+                   "--objective quads: what leaving a triangle costs, in degrees of quad cost "
+                   "(higher pairs more)")
+      ->check(finite_in(0, petersen::kMaxTriangleCost))
+      ->capture_default_str();
+  quad_cmd
+      ->add_option("--flow-weight", quad_args.flow_weight,
+                   "--objective quads: degrees of shape per degree of edge flow (0: shape alone)")
+      ->check(finite_in(0, petersen::kMaxFlowWeight))
       ->capture_default_str();
   quad_cmd
       ->add_option("--sharp-angle", quad_args.sharp_angle,
@@ -307,7 +440,9 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
                    "let pairs cross these cuts of the mesh's attributes, which are on by default: "
                    "uv_seam, normal_seam, material, group, object, smoothing, face_property "
                    "(comma-separated)")
-      ->delimiter(',');
+      ->delimiter(',')
+      ->transform(one_of(attribute_cause_names(),
+                         " (the cuts of the mesh's attributes; no pair crosses the others)"));
   quad_cmd
       ->add_option("--threads", quad_args.threads,
                    "threads for the phases that split into independent parts (0: every core)")
@@ -318,6 +453,11 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
   quad_cmd->add_flag(
       "--keep-polygons", quad_args.keep_polygons,
       "with --all-quad: keep the input's polygons that are not triangles as they are");
+  quad_cmd->add_flag("--drop-duplicate-faces", quad_args.drop_duplicate_faces,
+                     "drop faces with the same vertices as an earlier face before pairing");
+  quad_cmd->add_flag("--strict", quad_args.strict,
+                     "refuse a texture coordinate or normal index the file does not have, "
+                     "instead of dropping it with a warning");
   quad_cmd
       ->add_option("--stats-json", quad_args.stats_json,
                    "also write the summary as one JSON object to this file (whole, then renamed "
@@ -353,7 +493,9 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
       "corner's deviation from 90 degrees, triangles beside quads highlighted");
   render_cmd->add_option("MESH", render_args.input, "OFF, OBJ or PLY file, optionally .gz")
       ->required();
-  render_cmd->add_option("OUT", render_args.output, "picture to write: .png or .svg")->required();
+  render_cmd->add_option("OUT", render_args.output, "picture to write: .png or .svg")
+      ->required()
+      ->check(in_existing_folder());
   render_cmd->add_option("--view", render_args.view, "view direction x,y,z (default: automatic)")
       ->delimiter(',')
       ->expected(3);
@@ -374,9 +516,13 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
       "(genus 0), a Klein bottle, a projective plane, an open grid or a jittered grid or torus; "
       "optionally with holes, "
       "fins, pinched vertices and flipped faces");
-  gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")->required();
-  gen_cmd->add_option("--holes-x", gen_args.holes_x)->capture_default_str();
-  gen_cmd->add_option("--holes-y", gen_args.holes_y)->capture_default_str();
+  gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")
+      ->required()
+      ->check(in_existing_folder());
+  gen_cmd->add_option("--holes-x", gen_args.holes_x, "plate: through-holes along x")
+      ->capture_default_str();
+  gen_cmd->add_option("--holes-y", gen_args.holes_y, "plate: through-holes along y")
+      ->capture_default_str();
   gen_cmd
       ->add_option("--subdivision", gen_args.subdivision,
                    "squares per voxel face side (plate); midpoint subdivision rounds (projective)")
@@ -390,26 +536,36 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
       ->capture_default_str();
   gen_cmd->add_option("--flips", gen_args.flips, "random edge flips, for irregularity")
       ->capture_default_str();
-  gen_cmd->add_option("--seed", gen_args.seed)->capture_default_str();
+  gen_cmd
+      ->add_option("--seed", gen_args.seed,
+                   "seed of the random choices (splits, flips, jitter, diagonals, holes, fins, "
+                   "pinches, flipped faces)")
+      ->capture_default_str();
   gen_cmd
       ->add_option("--kind", gen_args.kind,
-                   "plate, klein (Klein bottle), projective (projective plane), open-grid, "
-                   "jittered-grid or jittered-torus (near-square quads cut along random "
-                   "diagonals), streamed-plate (a closed plate of --triangles, written as it is "
-                   "made: any size, binary PLY)")
-      ->check(CLI::IsMember({"plate", "klein", "projective", "open-grid", "jittered-grid",
-                             "jittered-torus", "streamed-plate"}))
+                   "plate (a voxel plate with holes), trefoil (a tube round a trefoil knot, "
+                   "made of quads each cut along one diagonal, as exporters do), klein (Klein "
+                   "bottle), projective (projective plane), open-grid, jittered-grid or "
+                   "jittered-torus (near-square quads cut along random diagonals), "
+                   "streamed-plate (a closed plate of --triangles, written as it is made: any "
+                   "size, binary PLY)")
+      ->transform(one_of({"plate", "trefoil", "klein", "projective", "open-grid", "jittered-grid",
+                          "jittered-torus", "streamed-plate"}))
       ->capture_default_str();
   gen_cmd
       ->add_option("--triangles", gen_args.triangles, "about this many triangles (streamed-plate)")
       ->capture_default_str();
-  gen_cmd->add_option("--nx", gen_args.nx, "grid columns of klein and the grids")
-      ->capture_default_str();
-  gen_cmd->add_option("--ny", gen_args.ny, "grid rows of klein and the grids")
-      ->capture_default_str();
+  gen_cmd->add_option("--nx", gen_args.nx,
+                      "columns of klein and the grids (default 16; jittered-torus: 48, at least "
+                      "3 x --ny), segments along the trefoil (default 136)");
+  gen_cmd->add_option("--ny", gen_args.ny,
+                      "rows of klein and the grids (default 16, at least 3 for klein and "
+                      "jittered-torus), sides round the trefoil's tube (default 16)");
   gen_cmd
       ->add_option("--jitter", gen_args.jitter,
-                   "jittered grids: how far a vertex may move, a fraction of the spacing")
+                   "jittered grids: how far a vertex may move, a fraction of the spacing, "
+                   "below 0.25")
+      ->check(finite_in(0, 0.2499))
       ->capture_default_str();
   gen_cmd->add_option("--holes", gen_args.holes, "random patches of faces to remove");
   gen_cmd->add_option("--fins", gen_args.fins, "triangles to add on edges (non-manifold edges)");
@@ -431,11 +587,14 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("petersen ") + petersen::kVersion);
 
   std::string info_path;
+  bool info_strict = false;
   CLI::App* info_cmd =
       app.add_subcommand("info",
                          "Print V, E, F by arity, components, boundary loops, non-manifold edges, "
                          "orientability, genus and the quads' worst-corner figures");
   info_cmd->add_option("MESH", info_path, "OFF, OBJ or PLY file, optionally .gz")->required();
+  info_cmd->add_flag("--strict", info_strict,
+                     "refuse a texture coordinate or normal index the file does not have");
 
   QuadArgs quad_args;
   CLI::App* quad_cmd = add_quad_command(app, quad_args);
@@ -446,10 +605,19 @@ int main(int argc, char** argv) {
   MatchArgs match_args;
   CLI::App* match_cmd = add_match_command(app, match_args);
 
-  CLI11_PARSE(app, argc, argv);
   try {
-    if (info_cmd->parsed()) return info(info_path);
-    if (quad_cmd->parsed()) return quad(quad_args);
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    if (code != 0) print_suggestions(app, std::vector<std::string>(argv + 1, argv + argc), stderr);
+    return code;
+  }
+  try {
+    if (info_cmd->parsed()) return info(info_path, info_strict);
+    if (quad_cmd->parsed()) {
+      quad_args.given = given_flags(*quad_cmd);
+      return quad(quad_args);
+    }
     if (gen_cmd->parsed()) return generate(gen_args);
     if (render_cmd->parsed()) return render(render_args);
     if (match_cmd->parsed()) return run_match(match_args);

@@ -48,27 +48,38 @@ void print_summary(std::FILE* out, const RunReport& r) {
                s.faces_in, s.triangles, s.polygons_kept, s.vertices);
   std::fprintf(out, "components  %" PRIu64 " (%" PRIu64 " closed)\n", s.components,
                s.closed_components);
-  std::fprintf(out, "cut edges   %" PRIu64 " of %" PRIu64 ":", s.cuts.total(), s.mesh_edges);
-  for (int c = 0; c < kCutCauses; ++c) {
+  std::fprintf(out, "cut edges   %" PRIu64 " of %" PRIu64, s.cuts.total(), s.mesh_edges);
+  for (int c = 0, listed = 0; c < kCutCauses; ++c) {
     if (s.cuts.by_cause[c] > 0) {
-      std::fprintf(out, " %s %" PRIu64, std::string(to_string(CutCause(c))).c_str(),
-                   s.cuts.by_cause[c]);
+      std::fprintf(out, "%s %s %" PRIu64, listed++ == 0 ? ":" : ",",
+                   std::string(to_string(CutCause(c))).c_str(), s.cuts.by_cause[c]);
     }
   }
   const Algorithm a = r.options.algorithm;
-  const bool quality = r.options.objective == Objective::quality;
+  const bool quality = r.options.objective != Objective::pairs;
   const bool augments = !quality && (a == Algorithm::automatic || a == Algorithm::sg ||
                                      a == Algorithm::ps || a == Algorithm::lrs);
+  const std::string by_cost =
+      "min-cost (objective " + std::string(to_string(r.options.objective)) + ")";
   std::fprintf(out, "\nalgorithm   %s%s%s\n",
-               quality ? "min-cost (objective quality)" : std::string(to_string(a)).c_str(),
+               quality ? by_cost.c_str() : std::string(to_string(a)).c_str(),
                augments ? ", augment " : "",
                augments ? std::string(to_string(r.options.augment)).c_str() : "");
   if (s.lrs_fallback_components > 0) {
-    std::fprintf(out, "            %" PRIu64 " closed components by ps: lrs needs %s\n",
-                 s.lrs_fallback_components, s.lrs_fallback_reason.c_str());
+    // The default algorithm takes what lrs refuses (quadrangulate.hpp); the reason is the first
+    // component's.
+    std::fprintf(out,
+                 "            lrs refused %" PRIu64
+                 " closed component%s (paired by auto instead): %s\n",
+                 s.lrs_fallback_components, s.lrs_fallback_components == 1 ? "" : "s",
+                 s.lrs_fallback_reason.c_str());
   }
   std::fprintf(out, "load        %.4f s\n", r.load_seconds);
   std::fprintf(out, "check       %.4f s\n", s.check_seconds);
+  if (r.options.objective == Objective::quads && r.options.flow_weight > 0) {
+    std::fprintf(out, "field       %.4f s  cross field in %u iterations (part of check)\n",
+                 s.field_seconds, s.field_iterations);
+  }
   std::fprintf(out, "dual        %.4f s\n", s.dual_seconds);
   std::fprintf(out, "initial     %.4f s  paired %.4f %%  unpaired %" PRIu64 "%s\n",
                s.matching.initial_seconds, initial_paired_percent(s),
@@ -87,11 +98,25 @@ void print_summary(std::FILE* out, const RunReport& r) {
                  "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64 " vertices\n",
                  s.flipped_edges, s.irreducible_vertices);
   }
-  std::fprintf(out, "verify      %.4f s  maximum %s\n", s.verify_seconds,
-               s.maximum_certified ? "certified" : "NOT certified");
+  if (r.options.objective == Objective::quads) {
+    // Not a maximum pairing by design: a triangle stays where leaving it costs less.
+    std::fprintf(out, "verify      %.4f s  optimum %s%s\n", s.verify_seconds,
+                 s.optimality_certified ? "certified" : "NOT certified",
+                 s.maximum_certified ? ", every triangle paired" : "");
+  } else {
+    std::fprintf(out, "verify      %.4f s  maximum %s\n", s.verify_seconds,
+                 s.maximum_certified ? "certified" : "NOT certified");
+  }
   std::fprintf(out, "pairs       %" PRIu64 "  triangles left %" PRIu64 " (%.4f s)\n", s.pairs,
                s.triangles_left, s.quads_seconds);
   print_left_causes(out, s);
+  if (s.duplicate_faces > 0) {
+    std::fprintf(out,
+                 "duplicates  %" PRIu64
+                 " faces repeat an earlier face's vertices: no pair crosses "
+                 "their edges; --drop-duplicate-faces drops the copies\n",
+                 s.duplicate_faces);
+  }
   std::fprintf(out,
                "quality     median %.2f, 95th percentile %.2f degrees, %" PRIu64
                " non-convex, total %.4f%s\n",
@@ -111,7 +136,11 @@ void print_summary(std::FILE* out, const RunReport& r) {
                  s.all_quad_certified ? ", certified" : ", not proved", s.split_quads,
                  s.split_quality_median, s.split_quality_p95, s.all_quad_seconds);
   }
-  std::fprintf(out, "write       %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
+  if (s.degenerate_faces > 0) {
+    std::fprintf(out, "degenerate  %" PRIu64 " faces repeat a vertex: kept as they are\n",
+                 s.degenerate_faces);
+  }
+  std::fprintf(out, "written     %s (%.4f s)\n", r.output.c_str(), r.write_seconds);
   std::fprintf(out, "total       %.4f s\n", r.total_seconds);
 }
 

@@ -3,7 +3,9 @@
 // v/vt/vn; a negative index counts back from the last one read so far, -1 being the latest, per
 // the OBJ spec), with the face attributes "usemtl", "g", "o" and "s" set, and "mtllib" lines.
 // Faces have any number of corners from 3 on. Every other statement (l, p, curv, vp, ...) is read
-// past and reported as dropped.
+// past and reported as dropped. A texture coordinate or normal index past those read so far
+// (dangling) drops that attribute of the face, reported once per attribute, or is refused when
+// strict. Messages number vertices, texture coordinates, normals and faces from 1, as OBJ does.
 
 #include <string>
 #include <unordered_map>
@@ -49,8 +51,9 @@ const char* const kColourNames[3] = {"red", "green", "blue"};
 // face line so that one allocates nothing. Messages are built only on error.
 class ObjReader {
  public:
-  ObjReader(std::string_view bytes, const std::string& source)
-      : lines_{bytes},
+  ObjReader(std::string_view bytes, const std::string& source, const ReadMeshOptions& options)
+      : options_(options),
+        lines_{bytes},
         at_{source, lines_},
         source_(source),
         attributes_(mesh_.attributes),
@@ -93,20 +96,16 @@ class ObjReader {
     std::array<double, 6> values;
     std::string_view token;
     for (std::size_t k = 0; k < 3; ++k) {
-      if (!tokens.next(token)) {
-        at_.fail("vertex " + std::to_string(mesh_.positions.size()) + ": expected 3 coordinates");
-      }
+      if (!tokens.next(token)) at_.fail(vertex_name() + ": expected 3 coordinates");
       if (!text::parse_real(token, values[k])) {
-        at_.fail("vertex " + std::to_string(mesh_.positions.size()) + ": bad coordinate " +
-                 text::Located::quote(token));
+        at_.fail(vertex_name() + ": bad coordinate " + text::Located::quote(token));
       }
     }
     std::size_t count = 3;
     while (tokens.next(token)) {
       double x = 0;
       if (!text::parse_real(token, x)) {
-        at_.fail("vertex " + std::to_string(mesh_.positions.size()) + ": bad value " +
-                 text::Located::quote(token));
+        at_.fail(vertex_name() + ": bad value " + text::Located::quote(token));
       }
       if (count < values.size()) values[count] = x;
       ++count;
@@ -126,6 +125,7 @@ class ObjReader {
     face_.clear();
     face_texcoords_.clear();
     face_normals_.clear();
+    dangling_[0] = dangling_[1] = false;
     bool slashes = false;  // some corner is written with a texture coordinate or normal
     std::string_view token;
     while (tokens.next(token)) {
@@ -147,8 +147,9 @@ class ObjReader {
       read_slashed_corner(token);
     }
     if (!corner_count_ok(face_.size())) {
-      at_.fail(corner_count_error(mesh_.face_count(), face_.size()));
+      at_.fail(corner_count_error(mesh_.face_count() + 1, face_.size()));
     }
+    if (dangling_[0] || dangling_[1]) drop_dangling();
     if (!corners_fit(mesh_, face_.size())) at_.fail("more than 2^32 - 1 face corners");
     if (!slashes && attributes_.has_corner_attributes()) {
       // Corners without a texture coordinate or normal in a file that has some elsewhere.
@@ -180,18 +181,43 @@ class ObjReader {
         parts[2].empty() ? kNoAttribute : resolve(token, parts[2], 2, attributes_.normals.size()));
   }
 
-  // An index as written in a face ("3", "-1"), into the `count` values of its kind read so far.
+  // An index as written in a face ("3", "-1"), into the `count` values of its kind read so far. A
+  // texture coordinate or normal index past them is dangling: no index (kNoAttribute), the face
+  // marked for drop_dangling, unless strict.
   std::uint32_t resolve(std::string_view corner, std::string_view index_text, int kind,
                         std::size_t count) {
     std::int64_t index = 0;
     if (!text::parse_integer(index_text, index) || index == 0) bad_index(corner, kind);
     const std::int64_t signed_count = static_cast<std::int64_t>(count);
     const std::int64_t zero_based = index > 0 ? index - 1 : signed_count + index;
-    if (zero_based < 0 || zero_based >= signed_count) index_out_of_range(index, kind, count);
+    if (zero_based < 0 || zero_based >= signed_count) {
+      if (kind == 0 || options_.strict) index_out_of_range(index, kind, count);
+      dangling_[kind - 1] = true;
+      return kNoAttribute;
+    }
     return static_cast<std::uint32_t>(zero_based);
   }
 
-  std::string face_name() const { return "face " + std::to_string(mesh_.face_count()); }
+  // A face with a dangling texture coordinate or normal index has none of that attribute at any
+  // corner: half a face's normals would make a seam the file never had.
+  [[gnu::cold, gnu::noinline]] void drop_dangling() {
+    if (dangling_[0]) {
+      face_texcoords_.assign(face_.size(), kNoAttribute);
+      tally_.add(
+          "faces' texture coordinate indices past the file's texture coordinates (those "
+          "faces have none)",
+          lines_.line);
+    }
+    if (dangling_[1]) {
+      face_normals_.assign(face_.size(), kNoAttribute);
+      tally_.add("faces' normal indices past the file's normals (those faces have none)",
+                 lines_.line);
+    }
+  }
+
+  // Elements as OBJ numbers them, from 1.
+  std::string face_name() const { return "face " + std::to_string(mesh_.face_count() + 1); }
+  std::string vertex_name() const { return "vertex " + std::to_string(mesh_.positions.size() + 1); }
 
   // The messages of a bad index, out of line: the loop over corners is the reader's hot path.
   [[noreturn, gnu::cold, gnu::noinline]] void bad_index(std::string_view corner, int kind) const {
@@ -237,7 +263,7 @@ class ObjReader {
     auto& values = is_normal ? attributes_.normals : attributes_.texcoords;
     auto name = [&] {
       return std::string(is_normal ? "normal " : "texture coordinate ") +
-             std::to_string(values.size());
+             std::to_string(values.size() + 1);
     };
     std::array<double, 3> value{0, 0, 0};
     std::size_t count = 0;
@@ -312,6 +338,7 @@ class ObjReader {
     push_attribute(attributes_.face_smoothing, smoothing_, 0, faces_before);
   }
 
+  const ReadMeshOptions& options_;
   text::Lines lines_;
   const text::Located at_;
   const std::string& source_;
@@ -323,6 +350,8 @@ class ObjReader {
   std::uint32_t material_ = kNoAttribute, group_ = kNoAttribute, object_ = kNoAttribute;
   std::uint32_t smoothing_ = 0;
   bool face_statements_ = false;  // a usemtl, g, o or s line has been read
+  // Per attribute (texture coordinate, normal): the face being read names one not read so far.
+  bool dangling_[2] = {false, false};
   DroppedTally tally_;
   std::uint64_t uncoloured_vertices_ = 0;
 };
@@ -330,8 +359,8 @@ class ObjReader {
 }  // namespace
 
 PolygonMesh parse_obj(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped) {
-  return ObjReader(bytes, source).read(dropped);
+                      const ReadMeshOptions& options, std::vector<std::string>& dropped) {
+  return ObjReader(bytes, source, options).read(dropped);
 }
 
 }  // namespace petersen

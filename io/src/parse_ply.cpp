@@ -3,8 +3,10 @@
 // source (ply_sources.hpp). Kept: vertex x, y, z, the face index list, every other scalar
 // property of a vertex or face (a PropertyColumn with its declared type; a float written in ascii
 // is rounded to float, as a binary file would hold it) and MeshLab's per-corner "texcoord" face
-// list (u v per corner, or empty). Other lists and other elements are read past according to
-// their declared type and reported as dropped.
+// list (u v per corner, or empty). Or, instead of a face element, a tristrips one: each record's
+// vertex_indices list is strips separated by -1, read as their triangles (read_strips). Other
+// lists and other elements are read past according to their declared type and reported as
+// dropped.
 
 #include <bit>
 #include <cstring>
@@ -50,6 +52,10 @@ class PlyReader {
           read_binary<std::endian::native != std::endian::big>(element);
           break;
       }
+    }
+    if (strip_turns_ > 0) {
+      dropped_.push_back(std::to_string(strip_turns_) +
+                         " triangles of strips repeating a vertex (a strip's turns and joins)");
     }
     return std::move(mesh_);
   }
@@ -124,7 +130,11 @@ class PlyReader {
             in.skip(property);
             break;
           case Use::corners:
-            read_corners(element, i, property, in);
+            if (element.role == Role::strips) {
+              read_strips(element, i, property, in);
+            } else {
+              read_corners(element, i, property, in);
+            }
             break;
           case Use::texcoords:
             for (std::uint64_t j = in.list_length(property); j > 0; --j) {
@@ -147,6 +157,61 @@ class PlyReader {
     check_corner_count(i, corners, in);
     for (std::uint64_t j = 0; j < corners; ++j) {
       face_.push_back(checked_index(element, i, in.list_index(property), in));
+    }
+  }
+
+  // What ends a strip besides -1: in an unsigned index type its largest value (-1's bits, as a
+  // primitive-restart index is written).
+  static std::int64_t strip_restart(ScalarType type) {
+    switch (type) {
+      case ScalarType::uint8:
+        return 0xFF;
+      case ScalarType::uint16:
+        return 0xFFFF;
+      case ScalarType::uint32:
+        return 0xFFFFFFFF;
+      default:
+        return -1;
+    }
+  }
+
+  // A tristrips record: strips a b c d ... separated by -1 (strip_restart), each the triangles (a,
+  // b, c), (c, b, d), (c, d, e), ...: the k-th triangle of a strip (from 0) is its corners k, k +
+  // 1, k + 2, the first two swapped when k is odd, so that every triangle turns the way the first
+  // does. A triangle repeating a vertex is how strips turn or join, no face: left out, counted.
+  template <class Source>
+  void read_strips(const Element& element, std::uint64_t i, const Property& property, Source& in) {
+    const std::uint64_t items = in.list_length(property);
+    const std::int64_t restart = strip_restart(property.type);
+    std::uint64_t strip = 0, in_strip = 0;  // the strip being read, and its items so far
+    VertexId a = 0, b = 0;                  // its last two corners
+    for (std::uint64_t j = 0; j < items; ++j) {
+      const std::int64_t index = in.list_index(property);
+      if (index == -1 || index == restart) {
+        ++strip;
+        in_strip = 0;
+        continue;
+      }
+      if (index < 0 || static_cast<std::uint64_t>(index) >= vertex_count_) {
+        in.fail(ply::record_name(element, i) + ", strip " + std::to_string(strip) +
+                " (list position " + std::to_string(j) + "): vertex index " +
+                std::to_string(index) + " out of range (" + std::to_string(vertex_count_) +
+                " vertices)");
+      }
+      const auto c = static_cast<VertexId>(index);
+      if (in_strip >= 2) {
+        const bool odd = in_strip % 2 == 1;
+        const std::array<VertexId, 3> triangle{odd ? b : a, odd ? a : b, c};
+        if (a == b || b == c || a == c) {
+          ++strip_turns_;
+        } else {
+          if (!corners_fit(mesh_, 3)) in.fail("more than 2^32 - 1 face corners");
+          mesh_.add_face(triangle);
+        }
+      }
+      a = b;
+      b = c;
+      ++in_strip;
     }
   }
 
@@ -317,6 +382,7 @@ class PlyReader {
   std::uint64_t vertex_count_ = 0;
   std::vector<VertexId> face_;           // the corners of the face being read, reused
   std::vector<double> texcoord_values_;  // its texcoord list, u v per corner
+  std::uint64_t strip_turns_ = 0;        // triangles of tristrips repeating a vertex, left out
 };
 
 }  // namespace

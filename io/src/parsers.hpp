@@ -6,6 +6,7 @@
 #include <string_view>
 #include <vector>
 
+#include "petersen/io/read_mesh.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -14,7 +15,7 @@ namespace petersen {
 PolygonMesh parse_off(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped);
 PolygonMesh parse_obj(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped);
+                      const ReadMeshOptions& options, std::vector<std::string>& dropped);
 PolygonMesh parse_ply(std::string_view bytes, const std::string& source,
                       std::vector<std::string>& dropped);
 

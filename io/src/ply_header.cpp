@@ -108,8 +108,16 @@ class HeaderReader {
     place_coordinates(*vertex);
     place_face_lists(*face);
     keep_columns(*vertex, header_.vertex_columns);
-    keep_columns(*face, header_.face_columns);
+    // A strip's scalars belong to no one triangle: read past.
+    if (face->role == Role::face) keep_columns(*face, header_.face_columns);
     for (const Element& element : header_.elements) {
+      if (element.role == Role::strips) {
+        for (const Property& p : element.properties) {
+          if (p.use == Use::corners) continue;
+          dropped_.push_back("tristrips " + std::string(p.is_list ? "list " : "") + "property '" +
+                             p.name + "'");
+        }
+      }
       if (element.role == Role::other) {
         dropped_.push_back("element '" + element.name + "' (" + std::to_string(element.count) +
                            " records)");
@@ -123,21 +131,25 @@ class HeaderReader {
     header_.position_type = all_float ? ScalarType::float32 : ScalarType::float64;
   }
 
-  // The one vertex and the one face element, given their roles; a second of either is refused
-  // where the header declares it.
+  // The one vertex and the one face (or tristrips) element, given their roles; a second of
+  // either is refused where the header declares it.
   std::pair<Element*, Element*> find_vertex_and_face() {
     Element* vertex = nullptr;
     Element* face = nullptr;
     for (Element& element : header_.elements) {
-      if (element.name != "vertex" && element.name != "face") continue;
-      Element*& found = element.name == "vertex" ? vertex : face;
+      const bool is_faces = element.name == "face" || element.name == "tristrips";
+      if (element.name != "vertex" && !is_faces) continue;
+      Element*& found = is_faces ? face : vertex;
+      if (found && found->name != element.name) {
+        fail_at(element, "both a 'face' and a 'tristrips' element: the faces come from one");
+      }
       if (found) fail_at(element, "second '" + element.name + "' element");
       found = &element;
     }
     if (!vertex) at_.fail("header declares no vertex element");
-    if (!face) at_.fail("header declares no face element");
+    if (!face) at_.fail("header declares no face element (nor tristrips)");
     vertex->role = Role::vertex;
-    face->role = Role::face;
+    face->role = face->name == "face" ? Role::face : Role::strips;
     return {vertex, face};
   }
 
@@ -158,18 +170,18 @@ class HeaderReader {
   }
 
   // The corner list (vertex_indices or vertex_index) and MeshLab's texcoord list: the last of
-  // each.
+  // each. A strip has no texcoord list of its own.
   void place_face_lists(Element& face) {
     Property* corners = nullptr;
     Property* texcoords = nullptr;
     for (Property& p : face.properties) {
       if (p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index")) {
-        if (!is_integer(p.type)) fail_at(face, "face indices must have an integer type");
+        if (!is_integer(p.type)) fail_at(face, face.name + " indices must have an integer type");
         corners = &p;
       }
-      if (p.is_list && p.name == "texcoord") texcoords = &p;
+      if (p.is_list && p.name == "texcoord" && face.role == Role::face) texcoords = &p;
     }
-    if (!corners) fail_at(face, "face element has no vertex_indices list");
+    if (!corners) fail_at(face, face.name + " element has no vertex_indices list");
     corners->use = Use::corners;
     if (texcoords) texcoords->use = Use::texcoords;
   }

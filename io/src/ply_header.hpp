@@ -18,7 +18,7 @@ enum class Use : std::uint8_t {
   coordinate,  ///< a vertex's x, y or z (slot: the axis)
   column,      ///< a kept scalar (slot: its column among the element's properties in the mesh)
   skip,        ///< a scalar read past
-  corners,     ///< the face's vertex_indices list
+  corners,     ///< the face's (or the tristrips record's) vertex_indices list
   texcoords,   ///< the face's MeshLab texcoord list, u v per corner
   skip_list,   ///< any other list, read past
 };
@@ -32,8 +32,8 @@ struct Property {
   int slot = -1;
 };
 
-/// The vertex and face elements make the mesh; any other is read past.
-enum class Role : std::uint8_t { vertex, face, other };
+/// The vertex and face (or tristrips) elements make the mesh; any other is read past.
+enum class Role : std::uint8_t { vertex, face, strips, other };
 
 struct Element {
   std::string name;
@@ -57,8 +57,9 @@ struct Header {
 /// Reads the header, from the "ply" line to "end_header", leaving `lines` on the first record.
 /// Throws FileError "source:line: what" for an empty file, a first line other than "ply", an
 /// unknown keyword, format or type, a property before any element, no format line, no end_header,
-/// a missing or repeated vertex or face element, more than 2^32 - 1 vertices or faces, a vertex
-/// element without scalar x, y, z or a face element without an integer vertex_indices list.
+/// a missing or repeated vertex element, no face or tristrips element (or both, or either twice),
+/// more than 2^32 - 1 vertices or faces, a vertex element without scalar x, y, z or a face or
+/// tristrips element without an integer vertex_indices list.
 /// Appends to `dropped` one line per property or element read past. O(header).
 Header read_header(text::Lines& lines, const std::string& source,
                    std::vector<std::string>& dropped);

@@ -8,7 +8,7 @@ namespace petersen {
 namespace {
 
 PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& source,
-                  std::vector<std::string>* dropped) {
+                  std::vector<std::string>* dropped, const ReadMeshOptions& options) {
   if (bytes.empty()) throw FileError(source, 0, "empty file");
   std::vector<std::string> ignored;
   std::vector<std::string>& out = dropped ? *dropped : ignored;
@@ -18,7 +18,7 @@ PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& 
       mesh = parse_off(bytes, source, out);
       break;
     case MeshFormat::obj:
-      mesh = parse_obj(bytes, source, out);
+      mesh = parse_obj(bytes, source, options, out);
       break;
     case MeshFormat::ply:
       mesh = parse_ply(bytes, source, out);
@@ -42,13 +42,14 @@ MeshFormat mesh_format_of(const std::string& path) {
 }
 
 PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source,
-                       std::vector<std::string>* dropped) {
-  return parse(bytes, format, source, dropped);
+                       std::vector<std::string>* dropped, const ReadMeshOptions& options) {
+  return parse(bytes, format, source, dropped, options);
 }
 
-PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped) {
+PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped,
+                      const ReadMeshOptions& options) {
   const MeshFormat format = mesh_format_of(path);
-  return parse(read_file_bytes(path).view(), format, path, dropped);
+  return parse(read_file_bytes(path).view(), format, path, dropped, options);
 }
 
 }  // namespace petersen

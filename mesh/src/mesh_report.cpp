@@ -82,21 +82,30 @@ struct EdgeScan {
   std::vector<Join> joins;
 };
 
-// Whether triangles f and g, both on edge {a, b}, have the same third vertex (then the same
-// three vertices). A face that is no triangle or repeats a vertex is no duplicate.
-bool same_triangle(const PolygonMesh& mesh, FaceId f, FaceId g, EdgeRef edge) {
-  if (f == g || mesh.arity(f) != 3 || mesh.arity(g) != 3) return false;
-  const auto third = [&](FaceId t) {
+// Whether faces f and g, both on edge {a, b}, have the same corners (duplicate_faces' judgement,
+// made here within an edge's faces so that the report needs no sort of all faces). Triangles, the
+// common case, compare their third vertices.
+bool same_face(const PolygonMesh& mesh, FaceId f, FaceId g, EdgeRef edge) {
+  if (f == g || mesh.arity(f) != mesh.arity(g)) return false;
+  if (mesh.arity(f) == 3) {
+    const auto third = [&](FaceId t) {
+      const auto c = mesh.face(t);
+      return std::uint64_t{c[0]} + c[1] + c[2] - edge.a - edge.b;
+    };
+    return third(f) == third(g);
+  }
+  const auto sorted = [&](FaceId t) {
     const auto c = mesh.face(t);
-    return std::uint64_t{c[0]} + c[1] + c[2] - edge.a - edge.b;
+    std::vector<VertexId> corners(c.begin(), c.end());
+    std::sort(corners.begin(), corners.end());
+    return corners;
   };
-  const std::uint64_t x = third(f);
-  return x != edge.a && x != edge.b && x == third(g);
+  return sorted(f) == sorted(g);
 }
 
 // Every edge once: its group of halfedges names it a boundary, non-manifold or inconsistent edge.
-// Two triangles on the same three vertices share all their edges, so each duplicate is found
-// within a group. O(H + sum of squared group sizes).
+// Two faces with the same corners share all their edges, so each duplicate is found within a
+// group. O(H + sum of squared group sizes).
 EdgeScan scan_edges(const PolygonMesh& mesh, const PolygonHalfedges& half, const EdgeGroups& groups,
                     MeshReport& report) {
   EdgeScan scan{ComponentForest(static_cast<std::uint32_t>(mesh.face_count()), {}),
@@ -119,7 +128,7 @@ EdgeScan scan_edges(const PolygonMesh& mesh, const PolygonHalfedges& half, const
       join(scan.corners, corner_at(h1, edge.b), corner_at(g, edge.b));
       for (std::uint32_t j = first; j < i; ++j) {
         const FaceId f1 = half.face(groups.entries[j][1]), f2 = half.face(g);
-        if (same_triangle(mesh, f1, f2, edge)) duplicate[std::max(f1, f2)] = 1;
+        if (same_face(mesh, f1, f2, edge)) duplicate[std::max(f1, f2)] = 1;
       }
     }
     if (end - first == 1) {
@@ -136,7 +145,7 @@ EdgeScan scan_edges(const PolygonMesh& mesh, const PolygonHalfedges& half, const
     }
   });
   for (FaceId f = 0; f < duplicate.size(); ++f) {
-    if (duplicate[f]) report.duplicate_triangles.add(f);
+    if (duplicate[f]) report.duplicate_faces.add(f);
   }
   return scan;
 }
@@ -233,7 +242,7 @@ std::string edge_text(EdgeRef e) {
 
 bool MeshReport::closed() const {
   return faces > 0 && out_of_range_faces.empty() && degenerate_faces.empty() &&
-         duplicate_triangles.empty() && boundary_edges.empty() && non_manifold_edges.empty() &&
+         duplicate_faces.empty() && boundary_edges.empty() && non_manifold_edges.empty() &&
          inconsistent_edges.empty();
 }
 
@@ -277,7 +286,8 @@ std::string describe(const MeshReport& r) {
   text += "\nboundary edges " + std::to_string(r.boundary_edges.count) + " in " +
           std::to_string(r.boundary_loops) + " loops, non-manifold edges " +
           std::to_string(r.non_manifold_edges.count) + ", degenerate faces " +
-          std::to_string(r.degenerate_faces.count) + "\n";
+          std::to_string(r.degenerate_faces.count) + ", duplicate faces " +
+          std::to_string(r.duplicate_faces.count) + "\n";
   text += std::string(r.orientable ? "orientable" : "not orientable") + ", " +
           std::to_string(r.inconsistent_edges.count) + " edges with inconsistent orientation\n";
   text += r.boundary_edges.empty() && r.non_manifold_edges.empty() ? "closed surface\n"
@@ -308,7 +318,7 @@ void require_closed_surface(const MeshReport& r, const SurfaceRequirements& requ
     fail(element("corner out of range in " + face, r.out_of_range_faces));
   }
   if (!r.degenerate_faces.empty()) fail(element("degenerate " + face, r.degenerate_faces));
-  if (!r.duplicate_triangles.empty()) fail(element("duplicate triangle", r.duplicate_triangles));
+  if (!r.duplicate_faces.empty()) fail(element("duplicate " + face, r.duplicate_faces));
   if (!r.boundary_edges.empty()) fail(edge("boundary", r.boundary_edges));
   if (!r.non_manifold_edges.empty()) fail(edge("non-manifold", r.non_manifold_edges));
   if (!r.inconsistent_edges.empty()) fail(edge("inconsistently oriented", r.inconsistent_edges));

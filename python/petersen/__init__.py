@@ -122,7 +122,8 @@ class QuadResult:
     ``V``: (n', 3) float64, the input's positions followed by the vertices ``all_quad`` added.
     ``quads``: (k, 4) int64, the quads: one per pair of triangles (following its first triangle's
     orientation) and those ``all_quad`` made by splitting.
-    ``triangles``: (t, 3) int64, the triangles left unpaired (none with ``all_quad``).
+    ``triangles``: (t, 3) int64, the triangles left unpaired (with ``all_quad``, only those
+    repeating a vertex, kept as they are).
     ``polygons``: list of int64 arrays, the input faces that are not triangles, kept as they were.
     ``sources``: (k + t + p, 2) int64, for each output face *in the order quads, triangles,
     polygons* the input faces it came from: both triangles of a pair's quad, ``[f, -1]`` for a
@@ -187,7 +188,7 @@ def quadrangulate(
     all_quad: bool = False,
     seed: int = 1,
     augment: str = "local",
-    objective: str = "pairs",
+    objective: str = "quads",
     sharp_angle: Optional[float] = None,
     keep_edges: Optional[npt.ArrayLike] = None,
     max_corner_deviation: Optional[float] = None,
@@ -195,19 +196,32 @@ def quadrangulate(
     cross: Sequence[str] = (),
     threads: int = 0,
     keep_polygons: bool = False,
+    triangle_cost: float = 90.0,
+    flow_weight: float = 0.0,
+    drop_duplicate_faces: bool = False,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
 
     ``V`` is an (n, 3) array of any numeric dtype and memory order (copied only when it is not
     C-ordered float64); ``F`` an (m, k) integer array or a list of faces (sequences of vertex
-    indices, any length >= 3, mixed lengths allowed). The pairing is a certified maximum: closed
-    components are paired perfectly by ``algorithm`` (auto, sg, ps, ds, gw, frink, lemon or
-    lrs), the rest by greedy pairing and augmenting paths with a Tutte-Berge witness; faces that
-    are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
+    indices, any length >= 3, mixed lengths allowed). By default (``objective="quads"``) the
+    pairing is the exact least-cost one, certified (``stats["optimality_certified"]``): each quad
+    costs its shape (``quad_quality``) plus ``flow_weight`` times its edge flow (how closely the
+    edge it removes runs along a smooth cross field; 0, the default, weighs shape alone), and each
+    triangle left unpaired ``triangle_cost`` degrees, so a triangle stays where pairing it would
+    break better quads. ``objective="pairs"`` gives a
+    certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,
+    sg, ps, ds, gw, frink, lemon or lrs), the rest by greedy pairing and augmenting paths with a
+    Tutte-Berge witness. Faces that are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
     (a minimum T-join, certified: ``stats["all_quad_certified"]``, ``stats["added_vertices"]`` and
-    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``. ``augment`` is "local" or "faithful", ``seed`` seeds auto, sg and ps.
-    ``objective="quality"`` pairs by the exact minimum total ``quad_quality`` cost instead
-    (certified: ``stats["optimality_certified"]``; ``algorithm`` is then not used).
+    ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``; a face
+    repeating a vertex is kept as it is (``stats["degenerate_faces"]``). ``augment`` is "local"
+    or "faithful", ``seed`` seeds auto, sg and ps. Faces with the same vertices as an earlier face
+    are counted in ``stats["duplicate_faces"]`` (no pair crosses their edges);
+    ``drop_duplicate_faces=True`` drops them first, keeping the first of each (``sources`` still
+    name the faces as given).
+    ``objective="quality"`` gives the maximum pairing of least total ``quad_quality`` cost
+    (certified: ``stats["optimality_certified"]``); ``algorithm`` is used by "pairs" only.
     ``sharp_angle`` (degrees) cuts edges whose faces' normals differ by more; ``keep_edges``, an
     (e, 2) array of vertex pairs, names edges no quad may remove. ``max_corner_deviation``
     (degrees) allows only pairs whose quad costs at most that (``quad_quality``); the others are
@@ -235,7 +249,8 @@ def quadrangulate(
     Raises ``ValueError`` with the library's message for a bad mesh (a coordinate that is not
     finite, naming the vertex; a vertex index out of range; a face of fewer than three corners; no
     faces at all; with ``all_quad``, a proof that no all-quad mesh exists), for ``max_corner_deviation``
-    outside [0, 270] or ``sharp_angle`` outside [0, 180] (either not finite), ``threads`` above
+    outside [0, 270], ``sharp_angle`` outside [0, 180], ``triangle_cost`` outside [0, 10000] or
+    ``flow_weight`` outside [0, 100] (any not finite), ``threads`` above
     1024, or an unknown algorithm, augment or objective; ``TypeError`` for faces that are not
     integers or an angle that is not a number.
     """
@@ -246,7 +261,9 @@ def quadrangulate(
         V, F, algorithm, augment, int(seed), bool(all_quad), objective,
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
-        [str(c) for c in cross], _threads(threads), bool(keep_polygons))
+        [str(c) for c in cross], _threads(threads), bool(keep_polygons),
+        _number("triangle_cost", triangle_cost, 10000.0), _number("flow_weight", flow_weight, 100.0),
+        bool(drop_duplicate_faces))
     return QuadResult(**r)
 
 
@@ -262,6 +279,13 @@ def _degrees(name: str, value: Optional[float], high: float) -> Optional[float]:
         raise ValueError(f"{name} must be a finite number of degrees in [0, {high:g}], "
                          f"not {value!r}")
     return degrees
+
+
+def _number(name: str, value: float, high: float) -> float:
+    """A cost option of the quads objective: a finite number in [0, high], as _degrees checks."""
+    if value is None:
+        raise TypeError(f"{name} must be a number, not None")
+    return _degrees(name, value, high)
 
 
 def _threads(threads: int) -> int:
@@ -297,16 +321,18 @@ def _mesh_parts(
     return points, faces, own if attributes is None else attributes
 
 
-def read_mesh(path: str, as_meshio: bool = False) -> Any:
+def read_mesh(path: str, as_meshio: bool = False, strict: bool = False) -> Any:
     """Reads an OFF, OBJ or PLY mesh (ascii or binary; gzip-compressed too), any face arity,
     with its attributes (``Mesh.attributes``).
 
     What the reader reads past (OBJ ``l`` lines, other PLY elements) is in ``Mesh.dropped`` and
     warned as ``DroppedWarning``. Raises ``ValueError`` naming the file and line (text) or element
-    (binary) for a bad file. ``as_meshio=True`` returns a ``meshio.Mesh`` instead
-    (``Mesh.to_meshio``).
+    (binary) for a bad file. A texture coordinate or normal index past those the file has drops
+    that attribute of that face, warned once per attribute; ``strict=True`` raises
+    ``ValueError`` naming the file and line instead. ``as_meshio=True`` returns a ``meshio.Mesh``
+    instead (``Mesh.to_meshio``).
     """
-    V, F, attributes, dropped = _petersen.read_mesh(str(path))
+    V, F, attributes, dropped = _petersen.read_mesh(str(path), bool(strict))
     _warn_dropped(path, dropped, "read past")
     mesh = Mesh(V, F, attributes, dropped)
     return mesh.to_meshio() if as_meshio else mesh

@@ -24,6 +24,7 @@
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
 #include "render.hpp"
@@ -44,7 +45,7 @@ Augment augment_of(const std::string& name) {
 
 Objective objective_of(const std::string& name) {
   if (auto o = parse_objective(name)) return *o;
-  throw py::value_error("unknown objective '" + name + "': pairs or quality");
+  throw py::value_error("unknown objective '" + name + "': quads, pairs or quality");
 }
 
 PolygonMesh mesh_from(const py::handle& V, const py::handle& F, const py::handle& attributes) {
@@ -110,7 +111,8 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
                           const std::string& objective, std::optional<double> sharp_angle,
                           const py::handle& keep_edges, std::optional<double> max_corner_deviation,
                           const py::handle& attributes, const py::handle& cross,
-                          std::uint32_t threads, bool keep_polygons) {
+                          std::uint32_t threads, bool keep_polygons, double triangle_cost,
+                          double flow_weight, bool drop_duplicates) {
   std::vector<std::array<VertexId, 2>> kept_edges;
   if (!keep_edges.is_none()) {
     for (const auto& [a, b] : pairs_from(keep_edges, "keep_edges")) {
@@ -130,13 +132,27 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.all_quad = all_quad;
   options.keep_polygons = keep_polygons;
   options.objective = objective_of(objective);
+  options.triangle_cost = triangle_cost;
+  options.flow_weight = flow_weight;
   options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
   options.max_corner_deviation = max_corner_deviation;
   options.cuts.user_edges = kept_edges;
   options.cross = causes_from(cross);
   options.threads = threads;
-  const PolygonMesh mesh = mesh_from(V, F, attributes);
+  PolygonMesh mesh = mesh_from(V, F, attributes);
+  std::vector<FaceId> input_face;  // with drop_duplicates: the caller's face of each face kept
+  if (drop_duplicates) {
+    DroppedFaces copies = drop_duplicate_faces(mesh);
+    for (FaceId f = 0, d = 0; f < mesh.face_count(); ++f) {
+      if (d < copies.dropped.size() && copies.dropped[d] == f) {
+        ++d;
+      } else {
+        input_face.push_back(f);
+      }
+    }
+    mesh = std::move(copies.mesh);
+  }
   // The library pairs an empty mesh into an empty result; here, as in `petersen quad`, no faces
   // is a mistake worth naming (an empty array, or a mesh object that was not filled).
   if (mesh.face_count() == 0) {
@@ -176,6 +192,12 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
     std::copy(face.begin(), face.end(), row.mutable_data());
     polygons.append(std::move(row));
   }
+  if (drop_duplicates) {
+    // Sources and the Tutte set name the caller's faces, as without the option.
+    for (auto& pair : result.sources)
+      for (FaceId& f : pair) f = f == kNoFace ? kNoFace : input_face[f];
+    for (FaceId& f : result.tutte_set) f = input_face[f];
+  }
   std::vector<FaceId> order = quads;
   order.insert(order.end(), triangles.begin(), triangles.end());
   order.insert(order.end(), kept.begin(), kept.end());
@@ -195,12 +217,12 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   return d;
 }
 
-py::tuple read_mesh_py(const std::string& path) {
+py::tuple read_mesh_py(const std::string& path, bool strict) {
   PolygonMesh mesh;
   std::vector<std::string> dropped;
   {
     py::gil_scoped_release release;
-    mesh = read_mesh(path, &dropped);
+    mesh = read_mesh(path, &dropped, {.strict = strict});
   }
   return py::make_tuple(positions_array(mesh.positions), faces_object(mesh),
                         attributes_dict(mesh.attributes), dropped);
@@ -313,8 +335,9 @@ PYBIND11_MODULE(_petersen, m) {
         py::arg("augment"), py::arg("seed"), py::arg("all_quad"), py::arg("objective"),
         py::arg("sharp_angle"), py::arg("keep_edges"), py::arg("max_corner_deviation"),
         py::arg("attributes"), py::arg("cross"), py::arg("threads"),
-        py::arg("keep_polygons") = false);
-  m.def("read_mesh", &read_mesh_py, py::arg("path"));
+        py::arg("keep_polygons") = false, py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("flow_weight") = kDefaultFlowWeight, py::arg("drop_duplicate_faces") = false);
+  m.def("read_mesh", &read_mesh_py, py::arg("path"), py::arg("strict") = false);
   m.def("write_mesh", &write_mesh_py, py::arg("path"), py::arg("V"), py::arg("F"),
         py::arg("attributes"));
   m.def("perfect_matching", &perfect_matching_py, py::arg("n"), py::arg("edges"),

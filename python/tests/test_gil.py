@@ -15,7 +15,7 @@ def test_python_runs_while_quadrangulate_works():
     result = {}
 
     def work():
-        result["r"] = petersen.quadrangulate(V, F, algorithm="ps")
+        result["r"] = petersen.quadrangulate(V, F, objective="pairs", algorithm="ps")
 
     worker = threading.Thread(target=work)
     stamps = []
@@ -39,7 +39,7 @@ def test_two_conversions_at_once_give_each_its_own_answer():
 
     def work(i):
         V, F = meshes[i]
-        results[i] = petersen.quadrangulate(V, F, algorithm="ps", seed=i + 1)
+        results[i] = petersen.quadrangulate(V, F, objective="pairs", algorithm="ps", seed=i + 1)
 
     threads = [threading.Thread(target=work, args=(i,)) for i in range(2)]
     for t in threads:
@@ -48,5 +48,5 @@ def test_two_conversions_at_once_give_each_its_own_answer():
         t.join()
     for i, (V, F) in enumerate(meshes):
         check_result(V, [tuple(f) for f in F.tolist()], results[i])
-        alone = petersen.quadrangulate(V, F, algorithm="ps", seed=i + 1)
+        alone = petersen.quadrangulate(V, F, objective="pairs", algorithm="ps", seed=i + 1)
         assert np.array_equal(results[i].quads, alone.quads)

@@ -15,7 +15,7 @@ def as_faces(F):
 @pytest.mark.parametrize("algorithm", petersen.ALGORITHMS)
 def test_closed_meshes_become_all_quads(algorithm):
     for V, F in (octahedron(), torus(12, 9)):
-        r = petersen.quadrangulate(V, F, algorithm=algorithm)
+        r = petersen.quadrangulate(V, F, objective="pairs", algorithm=algorithm)
         check_result(V, as_faces(F), r, lrs=algorithm == "lrs")
         assert r.stats["triangles_left"] == 0 and len(r.triangles) == 0
         assert len(r.quads) == len(F) // 2 == r.stats["pairs"]
@@ -31,7 +31,7 @@ def test_an_open_grid_with_a_quad_and_a_pentagon(algorithm):
     base = len(V)
     V = np.vstack([V, [[7, 0, 0], [8, 0, 0], [8, 1, 0], [7, 1, 0], [9, 0.5, 0], [9, 1.5, 0]]])
     faces += [(base, base + 1, base + 2, base + 3), (base + 1, base + 4, base + 5, base + 2, base + 3)]
-    r = petersen.quadrangulate(V, faces, algorithm=algorithm)
+    r = petersen.quadrangulate(V, faces, objective="pairs", algorithm=algorithm)
     check_result(V, faces, r, lrs=algorithm == "lrs")
     assert r.stats["polygons_kept"] == 2 and len(r.polygons) == 2
     assert r.stats["triangles_left"] == 0  # 40 triangles of a grid pair up
@@ -41,7 +41,7 @@ def test_an_open_grid_with_a_quad_and_a_pentagon(algorithm):
 def test_the_quality_objective_is_certified_and_no_worse():
     V, F = torus(16, 12)
     V = V + np.random.default_rng(5).normal(scale=0.05, size=V.shape)  # irregular quads
-    pairs = petersen.quadrangulate(V, F, algorithm="ps")
+    pairs = petersen.quadrangulate(V, F, objective="pairs", algorithm="ps")
     best = petersen.quadrangulate(V, F, objective="quality")
     check_result(V, as_faces(F), best)
     assert best.stats["optimality_certified"] is True
@@ -68,7 +68,7 @@ def test_a_threshold_leaves_triangles_rather_than_bad_quads():
 def test_all_quad_splits_an_odd_open_mesh():
     V, F = open_grid(3, 3)
     F = F[:-1]  # 17 triangles: one must be left, then split
-    r = petersen.quadrangulate(V, F)
+    r = petersen.quadrangulate(V, F, objective="pairs")
     check_result(V, as_faces(F), r)
     assert r.stats["triangles_left"] == 1 and len(r.triangles) == 1
     assert len(r.tutte_set) == 0 or r.stats["triangles_left"] > 0
@@ -125,16 +125,16 @@ def test_threads_change_nothing():
 
 def test_same_seed_same_answer_and_seeds_matter():
     V, F = torus(30, 20)
-    a = petersen.quadrangulate(V, F, algorithm="sg", seed=5)
-    b = petersen.quadrangulate(V, F, algorithm="sg", seed=5)
+    a = petersen.quadrangulate(V, F, objective="pairs", algorithm="sg", seed=5)
+    b = petersen.quadrangulate(V, F, objective="pairs", algorithm="sg", seed=5)
     assert np.array_equal(a.quads, b.quads)
-    others = [petersen.quadrangulate(V, F, algorithm="sg", seed=s).quads for s in (6, 7, 8)]
+    others = [petersen.quadrangulate(V, F, objective="pairs", algorithm="sg", seed=s).quads for s in (6, 7, 8)]
     assert any(not np.array_equal(a.quads, o) for o in others)
 
 
 def test_stats_have_the_cli_keys_but_the_file_ones():
     V, F = octahedron()
-    s = petersen.quadrangulate(V, F, algorithm="lrs").stats
+    s = petersen.quadrangulate(V, F, objective="pairs", algorithm="lrs").stats
     for key in ("algorithm", "augment", "vertices", "faces_in", "triangles", "polygons_kept",
                 "genus", "euler_characteristic", "components", "closed_components", "mesh_edges",
                 "cut_edges", "cut_edges_by_cause", "inconsistent_edges", "check_seconds",
@@ -149,14 +149,14 @@ def test_stats_have_the_cli_keys_but_the_file_ones():
         assert key not in s
     assert s["genus"] == 0 and s["euler_characteristic"] == 2
     assert isinstance(s["cut_edges_by_cause"], dict) and s["cut_edges_by_cause"]["boundary"] == 0
-    assert "augment" not in petersen.quadrangulate(V, F, algorithm="ds").stats
+    assert "augment" not in petersen.quadrangulate(V, F, objective="pairs", algorithm="ds").stats
     # The octahedron's dual is the cube, a bipartite graph: the ordered sweep (eight nodes are a
     # local numbering) or, where it leaves nodes, Schrijver's algorithm matches it perfectly.
-    auto = petersen.quadrangulate(V, F, algorithm="auto").stats
+    auto = petersen.quadrangulate(V, F, objective="pairs", algorithm="auto").stats
     assert auto["schrijver"] != auto["ordered_sweep"]
     assert auto["unpaired_after_initial"] == 0
     # ps is the paper's Puli-Segal alone: neither the sweep nor Schrijver's algorithm runs.
-    ps = petersen.quadrangulate(V, F, algorithm="ps").stats
+    ps = petersen.quadrangulate(V, F, objective="pairs", algorithm="ps").stats
     assert not ps["schrijver"] and not ps["ordered_sweep"]
     assert "schrijver" not in s and "ordered_sweep" not in s
 

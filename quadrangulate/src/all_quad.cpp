@@ -62,6 +62,13 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   PolygonMesh& mesh = result.mesh;
   if (!has_work(mesh, kinds, options.keep_polygons)) {
     stats.all_quad_certified = true;  // nothing to split: zero midpoints, trivially fewest
+    // Every face is a quad or a polygon keep_polygons keeps: the other quads repeating a vertex
+    // are the degenerate faces plan_splits would have kept.
+    for (FaceId f = 0; f < mesh.face_count(); ++f) {
+      const bool kept_polygon = options.keep_polygons && kinds[f] == FaceKind::kept;
+      stats.degenerate_faces += kinds[f] != FaceKind::pair && !kept_polygon && mesh.arity(f) == 4 &&
+                                repeats_a_vertex(mesh.face(f));
+    }
     return;
   }
   const PolygonHalfedges half(mesh);
@@ -76,7 +83,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   const std::vector<VertexId> midpoint = add_midpoints(mesh, half, plan, blends);
   QuadPieces cut =
       cut_into_quads(mesh, half, groups, midpoint, plan.kept, result.sources, blends,
-                     {.centres_where_better = options.objective == Objective::quality});
+                     {.centres_where_better = options.objective != Objective::pairs});
 
   PolygonMesh& out = cut.mesh;
   if (carry) {
@@ -91,6 +98,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   }
   out.positions = std::move(mesh.positions);
   stats.split_edges = plan.edge_count();
+  stats.degenerate_faces = plan.degenerate_faces;
   stats.centre_vertices = cut.centres;
   stats.added_vertices = stats.split_edges + stats.centre_vertices;
   stats.added_vertices_minimum = plan.minimum;

@@ -104,8 +104,8 @@ bool pair_component_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
   if (mesh.attributes.has_corner_attributes() || mesh.attributes.has_face_attributes()) {
     // A triangle lrs's flips make has no input corners or face to take these from.
     refuse(stats,
-           "a mesh without texture coordinates, normals or face attributes (its flipped triangles "
-           "would have none)");
+           "texture coordinates, normals or face attributes, which lrs's flipped triangles would "
+           "not have");
     return false;
   }
   if (nodes.empty()) {

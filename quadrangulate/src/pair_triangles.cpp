@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <stdexcept>
 
 #include "pair_by_lrs.hpp"
@@ -347,6 +348,56 @@ void pair_open_components(PairableGraph& graph, std::vector<NodeId> open_nodes,
   stats.verify_seconds += clock.lap();
 }
 
+// Objective::quads: the cheapest matching of any size, each triangle left unpaired costing
+// options.triangle_cost, over the whole pairable graph at once (closed and open components alike:
+// the price makes every component's optimum a matching of any size); its certificate checked.
+// Maximum is certified only where nothing is left: a perfect pairing is maximum.
+void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
+                        const QuadOptions& options, TrianglePairing& pairing, QuadStats& stats,
+                        Stopwatch& clock) {
+  {
+    const Components components = components_of(graph);
+    stats.components = components.closed.size();
+    for (std::uint8_t closed : components.closed) stats.closed_components += closed;
+  }
+  CsrGraph whole;
+  {
+    std::vector<std::array<NodeId, 2>> edges(graph.edge_count());
+    for (EdgeId e = 0; e < edges.size(); ++e) {
+      edges[e] = {graph.edge_ends[2 * std::size_t{e}], graph.edge_ends[2 * std::size_t{e} + 1]};
+    }
+    graph.node_edges = HugeVector<EdgeId>();
+    graph.edge_ends = HugeVector<NodeId>();
+    whole = CsrGraph::from_edges(graph.node_count, edges);
+  }
+  const Cost price = static_cast<Cost>(std::llround(options.triangle_cost * kDefaultCostScale));
+  stats.dual_seconds += clock.lap();
+  MinCostMatchingResult result =
+      min_cost_matching(whole, costs, {&price, 1}, {.threads = options.threads});
+  stats.matching.initial_seconds += result.stats.init_seconds;
+  stats.matching.unpaired_after_initial += result.stats.free_after_init;
+  stats.matching.augment_seconds += result.stats.search_seconds + result.stats.certificate_seconds;
+  stats.matching.augmenting_paths += result.stats.searches;
+  stats.matching.blossoms += result.stats.blossoms_shrunk;
+  stats.matching.nodes_labelled += result.stats.nodes_labelled;
+  clock.lap();
+  if (CertificateCheck check =
+          verify_min_cost_matching(whole.node_count(), whole.edge_ends(), costs, {&price, 1},
+                                   result.matching, result.total, result.certificate);
+      !check.ok()) {
+    throw std::logic_error("internal error: the least-cost pairing's certificate fails: " +
+                           check.problem);
+  }
+  pairing.objective_units = result.total;
+  pairing.partner.assign(graph.node_count, kNoNode);
+  for (NodeId v = 0; v < whole.node_count(); ++v) {
+    const EdgeId e = result.matching.mate_edge[v];
+    if (e != kNoEdge) pairing.partner[v] = whole.other_end(e, v);
+  }
+  stats.maximum_certified = 2 * std::size_t{result.size} == graph.node_count;
+  stats.verify_seconds += clock.lap();
+}
+
 // Whether lrs takes the whole mesh at once, from the graph's arrays: one closed, consistently
 // oriented component of triangles without attributes.
 bool lrs_takes_whole_mesh(const PairableGraph& graph, const PolygonMesh& mesh) {
@@ -365,13 +416,20 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   TrianglePairing pairing;
   const Algorithm closed_algorithm =
       options.algorithm == Algorithm::lrs ? Algorithm::automatic : options.algorithm;
-  const bool quality = options.objective == Objective::quality;
   // lrs flips edges, making quads the threshold never judged: with one, auto does its work.
-  bool use_lrs = options.algorithm == Algorithm::lrs && !quality && !options.max_corner_deviation;
-  const HugeVector<Cost> costs = quality ? scale_costs(degrees) : HugeVector<Cost>{};
+  bool use_lrs = options.algorithm == Algorithm::lrs && options.objective == Objective::pairs &&
+                 !options.max_corner_deviation;
+  const HugeVector<Cost> costs =
+      options.objective != Objective::pairs ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();
+  stats.optimality_certified = options.objective != Objective::pairs;
+  // With all_quad every triangle left is split into quads anyway: the quads objective then pairs
+  // the cheapest maximum, as quality does, which leaves the fewest triangles to split.
+  if (options.objective == Objective::quads && !options.all_quad) {
+    pair_at_least_cost(graph, costs, options, pairing, stats, clock);
+    return pairing;
+  }
   stats.maximum_certified = true;
-  stats.optimality_certified = quality;
 
   if (use_lrs && lrs_takes_whole_mesh(graph, mesh)) {
     stats.components = stats.closed_components = 1;

@@ -8,6 +8,7 @@
 #include "attribute_cuts.hpp"
 #include "carry_attributes.hpp"
 #include "pair_triangles.hpp"
+#include "petersen/dualize/cross_field.hpp"
 #include "petersen/dualize/quad_of.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/component_forest.hpp"
@@ -15,6 +16,7 @@
 #include "petersen/graph/parallel.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/mesh/duplicate_faces.hpp"
 #include "shape_cuts.hpp"
 #include "validate_input.hpp"
 
@@ -23,7 +25,7 @@ namespace petersen {
 namespace {
 
 constexpr std::pair<Objective, std::string_view> kObjectiveNames[] = {
-    {Objective::pairs, "pairs"}, {Objective::quality, "quality"}};
+    {Objective::quads, "quads"}, {Objective::pairs, "pairs"}, {Objective::quality, "quality"}};
 
 }  // namespace
 
@@ -58,6 +60,7 @@ struct QuadRun {
   PairableGraph graph = {};
   std::int64_t referenced_vertices = 0;  // those some face uses, for the Euler characteristic
   HugeVector<double> edge_costs = {};    // per pairable edge: quad_corner_deviation, when wanted
+  HugeVector<double> edge_flow = {};     // per pairable edge, Objective::quads: the quad's flow
   quad_detail::TrianglePairing pairing = {};
   // Per output face, what it is: the quads' measure reads which faces are pairs' quads, all_quad
   // which to split (1 byte each). Their sources (8 bytes each: 0.8 GB of fresh memory at 10^8
@@ -99,11 +102,25 @@ void build_graph_with_cuts(QuadRun& run) {
 }
 
 bool wants_edge_costs(const QuadRun& run) {
-  return run.options.objective == Objective::quality || run.options.max_corner_deviation;
+  return run.options.objective != Objective::pairs || run.options.max_corner_deviation;
 }
 
 void measure_edge_costs(QuadRun& run) {
   run.edge_costs = pairable_edge_quality(run.graph, run.mesh, run.options.threads);
+}
+
+bool wants_flow(const QuadRun& run) {
+  return run.options.objective == Objective::quads && run.options.flow_weight > 0;
+}
+
+// The cross field over the whole pairable graph, before any shape cut: a threshold says which
+// pairs are allowed, not where the quads' edge loops run.
+void measure_flow(QuadRun& run) {
+  Stopwatch clock;
+  const CrossField field = cross_field(run.graph, run.mesh);
+  run.edge_flow = pairable_edge_flow(run.graph, side_alignment(run.graph, run.mesh, field));
+  run.stats().field_iterations = field.iterations;
+  run.stats().field_seconds = clock.lap();
 }
 
 bool wants_shape_cuts(const QuadRun& run) {
@@ -111,7 +128,36 @@ bool wants_shape_cuts(const QuadRun& run) {
 }
 
 void cut_by_shape(QuadRun& run) {
-  quad_detail::cut_by_shape(run.graph, run.mesh, run.edge_costs, *run.options.max_corner_deviation);
+  quad_detail::cut_by_shape(run.graph, run.mesh, run.edge_costs, *run.options.max_corner_deviation,
+                            run.edge_flow.empty() ? nullptr : &run.edge_flow);
+}
+
+// Objective::quads: each pair's cost is its shape plus its weighted flow.
+void add_flow_to_costs(QuadRun& run) {
+  const double weight = run.options.flow_weight;
+  for (EdgeId e = 0; e < run.edge_costs.size(); ++e) run.edge_costs[e] += weight * run.edge_flow[e];
+  run.edge_flow = HugeVector<double>();
+}
+
+// The faces that may have the same corners as another: the polygons, and the triangles cut on
+// every side (a triangle's copy shares all its edges with it, so each is an edge of three or more
+// faces or a duplicate cut). Without non-manifold or duplicate cuts there are no copies of
+// triangles, and the caller does not ask. O(F).
+std::vector<FaceId> duplicate_candidates(const QuadRun& run) {
+  const PairableGraph& graph = run.graph;
+  std::vector<FaceId> faces;
+  for (NodeId v = 0; v < graph.node_count; ++v) {
+    const EdgeId* sides = graph.node_edges.data() + 3 * std::size_t{v};
+    if (sides[0] == kNoEdge && sides[1] == kNoEdge && sides[2] == kNoEdge) {
+      faces.push_back(graph.node_face.empty() ? v : graph.node_face[v]);
+    }
+  }
+  if (!run.mesh.all_triangles()) {
+    for (FaceId f = 0; f < run.face_count; ++f) {
+      if (run.mesh.arity(f) != 3) faces.push_back(f);
+    }
+  }
+  return faces;
 }
 
 void record_graph_figures(QuadRun& run) {
@@ -124,6 +170,10 @@ void record_graph_figures(QuadRun& run) {
   stats.polygons_kept = face_count - graph.node_count;
   stats.mesh_edges = graph.mesh_edges;
   stats.cuts = graph.cuts;
+  if (graph.cuts.by_cause[static_cast<int>(CutCause::non_manifold)] > 0 ||
+      graph.cuts.by_cause[static_cast<int>(CutCause::duplicate)] > 0) {
+    stats.duplicate_faces = duplicate_faces(run.mesh, duplicate_candidates(run)).size();
+  }
   stats.inconsistent_edges = graph.inconsistent_edges;
   stats.euler_characteristic =
       run.referenced_vertices - std::int64_t(graph.mesh_edges) + std::int64_t(face_count);
@@ -287,7 +337,7 @@ void measure_quads(QuadRun& run) {
   stats.quality_median = quality.median;
   stats.quality_p95 = quality.p95;
   stats.nonconvex_quads = quality.nonconvex;
-  stats.objective_total = run.options.objective == Objective::quality
+  stats.objective_total = run.options.objective != Objective::pairs
                               ? double(run.pairing.objective_units) / kDefaultCostScale
                               : quality.total;
 }
@@ -339,7 +389,9 @@ struct Step {
 constexpr Step kSteps[] = {
     {.run = build_graph_with_cuts},
     {.applies = wants_edge_costs, .run = measure_edge_costs},
+    {.applies = wants_flow, .run = measure_flow},
     {.applies = wants_shape_cuts, .run = cut_by_shape},
+    {.applies = wants_flow, .run = add_flow_to_costs},
     {.run = record_graph_figures},
     {.applies = oriented_surface_with_chosen_cuts, .run = genus_across_chosen_cuts},
     {.run = drop_chosen_cuts, .seconds = &QuadStats::check_seconds},

@@ -22,7 +22,7 @@ bool runs_same_way(const PairableGraph& graph, const PolygonMesh& mesh, EdgeId e
 }  // namespace
 
 void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<double>& degrees,
-                  double max_degrees) {
+                  double max_degrees, HugeVector<double>* also) {
   // Edges kept are renumbered in order; new_id[e] is kNoEdge for an edge cut.
   HugeVector<EdgeId> new_id(graph.edge_count(), kNoEdge);
   EdgeId kept = 0;
@@ -40,10 +40,12 @@ void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<doub
     graph.edge_ends[2 * std::size_t{kept}] = graph.edge_ends[2 * std::size_t{e}];
     graph.edge_ends[2 * std::size_t{kept} + 1] = graph.edge_ends[2 * std::size_t{e} + 1];
     degrees[kept] = degrees[e];
+    if (also != nullptr) (*also)[kept] = (*also)[e];
     new_id[e] = kept++;
   }
   graph.edge_ends.resize(2 * std::size_t{kept});
   degrees.resize(kept);
+  if (also != nullptr) also->resize(kept);
   for (EdgeId& e : graph.node_edges) {
     if (e != kNoEdge) e = new_id[e];
   }

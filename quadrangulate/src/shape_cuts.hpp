@@ -8,9 +8,10 @@ namespace petersen::quad_detail {
 
 /// Removes from `graph` (the pairable graph of `mesh`) every edge whose cost in `degrees`
 /// (pairable_edge_quality) is above `max_degrees`, counting each as a CutCause::shape cut and no
-/// longer as an inconsistent edge; the edges left keep their relative order and `degrees` follows
-/// them. The graph is no longer cubic when any edge goes. O(F).
+/// longer as an inconsistent edge; the edges left keep their relative order and `degrees` (and
+/// `also`, another per-edge array, when not null) follows them. The graph is no longer cubic when
+/// any edge goes. O(F).
 void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<double>& degrees,
-                  double max_degrees);
+                  double max_degrees, HugeVector<double>* also = nullptr);
 
 }  // namespace petersen::quad_detail

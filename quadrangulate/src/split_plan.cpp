@@ -9,20 +9,6 @@
 
 namespace petersen::quad_detail {
 
-namespace {
-
-using Sources = std::span<const std::array<FaceId, 2>>;
-
-// The edges that may be split, by how many faces they have: edges of two faces and boundary edges
-// (the dual's edges, `twin` kNoNode for the boundary's sink) and non-manifold edges (all their
-// halfedges). Per face, whether it borders a kept face, for the error that names --keep-polygons.
-struct SplittableEdges {
-  std::vector<std::array<std::uint32_t, 2>> dual;  // {halfedge, twin}
-  std::vector<std::uint32_t> non_manifold_start{0};
-  std::vector<std::uint32_t> non_manifold_halfedges;
-  std::vector<std::uint8_t> borders_kept;
-};
-
 bool repeats_a_vertex(std::span<const VertexId> corners) {
   if (corners.size() <= 8) {  // the usual faces: no allocation
     for (std::size_t i = 0; i < corners.size(); ++i)
@@ -35,26 +21,31 @@ bool repeats_a_vertex(std::span<const VertexId> corners) {
   return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
 }
 
-// Per face: kept as it is. A face that repeats a vertex cannot be cut into quads without a
-// degenerate one: a quad stays as it is, anything else that would have to change is refused.
+namespace {
+
+using Sources = std::span<const std::array<FaceId, 2>>;
+
+// The edges that may be split, by how many faces they have: edges of two faces and boundary edges
+// (the dual's edges, `twin` kNoNode for the boundary's sink) and non-manifold edges (all their
+// halfedges). Per face, whether it borders a kept face, for the error that names --keep-polygons.
+struct SplittableEdges {
+  std::vector<std::array<std::uint32_t, 2>> dual;  // {halfedge, twin}
+  std::vector<std::uint32_t> non_manifold_start{0};
+  std::vector<std::uint32_t> non_manifold_halfedges;
+  std::vector<std::uint8_t> borders_kept;  // the kept_faces reasons of the faces beside it
+};
+
+// Per face: why it is kept as it is (kKeptPolygon, kKeptDegenerate), or 0. A face that repeats a
+// vertex has no cut into quads that repeats none, so wherever it must change it is kept instead:
+// the rest of the mesh is still made quads (its sides are never split, so it stays as it was).
 std::vector<std::uint8_t> kept_faces(const PolygonMesh& mesh, std::span<const FaceKind> kinds,
-                                     Sources sources, bool keep_polygons) {
+                                     bool keep_polygons) {
   std::vector<std::uint8_t> kept(mesh.face_count(), 0);
   for (FaceId f = 0; f < mesh.face_count(); ++f) {
-    const std::uint32_t n = mesh.arity(f);
-    if (keep_polygons && kinds[f] == FaceKind::kept && n != 3) {
-      kept[f] = 1;
+    if (keep_polygons && kinds[f] == FaceKind::kept && mesh.arity(f) != 3) {
+      kept[f] = kKeptPolygon;
     } else if (kinds[f] != FaceKind::pair && repeats_a_vertex(mesh.face(f))) {
-      if (n == 4) {
-        kept[f] = 1;
-        continue;
-      }
-      const std::string face = std::to_string(sources[f][0]);
-      throw MeshError(kinds[f] == FaceKind::left
-                          ? "--all-quad: left triangle (input face " + face +
-                                ") repeats a vertex; it cannot become a quad"
-                          : "--all-quad: input face " + face +
-                                " repeats a vertex; it cannot be cut into quads");
+      kept[f] = kKeptDegenerate;
     }
   }
   return kept;
@@ -65,12 +56,11 @@ SplittableEdges splittable_edges(const PolygonHalfedges& half, const EdgeGroups&
   SplittableEdges edges;
   edges.borders_kept.assign(face_count, 0);
   for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
-    bool touches_kept = false;
-    for (std::uint32_t i = first; i < end; ++i)
-      touches_kept |= kept[half.face(groups.entries[i][1])];
-    if (touches_kept) {
+    std::uint8_t reasons = 0;
+    for (std::uint32_t i = first; i < end; ++i) reasons |= kept[half.face(groups.entries[i][1])];
+    if (reasons != 0) {
       for (std::uint32_t i = first; i < end; ++i)
-        edges.borders_kept[half.face(groups.entries[i][1])] = 1;
+        edges.borders_kept[half.face(groups.entries[i][1])] |= reasons;
       return;
     }
     const std::uint32_t h1 = groups.entries[first][1];
@@ -101,7 +91,8 @@ class Planner {
         keep_polygons_(keep_polygons),
         faces_(static_cast<FaceId>(mesh.face_count())),
         forest_(faces_ + 1) {
-    plan_.kept = kept_faces(mesh, kinds, sources, keep_polygons);
+    plan_.kept = kept_faces(mesh, kinds, keep_polygons);
+    for (std::uint8_t reason : plan_.kept) plan_.degenerate_faces += reason == kKeptDegenerate;
     edges_ = splittable_edges(half, groups, plan_.kept, faces_);
     odd_.resize(faces_ + 1, 0);
     for (FaceId f = 0; f < faces_; ++f) odd_[f] = !plan_.kept[f] && mesh.arity(f) % 2 == 1;
@@ -171,18 +162,22 @@ class Planner {
   }
 
   [[noreturn]] void refuse(FaceId root) {
-    bool walled = false;
-    for (FaceId f = 0; f < faces_; ++f) walled |= forest_.find(f) == root && edges_.borders_kept[f];
+    std::uint8_t walls = 0;
+    for (FaceId f = 0; f < faces_; ++f)
+      if (forest_.find(f) == root) walls |= edges_.borders_kept[f];
     std::string message =
         "--all-quad: no all-quad mesh exists on these faces: the faces joined to input face " +
         std::to_string(sources_[root][0]) +
         " across edges of two faces have an odd total number of sides, and no choice of "
         "non-manifold edges to split makes it even (a midpoint adds one side to every face on "
         "its edge)";
-    if (walled && keep_polygons_) {
+    if ((walls & kKeptPolygon) && keep_polygons_) {
       message +=
           "; --keep-polygons keeps the polygons around them whole, and without it they "
           "may be split";
+    }
+    if (walls & kKeptDegenerate) {
+      message += "; faces beside them repeat a vertex, and are kept as they are";
     }
     throw MeshError(message);
   }

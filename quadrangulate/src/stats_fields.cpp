@@ -23,9 +23,14 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   if (!run.input.empty()) add("input", run.input);
   if (!run.output.empty()) add("output", run.output);
   const Algorithm a = options.algorithm;
-  const bool quality = options.objective == Objective::quality;
+  // Both cost objectives run the minimum-cost matching, not the algorithm.
+  const bool quality = options.objective != Objective::pairs;
   add("objective", std::string(to_string(options.objective)));
   add("algorithm", quality ? std::string("min-cost") : std::string(to_string(a)));
+  if (options.objective == Objective::quads) {
+    d("triangle_cost", options.triangle_cost);
+    d("flow_weight", options.flow_weight);
+  }
   if (!quality && (a == Algorithm::automatic || a == Algorithm::sg || a == Algorithm::ps ||
                    a == Algorithm::lrs)) {
     add("augment", std::string(to_string(options.augment)));
@@ -35,6 +40,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("faces_in", s.faces_in);
   u("triangles", s.triangles);
   u("polygons_kept", s.polygons_kept);
+  u("duplicate_faces", s.duplicate_faces);
   if (s.genus) add("genus", *s.genus);
   add("euler_characteristic", s.euler_characteristic);
   u("components", s.components);
@@ -49,6 +55,10 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("inconsistent_edges", s.inconsistent_edges);
   if (run.load_seconds) d("load_seconds", *run.load_seconds);
   d("check_seconds", s.check_seconds);
+  if (options.objective == Objective::quads && options.flow_weight > 0) {
+    d("field_seconds", s.field_seconds);
+    u("field_iterations", s.field_iterations);
+  }
   d("dual_seconds", s.dual_seconds);
   d("initial_seconds", s.matching.initial_seconds);
   d("initial_paired_percent",
@@ -88,6 +98,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("added_vertices", s.added_vertices);
   if (options.all_quad) {
     u("split_edges", s.split_edges);
+    u("degenerate_faces", s.degenerate_faces);
     u("centre_vertices", s.centre_vertices);
     u("added_vertices_minimum", s.added_vertices_minimum);
     add("all_quad_certified", s.all_quad_certified);

@@ -21,12 +21,13 @@ std::string number_text(double value) {
   return text;
 }
 
-void check_range(const char* option, std::optional<double> value, double low, double high) {
+void check_range(const char* option, std::optional<double> value, double low, double high,
+                 const char* unit = "degrees") {
   if (!value) return;
   // Written so that NaN fails: every comparison with it is false.
   if (!(std::isfinite(*value) && *value >= low && *value <= high)) {
-    throw std::invalid_argument(std::string(option) + " must be a finite number of degrees in [" +
-                                number_text(low) + ", " + number_text(high) + "], not " +
+    throw std::invalid_argument(std::string(option) + " must be a finite number of " + unit +
+                                " in [" + number_text(low) + ", " + number_text(high) + "], not " +
                                 number_text(*value));
   }
 }
@@ -36,6 +37,16 @@ void check_range(const char* option, std::optional<double> value, double low, do
 void validate_options(const QuadOptions& options) {
   check_range("max_corner_deviation", options.max_corner_deviation, 0, kDegenerateQuadCost);
   check_range("sharp_angle_degrees", options.cuts.sharp_angle_degrees, 0, 180);
+  // Bounds far above any quad's cost (270 of shape, 180 of flow per unit weight) that keep the
+  // scaled costs inside the solver's range.
+  check_range("triangle_cost", options.triangle_cost, 0, kMaxTriangleCost);
+  check_range("flow_weight", options.flow_weight, 0, kMaxFlowWeight, "degrees per degree");
+  if (options.objective != Objective::pairs && options.algorithm != Algorithm::automatic) {
+    throw std::invalid_argument("algorithm " + std::string(to_string(options.algorithm)) +
+                                " pairs by objective pairs only; objective " +
+                                std::string(to_string(options.objective)) +
+                                " pairs by the minimum-cost matching");
+  }
   if (options.threads > kMaxQuadThreads) {
     throw std::invalid_argument("threads must be 0 (every core) or at most " +
                                 std::to_string(kMaxQuadThreads) + ", not " +

@@ -62,27 +62,34 @@ void draw_text(cairo_t* cr, double x, double y, const std::string& text) {
   cairo_show_text(cr, text.c_str());
 }
 
-// The colour bar of the quad costs, 0° at the bottom to 90° at the top and a non-convex swatch
-// above, then the swatches of the other faces.
-void draw_legend(cairo_t* cr, double x, double y, double height, bool triangles, bool polygons,
-                 bool added) {
-  const double bar_h = std::max(40.0, height - 110), w = 18;
+// The colour bar of the quad costs, 0° at the bottom up to `top` degrees (90, or the worst quad's
+// cost rounded up to 30° when a quad is non-convex, so that the bar covers every colour drawn;
+// the convex 0° to 90° then keep two thirds of its height), then the swatches of the other faces.
+void draw_legend(cairo_t* cr, double x, double y, double height, double top_degrees, bool triangles,
+                 bool polygons, bool added) {
+  const double bar_h = std::max(40.0, height - 90), w = 18;
   cairo_set_font_size(cr, 11);
   set_colour(cr, {0, 0, 0});
   draw_text(cr, x, y + 10, "worst corner");
-  const double top = y + 46;
-  for (int i = 0; i < 90; ++i) {  // one band per degree
+  const double top = y + 26;
+  const int degrees = int(top_degrees);
+  const double convex_h = degrees > 90 ? bar_h * 2 / 3 : bar_h;
+  auto at = [&](double deg) {  // the height of `deg` on the bar, from the picture's top
+    return deg <= 90 ? top + bar_h - convex_h * deg / 90
+                     : top + (bar_h - convex_h) * (top_degrees - deg) / (top_degrees - 90);
+  };
+  for (int i = 0; i < degrees; ++i) {  // one band per degree
     set_colour(cr, quality_colour(i + 0.5));
-    cairo_rectangle(cr, x, top + bar_h * (89 - i) / 90, w, bar_h / 90 + 0.5);
+    cairo_rectangle(cr, x, at(i + 1), w, at(i) - at(i + 1) + 0.5);
     cairo_fill(cr);
   }
-  set_colour(cr, quality_colour(91));
-  cairo_rectangle(cr, x, top - 26, w, 14);
-  cairo_fill(cr);
   set_colour(cr, {0, 0, 0});
-  draw_text(cr, x + w + 4, top - 15, "> 90 non-convex");
   for (int deg = 0; deg <= 90; deg += 30) {
-    draw_text(cr, x + w + 4, top + bar_h * (90 - deg) / 90 + 4, std::to_string(deg) + "\xc2\xb0");
+    draw_text(cr, x + w + 4, at(deg) + 4, std::to_string(deg) + "\xc2\xb0");
+  }
+  if (degrees > 90) {
+    draw_text(cr, x + w + 4, at(degrees) + 4, std::to_string(degrees) + "\xc2\xb0");
+    draw_text(cr, x + w + 4, (at(90) + at(degrees)) / 2 + 4, "non-convex");
   }
   double swatch_y = top + bar_h + 14;
   auto swatch = [&](const Rgb& colour, const char* label) {
@@ -109,7 +116,11 @@ Rgb quality_colour(double degrees) {
                                    {30, {0.55, 0.75, 0.95}},
                                    {60, {0.96, 0.7, 0.55}},
                                    {90, {0.8, 0.1, 0.1}}};
-  if (!(degrees <= 90)) return {0.45, 0.0, 0.0};  // non-convex (and NaN)
+  if (std::isnan(degrees)) return {0.2, 0.0, 0.0};
+  if (degrees > 90) {  // non-convex: dark red darkening to the degenerate 270°
+    const double t = std::min(1.0, (degrees - 90) / 180);
+    return {0.5 - 0.3 * t, 0.0, 0.0};
+  }
   if (degrees <= 0) return stops[0].colour;
   int i = 0;
   while (degrees > stops[i + 1].at) ++i;
@@ -213,6 +224,7 @@ void render_mesh(const PolygonMesh& mesh, const std::string& path, const RenderO
   const double mean_edge = edges ? edge_px / double(edges) : 1;
   const double line_width = std::clamp(mean_edge / 14, 0.2, 1.2);
   const double line_alpha = mean_edge < 5 ? 0.35 : 0.75;
+  double worst_quad = 0;  // for the colour bar's range
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_width(cr, line_width);
   for (FaceId f : order) {
@@ -222,9 +234,10 @@ void render_mesh(const PolygonMesh& mesh, const std::string& path, const RenderO
     const double cosine = length > 0 ? std::abs(dot(normal, view)) / length : 0;
     Rgb colour = kPolygonColour;
     if (face.size() == 4) {
-      colour =
-          quality_colour(quad_corner_deviation(mesh.positions[face[0]], mesh.positions[face[1]],
-                                               mesh.positions[face[2]], mesh.positions[face[3]]));
+      const double cost = quad_corner_deviation(mesh.positions[face[0]], mesh.positions[face[1]],
+                                                mesh.positions[face[2]], mesh.positions[face[3]]);
+      colour = quality_colour(cost);
+      worst_quad = std::max(worst_quad, std::isnan(cost) ? 270.0 : cost);
     } else if (face.size() == 3) {
       colour = has_quads ? kTriangleColour : kPlainColour;
     }
@@ -249,8 +262,10 @@ void render_mesh(const PolygonMesh& mesh, const std::string& path, const RenderO
     cairo_fill(cr);
   }
   cairo_select_font_face(cr, "sans-serif", CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
-  if (has_quads)
-    draw_legend(cr, W - legend_w + 8, 10, box_h, has_triangles, has_polygons, has_added);
+  if (has_quads) {
+    const double top = worst_quad <= 90 ? 90 : std::min(270.0, 30 * std::ceil(worst_quad / 30));
+    draw_legend(cr, W - legend_w + 8, 10, box_h, top, has_triangles, has_polygons, has_added);
+  }
   cairo_set_font_size(cr, 12);
   set_colour(cr, {0, 0, 0});
   for (std::size_t i = 0; i < options.caption.size(); ++i) {

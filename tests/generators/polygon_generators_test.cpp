@@ -564,7 +564,7 @@ RC_GTEST_PROP(RandomMixedMesh, CensusAgreesWithInspectMeshOnTriangles, ()) {
   RC_ASSERT(r.inconsistent_edges.count == c.inconsistent_edges);
   RC_ASSERT(r.pinched_vertices.count == c.pinched_vertices);
   RC_ASSERT(r.vertex_components == c.components);
-  RC_ASSERT(r.duplicate_triangles.empty());
+  RC_ASSERT(r.duplicate_faces.empty());
   RC_ASSERT(r.degenerate_faces.empty());
 }
 

@@ -37,9 +37,9 @@ std::string slurp(const fs::path& path) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
-std::string error_of(std::string_view bytes, MeshFormat format) {
+std::string error_of(std::string_view bytes, MeshFormat format, ReadMeshOptions options = {}) {
   try {
-    parse_mesh(bytes, format, "in");
+    parse_mesh(bytes, format, "in", nullptr, options);
   } catch (const FileError& e) {
     return e.what();
   }
@@ -219,22 +219,63 @@ TEST(ObjAttributes, AFaceBeforeTheFirstValueHasNone) {
 
 TEST(ObjAttributes, ErrorsAreLocated) {
   const std::string vs = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvn 0 0 1\n";
-  EXPECT_ERROR(vs + "f 1/2 2 3\n", MeshFormat::obj,
-               "in:6: face 0: texture coordinate index 2 out of range (1 texture coordinates "
-               "read so far)");
-  EXPECT_ERROR(vs + "f 1/-2 2 3\n", MeshFormat::obj, "in:6: face 0: texture coordinate index -2");
-  EXPECT_ERROR(vs + "f 1//2 2 3\n", MeshFormat::obj,
-               "in:6: face 0: normal index 2 out of range (1 normals read so far)");
-  EXPECT_ERROR(vs + "f 1/0 2 3\n", MeshFormat::obj, "in:6: face 0: bad texture coordinate index");
-  EXPECT_ERROR(vs + "f 1//x 2 3\n", MeshFormat::obj, "in:6: face 0: bad normal index '1//x'");
-  EXPECT_ERROR(vs + "f 1/1/1/1 2 3\n", MeshFormat::obj, "in:6: face 0: bad corner '1/1/1/1'");
-  EXPECT_ERROR(vs + "vt\n", MeshFormat::obj, "in:6: texture coordinate 1: expected 1 to 3 values");
-  EXPECT_ERROR(vs + "vt 0 0 0 0\n", MeshFormat::obj, "in:6: texture coordinate 1: more than 3");
-  EXPECT_ERROR(vs + "vn 0 1\n", MeshFormat::obj, "in:6: normal 1: expected 3 values");
-  EXPECT_ERROR(vs + "vn 0 1 nan\n", MeshFormat::obj, "in:6: normal 1: bad value 'nan'");
+  const ReadMeshOptions strict{.strict = true};
+  EXPECT_EQ(error_of(vs + "f 1/2 2 3\n", MeshFormat::obj, strict),
+            "in:6: face 1: texture coordinate index 2 out of range (1 texture coordinates read "
+            "so far)");
+  EXPECT_EQ(error_of(vs + "f 1/-2 2 3\n", MeshFormat::obj, strict)
+                .rfind("in:6: face 1: texture coordinate index -2", 0),
+            0u);
+  EXPECT_EQ(error_of(vs + "f 1 2 3\nf 1//2 2 3\n", MeshFormat::obj, strict),
+            "in:7: face 2: normal index 2 out of range (1 normals read so far)");
+  EXPECT_ERROR(vs + "f 1/0 2 3\n", MeshFormat::obj, "in:6: face 1: bad texture coordinate index");
+  EXPECT_ERROR(vs + "f 1//x 2 3\n", MeshFormat::obj, "in:6: face 1: bad normal index '1//x'");
+  EXPECT_ERROR(vs + "f 1/1/1/1 2 3\n", MeshFormat::obj, "in:6: face 1: bad corner '1/1/1/1'");
+  EXPECT_ERROR(vs + "vt\n", MeshFormat::obj, "in:6: texture coordinate 2: expected 1 to 3 values");
+  EXPECT_ERROR(vs + "vt 0 0 0 0\n", MeshFormat::obj, "in:6: texture coordinate 2: more than 3");
+  EXPECT_ERROR(vs + "vn 0 1\n", MeshFormat::obj, "in:6: normal 2: expected 3 values");
+  EXPECT_ERROR(vs + "vn 0 1 nan\n", MeshFormat::obj, "in:6: normal 2: bad value 'nan'");
   EXPECT_ERROR(vs + "s on\n", MeshFormat::obj, "in:6: bad smoothing group 'on'");
   EXPECT_ERROR(vs + "mtllib\n", MeshFormat::obj, "in:6: mtllib without a file name");
-  EXPECT_ERROR("v 0 0 0 1 x 0\n", MeshFormat::obj, "in:1: vertex 0: bad value 'x'");
+  EXPECT_ERROR("v 0 0 0 1 x 0\n", MeshFormat::obj, "in:1: vertex 1: bad value 'x'");
+}
+
+// A texture coordinate or normal index past those the file has drops that attribute of that face
+// (every corner of it), with one line per attribute saying how many faces and the first line; the
+// geometry and the other faces' attributes are read as written. Strict refuses instead.
+TEST(ObjAttributes, DanglingIndicesDropTheFacesAttribute) {
+  const std::string obj =
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n"
+      "f 1/1/1 2/2/1 3/3/1\n"   // line 9: whole
+      "f 2/2/1 4/4/1 3/3/1\n"   // line 10: texture coordinate 4 dangles
+      "f 1//2 2//1 3//1\n"      // line 11: normal 2 dangles
+      "f 1/1/3 2/9/3 3/3/3\n";  // line 12: both dangle
+  std::vector<std::string> dropped;
+  const PolygonMesh mesh = parse_mesh(obj, MeshFormat::obj, "in", &dropped);
+  ASSERT_EQ(mesh.face_count(), 4u);
+  const auto second = mesh.face(1);
+  EXPECT_EQ(std::vector<VertexId>(second.begin(), second.end()), (std::vector<VertexId>{1, 3, 2}));
+  const MeshAttributes& a = mesh.attributes;
+  const std::vector<std::uint32_t> texcoords(a.corner_texcoord.begin(), a.corner_texcoord.end());
+  const std::vector<std::uint32_t> normals(a.corner_normal.begin(), a.corner_normal.end());
+  const std::uint32_t n = kNoAttribute;
+  EXPECT_EQ(texcoords, (std::vector<std::uint32_t>{0, 1, 2, n, n, n, n, n, n, n, n, n}));
+  EXPECT_EQ(normals, (std::vector<std::uint32_t>{0, 0, 0, 0, 0, 0, n, n, n, n, n, n}));
+  EXPECT_EQ(dropped, (std::vector<std::string>{
+                         "2 faces' texture coordinate indices past the file's texture coordinates "
+                         "(those faces have none), the first at line 10",
+                         "2 faces' normal indices past the file's normals (those faces have "
+                         "none), the first at line 11"}));
+  check_attributes(mesh);
+  EXPECT_EQ(error_of(obj, MeshFormat::obj, {.strict = true}),
+            "in:10: face 2: texture coordinate index 4 out of range (3 texture coordinates read "
+            "so far)");
+  // A file with no normals at all, as a subdivision suite writes them: read as if none were named.
+  dropped.clear();
+  const PolygonMesh bare =
+      parse_mesh("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1//1 2//1 3//1\n", MeshFormat::obj, "in", &dropped);
+  EXPECT_TRUE(bare.attributes.corner_normal.empty());
+  EXPECT_EQ(dropped.size(), 1u);
 }
 
 TEST(ObjAttributes, RoundTripKeepsEveryStatement) {

@@ -154,6 +154,19 @@ const std::vector<Seed>& polygon_seeds() {
                      "y\nproperty float z\nelement face 3\nproperty list uchar int "
                      "vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n4 0 1 2 "
                      "3\n3 0 2 4\n5 4 3 2 4 1\n"});
+    // Files as they come: triangle strips with a restart and a turn, dangling attribute
+    // references, degenerate and duplicate faces.
+    seeds.push_back({MeshFormat::ply,
+                     "ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float "
+                     "y\nproperty float z\nelement tristrips 2\nproperty list int int "
+                     "vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n2 2 0\n"
+                     "8 0 1 3 2 2 4 -1 0\n4 1 2 4 3\n"});
+    seeds.push_back({MeshFormat::obj,
+                     "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1//1 2//1 3//1\n"
+                     "f 1/1 3/2 4/1\nf 1/-2 2 4\n"});
+    seeds.push_back({MeshFormat::off,
+                     "OFF\n4 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 0 1\n3 0 1 2\n3 2 1 0\n"
+                     "4 0 1 1 3\n"});
     return seeds;
   }();
   return all;

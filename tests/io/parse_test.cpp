@@ -100,14 +100,14 @@ TEST(ParseObj, Errors) {
   EXPECT_ERROR("\n\n# nothing\n", MeshFormat::obj, "in: empty file");
   EXPECT_EQ(faces_of(parse_mesh(vs + "f 1 2 3\nf 1 2 3 1 2\n", MeshFormat::obj, "in")),
             (std::vector<std::vector<VertexId>>{{0, 1, 2}, {0, 1, 2, 0, 1}}));
-  EXPECT_ERROR(vs + "f 1 2\n", MeshFormat::obj, "in:4: face 0 has 2 corners");
+  EXPECT_ERROR(vs + "f 1 2\n", MeshFormat::obj, "in:4: face 1 has 2 corners");
   EXPECT_ERROR(vs + "f 1 2 4\n", MeshFormat::obj,
-               "in:4: face 0: vertex index 4 out of range (3 vertices read so far)");
-  EXPECT_ERROR(vs + "f 1 2 -4\n", MeshFormat::obj, "in:4: face 0: vertex index -4 out of range");
-  EXPECT_ERROR(vs + "f 1 2 0\n", MeshFormat::obj, "in:4: face 0: bad vertex index '0'");
-  EXPECT_ERROR(vs + "f 1 2 x/1\n", MeshFormat::obj, "in:4: face 0: bad vertex index 'x/1'");
-  EXPECT_ERROR("v 0 0 0\nv 1 NaN 0\n", MeshFormat::obj, "in:2: vertex 1: bad coordinate 'NaN'");
-  EXPECT_ERROR("v 0 0\n", MeshFormat::obj, "in:1: vertex 0: expected 3 coordinates");
+               "in:4: face 1: vertex index 4 out of range (3 vertices read so far)");
+  EXPECT_ERROR(vs + "f 1 2 -4\n", MeshFormat::obj, "in:4: face 1: vertex index -4 out of range");
+  EXPECT_ERROR(vs + "f 1 2 0\n", MeshFormat::obj, "in:4: face 1: bad vertex index '0'");
+  EXPECT_ERROR(vs + "f 1 2 x/1\n", MeshFormat::obj, "in:4: face 1: bad vertex index 'x/1'");
+  EXPECT_ERROR("v 0 0 0\nv 1 NaN 0\n", MeshFormat::obj, "in:2: vertex 2: bad coordinate 'NaN'");
+  EXPECT_ERROR("v 0 0\n", MeshFormat::obj, "in:1: vertex 1: expected 3 coordinates");
   EXPECT_ERROR(vs, MeshFormat::obj, "in: no faces");
 }
 
@@ -250,7 +250,7 @@ TEST(ParseErrors, CarryTheFileAndTheLine) {
   const FileError obj = error("v 0 0 0\nv 1 0 0\n\nf 1 2 x\n", MeshFormat::obj);
   EXPECT_EQ(obj.file(), "in.x");
   EXPECT_EQ(obj.line(), 4u);
-  EXPECT_STREQ(obj.what(), "in.x:4: face 0: bad vertex index 'x'");
+  EXPECT_STREQ(obj.what(), "in.x:4: face 1: bad vertex index 'x'");
   const FileError ply =
       error(ply_header("binary_little_endian", 3, 1) + binary_body(false, 3), MeshFormat::ply);
   EXPECT_EQ(ply.file(), "in.x");
@@ -423,11 +423,11 @@ TEST(ParsePly, RunsOfTrianglesReadAsTheAsciiFile) {
 TEST(ParsePolygons, FewerThanThreeCornersAndOtherErrors) {
   const std::string vs = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_EQ(polygon_error_of(vs + "f 1 2 3\nf 1 2\n", MeshFormat::obj),
-            "in:5: face 1 has 2 corners; a face needs at least 3");
+            "in:5: face 2 has 2 corners; a face needs at least 3");
   EXPECT_EQ(polygon_error_of(vs + "f\n", MeshFormat::obj),
-            "in:4: face 0 has 0 corners; a face needs at least 3");
+            "in:4: face 1 has 0 corners; a face needs at least 3");
   EXPECT_EQ(polygon_error_of(vs + "f 1 2 3 4\n", MeshFormat::obj),
-            "in:4: face 0: vertex index 4 out of range (3 vertices read so far)");
+            "in:4: face 1: vertex index 4 out of range (3 vertices read so far)");
   const std::string off = "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
   EXPECT_EQ(polygon_error_of(off + "2 0 1\n", MeshFormat::off),
             "in:7: face 1 has 2 corners; a face needs at least 3");

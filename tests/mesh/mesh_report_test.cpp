@@ -127,7 +127,7 @@ TEST(MeshReport, EachProblemNamesItsFirstElement) {
   PolygonMesh pillow;
   pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   pillow.corners = {0, 1, 2, 0, 2, 1};
-  EXPECT_EQ(inspect_mesh(pillow).duplicate_triangles.first, std::vector<FaceId>{1});
+  EXPECT_EQ(inspect_mesh(pillow).duplicate_faces.first, std::vector<FaceId>{1});
   EXPECT_EQ(requirement_error(pillow), "not a closed surface: duplicate triangle 1 (1 in all)");
   EXPECT_EQ(requirement_error(PolygonMesh{}), "not a closed surface: no triangles");
 }

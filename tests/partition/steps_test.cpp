@@ -48,6 +48,7 @@ std::uint64_t maximum_pairs(const std::vector<VertexId>& corners) {
   mesh.positions.assign(top + 1, {0.0, 0.0, 0.0});
   mesh.corners.assign(corners.begin(), corners.end());
   QuadOptions options;
+  options.objective = Objective::pairs;  // the maximum, which the parts are compared with
   options.sources = false;
   return quadrangulate(mesh, options).stats.pairs;
 }

@@ -282,7 +282,9 @@ AllQuadCheck check_all_quad_mesh(const PolygonMesh& input, const QuadResult& res
       // The face as it was (a pair's quad, a polygon): no new vertex, nothing inside.
       for (std::size_t k = 0; k < cycle.size(); ++k)
         sides.push_back({undirected(cycle[k], cycle[(k + 1) % cycle.size()]), kNoVertex, first});
-      if (cycle.size() != 4) {
+      // A face repeating a vertex is kept as it is; any other must be a quad.
+      const bool repeats = std::set<VertexId>(cycle.begin(), cycle.end()).size() != cycle.size();
+      if (cycle.size() != 4 && !repeats) {
         counted.problem = face_name(first) + " has " + std::to_string(cycle.size()) + " corners";
         return counted;
       }

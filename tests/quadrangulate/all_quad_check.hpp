@@ -31,11 +31,12 @@ struct AllQuadCheck {
 };
 
 /// Checks the output of an all-quad run as described at the top of this file, plus: every output
-/// face is a quad (but kept polygons), input vertices are unmoved, every added vertex is a
-/// midpoint or a centre, no inner edge of a face's pieces is an edge of another face, and each
-/// component (faces joined through edges) keeps its Euler characteristic, boundary loops and
-/// orientability. `flips_allowed`: lrs's quads with a triangle its flips made are skipped (they
-/// are checked by the pairing check). O(C log C) for C output corners.
+/// face is a quad (but kept polygons, and faces repeating a vertex kept exactly as they were),
+/// input vertices are unmoved, every added vertex is a midpoint or a centre, no inner edge of a
+/// face's pieces is an edge of another face, and each component (faces joined through edges) keeps
+/// its Euler characteristic, boundary loops and orientability. `flips_allowed`: lrs's quads with a
+/// triangle its flips made are skipped (they are checked by the pairing check). O(C log C) for C
+/// output corners.
 AllQuadCheck check_all_quad_mesh(const PolygonMesh& input, const QuadResult& result,
                                  KeptPolygons polygons, bool flips_allowed);
 

@@ -61,7 +61,7 @@ void expect_pairs_like_without_normals(const PolygonMesh& plain) {
   EXPECT_EQ(with.stats.cuts.by_cause[int(CutCause::normal_seam)], 0u);
   EXPECT_EQ(with.stats.pairs, without.stats.pairs);
   EXPECT_EQ(with.stats.triangles_left, without.stats.triangles_left);
-  EXPECT_EQ(testing::check_quad_result(shaded, with, false, false), "");
+  EXPECT_EQ(testing::check_quad_result(shaded, with, QuadOptions{}), "");
   EXPECT_EQ(testing::check_attributes_kept(shaded, with), "");
 }
 

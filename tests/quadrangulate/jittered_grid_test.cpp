@@ -55,7 +55,8 @@ TEST(JitteredGrid, QualityGivesBackAtLeast99PercentOfTheQuads) {
       const QuadResult best = quadrangulate(grid, {.objective = Objective::quality});
       EXPECT_TRUE(best.stats.optimality_certified);
       EXPECT_EQ(petersen::testing::check_quad_result(grid, best, false, false), "");
-      const QuadResult ps = quadrangulate(grid, {.algorithm = Algorithm::ps, .seed = seed});
+      const QuadResult ps = quadrangulate(
+          grid, {.objective = Objective::pairs, .algorithm = Algorithm::ps, .seed = seed});
       EXPECT_EQ(petersen::testing::check_quad_result(grid, ps, false, false), "");
       const double by_quality = recovered(grid, spec, best), by_ps = recovered(grid, spec, ps);
       std::printf("%s seed %llu: quality gives back %.2f %% of the quads, ps %.2f %%\n",

@@ -42,8 +42,10 @@ PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
 void expect_correct(const PolygonMesh& mesh, bool all_quad = false) {
   for (Algorithm algorithm : kAlgorithms) {
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result =
-        quadrangulate(mesh, {.algorithm = algorithm, .all_quad = all_quad, .peer = kLemon});
+    const QuadResult result = quadrangulate(mesh, {.objective = Objective::pairs,
+                                                   .algorithm = algorithm,
+                                                   .all_quad = all_quad,
+                                                   .peer = kLemon});
     EXPECT_TRUE(result.stats.maximum_certified);
     EXPECT_EQ(check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs), "");
   }
@@ -79,15 +81,17 @@ TEST(Quadrangulate, PairsWhatItCanAndKeepsTheRest) {
 // the summary says which ran.
 TEST(Quadrangulate, ReportsHowABipartiteDualWasPaired) {
   const PolygonMesh plate = voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 3});
-  const QuadResult in_order = quadrangulate(plate);
+  // The paper's algorithms: objective pairs.
+  const QuadOptions pairs{.objective = Objective::pairs};
+  const QuadResult in_order = quadrangulate(plate, pairs);
   EXPECT_TRUE(in_order.stats.matching.ordered_sweep);
   EXPECT_EQ(in_order.stats.matching.unpaired_after_initial, 0u);
-  const QuadResult regular = quadrangulate(testing::shuffled_faces(plate, 11));
+  const QuadResult regular = quadrangulate(testing::shuffled_faces(plate, 11), pairs);
   EXPECT_TRUE(regular.stats.matching.schrijver);
   EXPECT_EQ(regular.stats.matching.unpaired_after_initial, 0u);
   EXPECT_EQ(regular.stats.triangles_left, 0u);
   EXPECT_TRUE(regular.stats.maximum_certified);
-  const QuadResult irregular = quadrangulate(randomize_triangulation(plate, 7, 200, 1));
+  const QuadResult irregular = quadrangulate(randomize_triangulation(plate, 7, 200, 1), pairs);
   EXPECT_FALSE(irregular.stats.matching.schrijver);
   EXPECT_EQ(irregular.stats.triangles_left, 0u);
   EXPECT_TRUE(irregular.stats.maximum_certified);
@@ -101,7 +105,8 @@ TEST(Quadrangulate, LrsReportsItsAugmentationsLabels) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const PolygonMesh plate = randomize_triangulation(
         voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 4}), 300, 300, seed);
-    const QuadResult r = quadrangulate(plate, {.algorithm = Algorithm::lrs});
+    const QuadResult r =
+        quadrangulate(plate, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
     ASSERT_TRUE(r.stats.maximum_certified);
     ASSERT_EQ(r.stats.triangles_left, 0u);
     EXPECT_GE(r.stats.matching.nodes_labelled, r.stats.matching.augmenting_paths);
@@ -137,7 +142,7 @@ TEST(Quadrangulate, CertifiesAMaximumThatIsNotPerfect) {
   const PolygonMesh mesh =
       mesh_of({{0, 0, 0}, {2, 0, 0}, {1, 2, 0}, {1, -1, 0}, {2.5, 1.5, 0}, {-0.5, 1.5, 0}},
               {{0, 1, 2}, {1, 0, 3}, {2, 1, 4}, {0, 2, 5}});
-  const QuadResult result = quadrangulate(mesh);
+  const QuadResult result = quadrangulate(mesh, {.objective = Objective::pairs});
   EXPECT_EQ(result.stats.pairs, 1u);
   EXPECT_EQ(result.stats.triangles_left, 2u);
   EXPECT_EQ(result.tutte_set.size(), 1u);  // the middle triangle
@@ -187,7 +192,8 @@ TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
 TEST(Quadrangulate, ClosedMeshesArePerfect) {
   const PolygonMesh mesh = random_closed_surface(2, 40, 200, 5);
   for (Algorithm algorithm : kAlgorithms) {
-    const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
+    const QuadResult result = quadrangulate(
+        mesh, {.objective = Objective::pairs, .algorithm = algorithm, .peer = kLemon});
     EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
     EXPECT_EQ(result.stats.pairs, mesh.face_count() / 2);
   }
@@ -201,7 +207,8 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
     expect_correct(mesh);
     expect_correct(mesh, /*all_quad=*/true);
     for (Algorithm algorithm : kAlgorithms) {
-      const QuadResult result = quadrangulate(mesh, {.algorithm = algorithm, .peer = kLemon});
+      const QuadResult result = quadrangulate(
+          mesh, {.objective = Objective::pairs, .algorithm = algorithm, .peer = kLemon});
       EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
       EXPECT_EQ(result.stats.inconsistent_edges > 0, true);
       if (algorithm == Algorithm::lrs) {
@@ -211,7 +218,7 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
     }
   }
   // The minimal projective plane has 10 triangles; every one is paired.
-  EXPECT_EQ(quadrangulate(projective_plane(0)).stats.pairs, 5u);
+  EXPECT_EQ(quadrangulate(projective_plane(0), {.objective = Objective::pairs}).stats.pairs, 5u);
 }
 
 // A whole closed mesh whose pairable graph is its dual goes to lrs on that graph; one with a
@@ -238,8 +245,10 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
     faces.push_back({8 + i, 8 + (i + 1) % 4, 12});
   }
   const PolygonMesh pinched = mesh_of(positions, faces);
-  const QuadResult lrs = quadrangulate(pinched, {.algorithm = Algorithm::lrs});
-  const QuadResult by_auto = quadrangulate(pinched, {.algorithm = Algorithm::automatic});
+  const QuadResult lrs =
+      quadrangulate(pinched, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
+  const QuadResult by_auto =
+      quadrangulate(pinched, {.objective = Objective::pairs, .algorithm = Algorithm::automatic});
   EXPECT_EQ(lrs.stats.lrs_fallback_components, 1u);
   EXPECT_EQ(lrs.stats.lrs_fallback_reason,
             "pinched vertex 12 (its triangles form more than one fan)");
@@ -250,14 +259,16 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
   // The consuming door without sources lets lrs free the corners once its triangulation has read
   // them: the pinch is refused before that, and auto pairs the corners as they were.
   const QuadResult consumed =
-      quadrangulate(PolygonMesh(pinched), {.algorithm = Algorithm::lrs, .sources = false});
+      quadrangulate(PolygonMesh(pinched),
+                    {.objective = Objective::pairs, .algorithm = Algorithm::lrs, .sources = false});
   EXPECT_EQ(consumed.stats.lrs_fallback_components, 1u);
   EXPECT_EQ(consumed.mesh.corners, by_auto.mesh.corners);
   // Without the pinch (vertex 12 split into one apex per cone) lrs pairs it, with flips allowed.
   positions.push_back({0, 0, 1.5});
   for (VertexId i = 0; i < 4; ++i) faces[16 + 2 * i + 1][2] = 13;
   const PolygonMesh sphere = mesh_of(positions, faces);
-  const QuadResult split = quadrangulate(sphere, {.algorithm = Algorithm::lrs});
+  const QuadResult split =
+      quadrangulate(sphere, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
   EXPECT_EQ(split.stats.lrs_fallback_components, 0u);
   EXPECT_EQ(split.stats.pairs, 12u);
   EXPECT_EQ(split.stats.irreducible_vertices, 4u);
@@ -334,8 +345,8 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   if (*rc::gen::arbitrary<bool>()) cuts.sharp_angle_degrees = *rc::gen::inRange(10, 170) + 0.5;
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::ps, Algorithm::gw, Algorithm::sg});
-  const QuadResult result =
-      quadrangulate(mesh, {.algorithm = algorithm, .cuts = cuts, .peer = kLemon});
+  const QuadResult result = quadrangulate(
+      mesh, {.objective = Objective::pairs, .algorithm = algorithm, .cuts = cuts, .peer = kLemon});
   RC_ASSERT(result.stats.maximum_certified);
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
   RC_LOG() << problem;
@@ -381,7 +392,7 @@ RC_GTEST_PROP(Quadrangulate, WithoutSourcesTheSameMesh, ()) {
                                                       *rc::gen::inRange<std::uint32_t>(4, 300));
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::lrs, Algorithm::ps});
-  const QuadOptions with{.algorithm = algorithm};
+  const QuadOptions with{.objective = Objective::pairs, .algorithm = algorithm};
   QuadOptions without = with;
   without.sources = false;
   const QuadResult expected = quadrangulate(mesh, with);
@@ -615,17 +626,22 @@ RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
         CutCause::object, CutCause::smoothing, CutCause::face_property}) {
     if (*rc::gen::inRange(0, 4) == 0) cross.push_back(cause);
   }
-  const Algorithm algorithm =
-      *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
-  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
+  const Objective objective =
+      *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
+  // The algorithm is the pairs objective's choice: the others refuse any but automatic.
+  const Algorithm algorithm = objective == Objective::pairs
+                                  ? *rc::gen::elementOf(std::vector<Algorithm>(
+                                        std::begin(kAlgorithms), std::end(kAlgorithms)))
+                                  : Algorithm::automatic;
   const bool all_quad = *rc::gen::arbitrary<bool>();
+  const QuadOptions options{.objective = objective,
+                            .algorithm = algorithm,
+                            .all_quad = all_quad,
+                            .cross = cross,
+                            .peer = kLemon};
   QuadResult result;
   try {
-    result = quadrangulate(mesh, {.algorithm = algorithm,
-                                  .all_quad = all_quad,
-                                  .objective = objective,
-                                  .cross = cross,
-                                  .peer = kLemon});
+    result = quadrangulate(mesh, options);
   } catch (const MeshError& e) {
     RC_ASSERT(all_quad);
     RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
@@ -636,10 +652,9 @@ RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::uv_seam)] > 0, "uv seams");
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::material)] > 0, "material borders");
   RC_CLASSIFY(result.stats.added_vertices > 0, "split");
-  RC_ASSERT(result.stats.maximum_certified);
+  RC_ASSERT(result.stats.maximum_certified || objective == Objective::quads);
   if (algorithm == Algorithm::lrs && per_face) RC_ASSERT(result.stats.flipped_edges == 0u);
-  const bool flips = algorithm == Algorithm::lrs && objective == Objective::pairs && !per_face;
-  std::string problem = check_quad_result(mesh, result, all_quad, flips, {}, cross);
+  std::string problem = check_quad_result(mesh, result, options);
   if (problem.empty()) problem = check_attributes_kept(mesh, result);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
@@ -649,17 +664,21 @@ RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
 RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   const PolygonMesh mesh = *testing::mixed_meshes();
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
-  const Algorithm algorithm =
-      *rc::gen::elementOf(std::vector<Algorithm>(std::begin(kAlgorithms), std::end(kAlgorithms)));
+  const Objective objective =
+      *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
+  const Algorithm algorithm = objective == Objective::pairs
+                                  ? *rc::gen::elementOf(std::vector<Algorithm>(
+                                        std::begin(kAlgorithms), std::end(kAlgorithms)))
+                                  : Algorithm::automatic;
   const bool all_quad = *rc::gen::arbitrary<bool>();
-  const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
+  const QuadOptions options{.objective = objective,
+                            .algorithm = algorithm,
+                            .seed = seed,
+                            .all_quad = all_quad,
+                            .peer = kLemon};
   QuadResult result;
   try {
-    result = quadrangulate(mesh, {.algorithm = algorithm,
-                                  .seed = seed,
-                                  .all_quad = all_quad,
-                                  .objective = objective,
-                                  .peer = kLemon});
+    result = quadrangulate(mesh, options);
   } catch (const MeshError& e) {
     RC_ASSERT(all_quad);
     RC_ASSERT(std::string(e.what()).find("--all-quad") != std::string::npos);
@@ -669,9 +688,8 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   RC_CLASSIFY(result.stats.polygons_kept > 0, "polygons");
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::non_manifold)] > 0, "non-manifold");
   RC_CLASSIFY(result.stats.added_vertices > 0, "split");
-  RC_ASSERT(result.stats.optimality_certified == (objective == Objective::quality));
-  const std::string problem = check_quad_result(
-      mesh, result, all_quad, algorithm == Algorithm::lrs && objective == Objective::pairs);
+  RC_ASSERT(result.stats.optimality_certified == (objective != Objective::pairs));
+  const std::string problem = check_quad_result(mesh, result, options);
   RC_LOG() << problem;
   RC_ASSERT(problem.empty());
   // The summary's initial pairing: what the greedy passes left, each augmenting path pairing two
@@ -692,7 +710,7 @@ RC_GTEST_PROP(Quadrangulate, ThreadsDoNotChangeTheAnswer, ()) {
   const std::uint32_t threads = *rc::gen::inRange<std::uint32_t>(2, 6);
   const bool all_quad = *rc::gen::arbitrary<bool>();
   const Objective objective = *rc::gen::element(Objective::pairs, Objective::quality);
-  QuadOptions options{.all_quad = all_quad, .objective = objective};
+  QuadOptions options{.objective = objective, .all_quad = all_quad};
   QuadResult one, many;
   try {
     one = quadrangulate(mesh, options);

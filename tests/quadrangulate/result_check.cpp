@@ -304,13 +304,14 @@ std::optional<std::uint32_t> maximum_matching_size(std::uint32_t nodes,
   return maximum;
 }
 
-// The pairing part of check_quad_result: every input face used once, the pairs pairable, their
-// number a maximum (by the peers), and the witness. With all_quad the pieces of a split face are
-// left to check_all_quad_mesh.
+// The pairing part of check_quad_result: every input face used once, the pairs pairable, and when
+// `maximum` their number a maximum (by the peers) and the witness; else (Objective::quads, which
+// may leave triangles) the optimum certified, and maximum_certified only when it is one. With
+// all_quad the pieces of a split face are left to check_all_quad_mesh.
 std::string check_pairing(const PolygonMesh& input, const QuadResult& result, bool all_quad,
                           bool flips_allowed, const CutOptions& cuts,
                           std::span<const CutCause> cross,
-                          std::optional<double> max_corner_deviation) {
+                          std::optional<double> max_corner_deviation, bool maximum_wanted = true) {
   const std::uint32_t faces = static_cast<std::uint32_t>(input.face_count());
   // The pairable graph, by definition: an edge in exactly two faces, both triangles without a
   // repeated vertex, whose union has four vertices.
@@ -413,6 +414,17 @@ std::string check_pairing(const PolygonMesh& input, const QuadResult& result, bo
     return "triangles_left " + std::to_string(result.stats.triangles_left) + ", counted " +
            std::to_string(left);
   }
+  if (!maximum_wanted) {
+    if (!result.stats.optimality_certified) return "the least-cost pairing is not certified";
+    if (result.stats.triangles_left < nodes - 2 * maximum) {
+      return "triangles_left " + std::to_string(result.stats.triangles_left) +
+             " but the maximum leaves " + std::to_string(nodes - 2 * maximum);
+    }
+    const bool is_maximum = result.stats.triangles_left == nodes - 2 * maximum;
+    if (result.stats.maximum_certified && !is_maximum) return "maximum_certified on a non-maximum";
+    if (pairs != result.stats.pairs && !flips_allowed) return "pair count differs";
+    return {};
+  }
   if (result.stats.triangles_left != nodes - 2 * maximum) {
     return "triangles_left " + std::to_string(result.stats.triangles_left) +
            " but the maximum leaves " + std::to_string(nodes - 2 * maximum);
@@ -455,8 +467,9 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result,
                               const QuadOptions& options) {
   const bool flips_allowed = options.algorithm == Algorithm::lrs;
-  std::string problem = check_pairing(input, result, options.all_quad, flips_allowed, options.cuts,
-                                      options.cross, options.max_corner_deviation);
+  std::string problem =
+      check_pairing(input, result, options.all_quad, flips_allowed, options.cuts, options.cross,
+                    options.max_corner_deviation, options.objective != Objective::quads);
   if (!problem.empty() || !options.all_quad) return problem;
   const AllQuadCheck counted = check_all_quad_mesh(
       input, result, options.keep_polygons ? KeptPolygons::kept : KeptPolygons::rebuilt,

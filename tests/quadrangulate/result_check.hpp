@@ -23,8 +23,9 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
                               std::span<const CutCause> cross = {},
                               std::optional<double> max_corner_deviation = {});
 
-/// The same check for a run with these options, judged on their own terms: the algorithm (lrs
-/// may flip), the cuts, cross, the threshold, and with all_quad keep_polygons (input polygons kept
+/// The same check for a run with these options, judged on their own terms: the objective (quads
+/// need not be maximum, but must be certified optimal), the algorithm (lrs may flip), the cuts,
+/// cross, the threshold, and with all_quad keep_polygons (input polygons kept
 /// exactly, or rebuilt into quads) and the all-quad figures (check_all_quad_counts).
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result,
                               const QuadOptions& options);

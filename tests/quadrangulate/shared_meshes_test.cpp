@@ -76,14 +76,16 @@ TEST_P(EveryAlgorithm, ConvertsTheMesh) {
     if (!small && algorithm != Algorithm::automatic && algorithm != Algorithm::lrs) continue;
     if (algorithm == Algorithm::frink && mesh.face_count() > kFrinkUpTo) continue;
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result =
-        quadrangulate(mesh, {.algorithm = algorithm, .peer = &lemon_peer::maximum_matching});
+    const QuadResult result = quadrangulate(mesh, {.objective = Objective::pairs,
+                                                   .algorithm = algorithm,
+                                                   .peer = &lemon_peer::maximum_matching});
     EXPECT_TRUE(result.stats.maximum_certified);
     EXPECT_EQ(testing::check_quad_result(mesh, result, false, algorithm == Algorithm::lrs), "");
   }
   try {
-    const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true});
-    EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false), "");
+    const QuadOptions options{.all_quad = true};
+    const QuadResult all_quad = quadrangulate(mesh, options);
+    EXPECT_EQ(testing::check_quad_result(mesh, all_quad, options), "");
   } catch (const MeshError& e) {
     ADD_FAILURE() << file << ": " << e.what();
   }
@@ -101,11 +103,12 @@ TEST(SharedMeshes, FandiskKeepsItsCreases) {
   if (!dir) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
   const PolygonMesh mesh = read_bare_mesh(*dir + "/fandisk.obj.gz");
   const CutOptions cuts{.sharp_angle_degrees = 30.0};
-  const QuadResult result = quadrangulate(mesh, {.cuts = cuts});
-  EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::sharp)], 0u);
-  EXPECT_EQ(testing::check_quad_result(mesh, result, false, false, cuts), "");
-  const QuadResult all_quad = quadrangulate(mesh, {.all_quad = true, .cuts = cuts});
-  EXPECT_EQ(testing::check_quad_result(mesh, all_quad, true, false, cuts), "");
+  for (bool all_quad : {false, true}) {
+    const QuadOptions options{.all_quad = all_quad, .cuts = cuts};
+    const QuadResult result = quadrangulate(mesh, options);
+    EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::sharp)], 0u);
+    EXPECT_EQ(testing::check_quad_result(mesh, result, options), "");
+  }
 }
 
 // --objective quality on the closed meshes: all quads, both certificates, and the optimum LEMON's
@@ -141,9 +144,10 @@ TEST(SharedMeshes, SpotKeepsItsTextureCoordinates) {
   const PolygonMesh mesh = read_mesh(*dir + "/spot.obj.gz");
   ASSERT_FALSE(mesh.attributes.corner_texcoord.empty());
   for (bool all_quad : {false, true}) {
-    const QuadResult result = quadrangulate(mesh, {.all_quad = all_quad});
+    const QuadOptions options{.all_quad = all_quad};
+    const QuadResult result = quadrangulate(mesh, options);
     EXPECT_GT(result.stats.cuts.by_cause[int(CutCause::uv_seam)], 0u);
-    EXPECT_EQ(testing::check_quad_result(mesh, result, all_quad, false), "");
+    EXPECT_EQ(testing::check_quad_result(mesh, result, options), "");
     EXPECT_EQ(testing::check_attributes_kept(mesh, result), "");
   }
 }

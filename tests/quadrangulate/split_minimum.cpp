@@ -14,7 +14,8 @@ namespace {
 
 constexpr std::uint64_t kInfinite = std::numeric_limits<std::uint64_t>::max() / 4;
 
-// The faces of the pairing, as vertex cycles, and which are kept polygons.
+// The faces of the pairing, as vertex cycles, and which are kept as they are: polygons under
+// keep_polygons, and faces repeating a vertex (no cut into quads of those repeats none).
 struct PreSplitFaces {
   std::vector<std::vector<VertexId>> cycles;
   std::vector<bool> kept;
@@ -50,7 +51,8 @@ PreSplitFaces pre_split_faces(const PolygonMesh& input, const QuadResult& result
           }
         }
     }
-    faces.kept.push_back(keep_polygons && g == kNoFace && input.arity(f) != 3);
+    const bool repeats = std::set<VertexId>(cycle.begin(), cycle.end()).size() != cycle.size();
+    faces.kept.push_back((keep_polygons && g == kNoFace && input.arity(f) != 3) || repeats);
     faces.cycles.push_back(std::move(cycle));
   }
   return faces;

@@ -7,7 +7,7 @@
 // Splitting an edge adds one side to each face on it (a face twice on it gains two: no change);
 // an edge of one face (boundary) changes that face alone; an edge of three or more faces changes
 // all of them at once. With keep_polygons, input polygons that are not triangles are neither
-// counted nor split (their edges are not available).
+// counted nor split (their edges are not available); neither are faces that repeat a vertex.
 //
 // The search: every subset of the edges of three or more faces (those are few), then, over the
 // graph of the remaining edges (faces as nodes, one sink node for all boundary edges), the

@@ -11,6 +11,8 @@
 #include <fstream>
 #include <memory>
 
+#include "petersen/dualize/quad_quality.hpp"
+
 namespace petersen {
 namespace {
 
@@ -129,10 +131,12 @@ TEST_F(RenderMesh, ColoursEachFaceByItsShapeSeenHeadOn) {
   EXPECT_LT(dot.count, 100u);
   EXPECT_LT(dot.mean_y, triangle.mean_y);
   EXPECT_NEAR(dot.mean_x, triangle.mean_x, 3);
-  // The legend: the non-convex swatch and the bar's 0° band on the right.
-  const Region legend_dark(region(p, bytes(quality_colour(91)), 900));
-  EXPECT_GT(legend_dark.count, 100u);
-  EXPECT_GT(legend_dark.mean_x, legend_x);
+  // The legend: the bar's bands on the right, 0° to 90° and no further, as no quad is non-convex.
+  const Region legend_blue(region(p, bytes(quality_colour(0.5)), 900));
+  EXPECT_GT(legend_blue.count, 30u);
+  EXPECT_GT(legend_blue.mean_x, legend_x);
+  EXPECT_GT(region(p, bytes(quality_colour(89.5)), 900).mean_x, legend_x);
+  EXPECT_EQ(region(p, bytes(quality_colour(90.5)), 900).count, 0u);
   // The background is white in the corner; the caption has dark pixels at the bottom.
   EXPECT_TRUE(close(p.at(2, 2), {255, 255, 255}));
   std::uint64_t caption_ink = 0;
@@ -140,6 +144,31 @@ TEST_F(RenderMesh, ColoursEachFaceByItsShapeSeenHeadOn) {
     for (int x = 0; x < 300; ++x) caption_ink += p.at(x, y)[0] < 128;
   }
   EXPECT_GT(caption_ink, 20u);
+}
+
+TEST_F(RenderMesh, TheColourBarCoversANonConvexQuad) {
+  PolygonMesh mesh;
+  // A dart: the corner at (0.5, 0.5) is reflex, so the quad costs more than 90°.
+  for (std::array<double, 3> p :
+       {std::array<double, 3>{0, 0, 0}, {2, 0, 0}, {0.5, 0.5, 0}, {0, 2, 0}}) {
+    mesh.positions.push_back(p);
+  }
+  mesh.add_face(std::vector<VertexId>{0, 1, 2, 3});
+  const double cost = quad_corner_deviation(mesh.positions[0], mesh.positions[1], mesh.positions[2],
+                                            mesh.positions[3]);
+  ASSERT_GT(cost, 110);
+  const std::string path = (dir / "dart.png").string();
+  RenderOptions options;
+  options.view = std::array<double, 3>{0, 0, -1};
+  render_mesh(mesh, path, options);
+  const Pixels p = read_png(path);
+  const int legend_x = p.width - 130;
+  EXPECT_GT(region(p, bytes(quality_colour(cost)), legend_x).count, 1000u);  // the dart
+  // The bar goes on past 90° to the dart's cost: its bands there are in the legend (95° is far
+  // enough from the dart's cost for its colour to differ from the dart's).
+  const Region beyond = region(p, bytes(quality_colour(95.5)), p.width);
+  EXPECT_GT(beyond.count, 10u);
+  EXPECT_GT(beyond.mean_x, legend_x);
 }
 
 TEST_F(RenderMesh, TrianglesOfAMeshWithoutQuadsArePlainAndThereIsNoLegend) {
@@ -155,7 +184,7 @@ TEST_F(RenderMesh, TrianglesOfAMeshWithoutQuadsArePlainAndThereIsNoLegend) {
   const Pixels p = read_png(path);
   EXPECT_GT(region(p, bytes(kPlainColour), p.width).count, 10000u);
   EXPECT_EQ(region(p, bytes(kTriangleColour), p.width).count, 0u);
-  EXPECT_EQ(region(p, bytes(quality_colour(91)), p.width).count, 0u);
+  EXPECT_EQ(region(p, bytes(quality_colour(0.5)), p.width).count, 0u);
 }
 
 TEST_F(RenderMesh, WritesSvgAndRefusesOtherExtensionsAndBadViews) {

@@ -20,7 +20,7 @@ check "info on the example" "$petersen" info "$example"
 grep -q "genus 2" "$work/out" || { failed=$((failed + 1)); echo "FAILED: info does not say genus 2"; }
 for algorithm in "$@"; do
   check "quad --algorithm $algorithm" "$petersen" quad "$example" "$work/q-$algorithm.obj" \
-    --algorithm "$algorithm" --stats-json "$work/$algorithm.json"
+    --objective pairs --algorithm "$algorithm" --stats-json "$work/$algorithm.json"
   for key in algorithm faces_in triangles polygons_kept genus load_seconds check_seconds \
     dual_seconds initial_seconds initial_paired_percent unpaired_after_initial augment_seconds \
     matching_seconds verify_seconds pairs triangles_left added_vertices cut_edges \
@@ -40,7 +40,7 @@ done
 check "generate a plate" "$petersen" generate "$work/plate.off"
 for algorithm in auto ps; do
   check "quad --algorithm $algorithm on the plate" "$petersen" quad "$work/plate.off" \
-    "$work/plate-$algorithm.off" --algorithm "$algorithm" --stats-json "$work/plate-$algorithm.json"
+    "$work/plate-$algorithm.off" --objective pairs --algorithm "$algorithm" --stats-json "$work/plate-$algorithm.json"
 done
 grep -qE '"(ordered_sweep|schrijver)": true' "$work/plate-auto.json" || {
   failed=$((failed + 1)); echo "FAILED: auto reports neither the sweep nor Schrijver's"; }
@@ -76,18 +76,26 @@ check "a threshold no quad meets" "$petersen" quad "$work/trapezoid.off" "$work/
 grep -q '"shape": 1' "$work/mixed-t.json" && grep -q '"triangles_left": 2,' "$work/mixed-t.json" || {
   failed=$((failed + 1)); echo "FAILED: threshold"; cat "$work/mixed-t.json"; }
 ! grep -q "picks the cheapest" "$work/out" || { failed=$((failed + 1)); echo "FAILED: hint"; }
-# The threshold alone pairs within it at random: the summary points to --objective quality.
+# A threshold with the pairs objective pairs within it at random: the summary points to
+# --objective quality.
 check "a threshold alone" "$petersen" quad "$work/trapezoid.off" "$work/mixed-t.off" \
-  --max-corner-deviation 1
+  --max-corner-deviation 1 --objective pairs
 grep -q "^threshold .*--objective quality picks the cheapest" "$work/out" || {
   failed=$((failed + 1)); echo "FAILED: threshold hint"; cat "$work/out"; }
-refuses "--cross shape" "not a cut of the mesh's attributes" \
+refuses "--cross shape" "unknown value shape: one of uv_seam, normal_seam" \
   "$petersen" quad "$work/mixed.off" "$work/mixed-t.off" --max-corner-deviation 10 --cross shape
-# A failed run leaves the existing output as it was: a degenerate triangle cannot become a quad.
+# A degenerate triangle is kept as it is under --all-quad, and counted.
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 0 1\n' >"$work/degenerate.off"
+check "all-quad on a degenerate triangle" "$petersen" quad "$work/degenerate.off" \
+  "$work/degenerate-q.off" --all-quad
+grep -q "^degenerate  1 faces" "$work/out" || { failed=$((failed + 1)); echo "FAILED: degenerate count"; }
+# A failed run leaves the existing output as it was: a prism's two triangles, each walled in by
+# the quads --keep-polygons keeps, cannot become quads.
+printf 'OFF\n6 5 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 1\n0 1 1\n3 0 2 1\n3 3 4 5\n4 0 1 4 3\n4 1 2 5 4\n4 2 0 3 5\n' \
+  >"$work/prism.off"
 cp "$work/mixed-q.off" "$work/keep.off"
-refuses "all-quad on a degenerate triangle" "repeats a vertex" \
-  "$petersen" quad "$work/degenerate.off" "$work/keep.off" --all-quad
+refuses "all-quad on walled-in triangles" "no all-quad mesh exists" \
+  "$petersen" quad "$work/prism.off" "$work/keep.off" --all-quad --keep-polygons
 cmp -s "$work/keep.off" "$work/mixed-q.off" || { failed=$((failed + 1)); echo "FAILED: OUT damaged"; }
 ls "$work" | grep -q "tmp" && { failed=$((failed + 1)); echo "FAILED: a temporary file was left"; }
 # Nor does one that fails on its stats: OUT is written (whole), the old stats file stays whole.
@@ -125,7 +133,7 @@ zero4='\x00\x00\x00\x00' one4='\x3f\x80\x00\x00' inf4='\xff\x80\x00\x00'
   printf "$zero4$zero4$zero4$one4$inf4$zero4$zero4$one4$zero4"
   printf '\x03\x00\x00\x00\x00\x00\x00\x00\x01\x00\x00\x00\x02'; } >"$work/inf-be.ply"
 refuses "NaN in an OFF" "nan.off:4: vertex 1" "$petersen" quad "$work/nan.off" "$work/x.off"
-refuses "-inf in an OBJ" "inf.obj:2: vertex 1" "$petersen" quad "$work/inf.obj" "$work/x.off"
+refuses "-inf in an OBJ" "inf.obj:2: vertex 2" "$petersen" quad "$work/inf.obj" "$work/x.off"
 refuses "NaN in an ascii PLY" "nan-ascii.ply:11: vertex 1" \
   "$petersen" quad "$work/nan-ascii.ply" "$work/x.off"
 refuses "NaN in a binary PLY of doubles" "nan-le.ply: vertex 1: non-finite y" \
@@ -174,16 +182,17 @@ refuses "an index out of range" "range.off" "$petersen" quad "$work/range.off" "
 refuses "a missing file" "missing.obj" "$petersen" info "$work/missing.obj"
 check "--cross the attributes' cuts" "$petersen" quad "$work/open.off" "$work/open-q.off" \
   --cross uv_seam,material,face_property
-refuses "--cross a cut of the structure" "not a cut of the mesh's attributes: boundary" \
+refuses "--cross a cut of the structure" "unknown value boundary: one of uv_seam" \
   "$petersen" quad "$work/open.off" "$work/x.off" --cross uv_seam,boundary
 refuses "an unknown algorithm" "blossom" "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
 refuses "an unknown output format" "x.stl" "$petersen" quad "$example" "$work/x.stl"
 
 # generate --kind: V and F of the OFF header are those of the generator's grid.
-for spec in "klein 20 40" "open-grid 30 40" "projective 21 40"; do
-  read -r kind vertices faces <<<"$spec"
-  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" --nx 5 \
-    --ny 4 --subdivision 1
+for spec in "klein 20 40 --nx 5 --ny 4" "open-grid 30 40 --nx 5 --ny 4" \
+  "projective 21 40 --subdivision 1"; do
+  read -r kind vertices faces size <<<"$spec"
+  # shellcheck disable=SC2086 # $size is flags
+  check "generate --kind $kind" "$petersen" generate "$work/$kind.off" --kind "$kind" $size
   header=$(sed -n 2p "$work/$kind.off")
   [ "$header" = "$vertices $faces 0" ] || {
     failed=$((failed + 1)); echo "FAILED: generate --kind $kind wrote header $header"; }
@@ -191,6 +200,47 @@ done
 check "generate with holes, fins, pinches, flips" "$petersen" generate "$work/mixed.obj" \
   --kind klein --holes 2 --fins 2 --pinches 1 --flip-faces 3 --seed 5
 refuses "an unknown kind" "torus" "$petersen" generate "$work/x.off" --kind torus
+
+# Files as they come. Dangling OBJ normal and texture coordinate indices: each attribute dropped
+# for its faces with one warning, the faces paired; --strict refuses, naming the line.
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nf 1//1 2//1 3//1\nf 1/1 3/2 4/1\n' \
+  >"$work/dangling.obj"
+check "dangling OBJ indices" "$petersen" quad "$work/dangling.obj" "$work/dangling-q.obj"
+[ "$(grep -c "warning: .*dangling.obj: dropped 1 faces' " "$work/out")" = 2 ] || {
+  failed=$((failed + 1)); echo "FAILED: dangling warnings"; cat "$work/out"; }
+grep -q "^pairs       1 " "$work/out" || { failed=$((failed + 1)); echo "FAILED: dangling pairs"; }
+refuses "--strict on a dangling normal" "dangling.obj:6: face 1: normal index 1 out of range" \
+  "$petersen" quad "$work/dangling.obj" "$work/x.obj" --strict
+refuses "info --strict" "dangling.obj:6: face 1" "$petersen" info "$work/dangling.obj" --strict
+# Every face twice: the summary names the duplicates and the flag; dropped, the result is the
+# single copy's.
+"$petersen" generate "$work/single.off" --kind plate >/dev/null
+awk 'NR == 2 { split($0, n, " "); print n[1], 2 * n[2], 0; v = n[1]; f = n[2]; next }
+     NR > 2 && NR <= 2 + v { print; next }
+     NR > 2 + v { print; faces[++k] = $0 }
+     NR == 1 { print }
+     END { for (i = 1; i <= k; ++i) { split(faces[i], c, " "); print 3, c[4], c[3], c[2] } }' \
+  "$work/single.off" >"$work/doubled.off"
+check "doubled faces" "$petersen" quad "$work/doubled.off" "$work/doubled-q.off"
+grep -q "^duplicates  .*--drop-duplicate-faces" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: duplicates not named"; cat "$work/out"; }
+grep -q "^pairs       0 " "$work/out" || { failed=$((failed + 1)); echo "FAILED: doubled pairs"; }
+check "single copy" "$petersen" quad "$work/single.off" "$work/single-q.off"
+check "--drop-duplicate-faces" "$petersen" quad "$work/doubled.off" "$work/dropped-q.off" \
+  --drop-duplicate-faces
+cmp -s "$work/single-q.off" "$work/dropped-q.off" || {
+  failed=$((failed + 1)); echo "FAILED: dropped copies pair otherwise"; }
+check "info on doubled faces" "$petersen" info "$work/doubled.off"
+grep -q "duplicate faces [1-9]" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: info names no duplicates"; }
+# A tristrip PLY pairs as the same triangles written as faces.
+printf 'ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n5 0 1 2 3 -1\n' \
+  >"$work/strip.ply"
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n3 0 1 2\n3 2 1 3\n' >"$work/strip-faces.off"
+check "tristrips" "$petersen" quad "$work/strip.ply" "$work/strip-q.off"
+check "tristrips as faces" "$petersen" quad "$work/strip-faces.off" "$work/strip-faces-q.off"
+cmp -s "$work/strip-q.off" "$work/strip-faces-q.off" || {
+  failed=$((failed + 1)); echo "FAILED: tristrips pair otherwise"; }
 
 # render: PNG and SVG of a mesh and of a quad result (the pixels are checked by tests/render).
 png_size() { od -An -tu1 -j16 -N8 "$1" | awk '{print $1*16777216+$2*65536+$3*256+$4 "x" $5*16777216+$6*65536+$7*256+$8}'; }
@@ -206,6 +256,52 @@ refuses "a picture that is not png or svg" "png or .svg" "$petersen" render "$ex
 refuses "quad --render to a jpg" "png or .svg" "$petersen" quad "$example" "$work/x.obj" \
   --render "$work/x.jpg"
 refuses "a view of three zeros" "view" "$petersen" render "$example" "$work/x.png" --view 0,0,0
+
+# Messages that help: the values of a bad enum listed (names taken in any case), the closest flag
+# or subcommand to a misspelt one, output folders checked before any work in every subcommand.
+check "an enum value in capitals" "$petersen" quad "$example" "$work/x.obj" --algorithm PS \
+  --objective Pairs --augment LOCAL
+refuses "a bad algorithm lists the algorithms" "one of auto, sg, ps, ds, gw, frink, lemon, lrs" \
+  "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
+refuses "a bad objective lists the objectives" "unknown value best: one of quads, pairs, quality" \
+  "$petersen" quad "$example" "$work/x.obj" --objective best
+refuses "match lrs" "lrs works on meshes" "$petersen" match "$work/g.txt" "$work/m.txt" --algorithm lrs
+refuses "a bad graph format" "one of dimacs, edges" \
+  "$petersen" match "$work/g.txt" "$work/m.txt" --format graphml
+refuses "a bad generator kind" "one of plate, trefoil, klein" \
+  "$petersen" generate "$work/x.obj" --kind donut
+refuses "a misspelt flag" "did you mean --all-quad" "$petersen" quad "$example" "$work/x.obj" --all-quads
+refuses "a misspelt subcommand" "did you mean quad" "$petersen" qaud "$example" "$work/x.obj"
+for command in "render $example" "generate" "match $work/g.txt" "quad $example"; do
+  # shellcheck disable=SC2086 # the words of $command are separate arguments
+  refuses "$command into no folder" "no such folder to write into: $work/nope" \
+    "$petersen" $command "$work/nope/x.obj"
+done
+refuses "--memory-limit on an OFF" "out-of-core conversion reads a binary PLY" \
+  "$petersen" quad "$example" "$work/x.ply" --memory-limit 1G
+refuses "--memory-limit with a flag out of core cannot honour" "not --objective, --all-quad" \
+  "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --all-quad
+refuses "--part-triangles alone" "give --memory-limit" \
+  "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000
+# Every generator kind works with its defaults.
+for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus; do
+  check "generate --kind $kind by default" "$petersen" generate "$work/k-$kind.obj" --kind "$kind"
+done
+check "generate a trefoil PLY" "$petersen" generate "$work/k-trefoil.ply" --kind trefoil
+refuses "--nx for a kind without a grid" "plate has no grid to size" \
+  "$petersen" generate "$work/x.obj" --nx 5
+refuses "a torus too thin" "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny" \
+  "$petersen" generate "$work/x.obj" --kind jittered-torus --nx 20 --ny 10
+# The summary reads as a success: no dangling colon, a written line for each file.
+check "quad --render's written line" "$petersen" quad "$work/k-trefoil.obj" "$work/t.obj" \
+  --render "$work/t.png"
+grep -q "^written     $work/t.png$" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: no written line for --render"; cat "$work/out"; }
+grep -q "^cut edges   0 of 6528$" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: cut edges line"; cat "$work/out"; }
+check "lrs on a Klein bottle" "$petersen" quad "$work/k-klein.obj" "$work/kq.obj" --objective pairs --algorithm lrs
+grep -q "^            lrs refused 1 closed component (paired by auto instead): not a closed surface: inconsistently oriented edge" "$work/out" || {
+  failed=$((failed + 1)); echo "FAILED: the lrs refusal line"; cat "$work/out"; }
 
 echo "cli: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

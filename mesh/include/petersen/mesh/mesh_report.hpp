@@ -11,8 +11,9 @@
 // - Several connected components are ACCEPTED: the dual graph is then disconnected and
 //   perfect_matching matches each component on its own. Refused only when asked.
 // - Unreferenced vertices are ACCEPTED (reported): they are not part of the surface.
-// - Duplicate triangles (the same three vertices, either orientation) are REFUSED: even when they
-//   close up as a two-triangle sphere, the quad of the pair would repeat a corner.
+// - Duplicate faces (the same vertices as an earlier face, either orientation) are REFUSED: even
+//   when two triangles close up as a two-triangle sphere, the quad of the pair would repeat a
+//   corner. drop_duplicate_faces (duplicate_faces.hpp) removes them.
 
 #include <cstdint>
 #include <map>
@@ -53,7 +54,7 @@ struct MeshReport {
   std::map<std::uint32_t, std::uint64_t> faces_by_arity;
   Findings<FaceId> out_of_range_faces;   ///< a corner names no vertex
   Findings<FaceId> degenerate_faces;     ///< faces repeating a vertex
-  Findings<FaceId> duplicate_triangles;  ///< same three vertices as an earlier triangle
+  Findings<FaceId> duplicate_faces;      ///< same vertices as an earlier face (duplicate_faces)
   Findings<EdgeRef> boundary_edges;      ///< in one face
   std::uint64_t boundary_loops = 0;      ///< connected curves of boundary edges
   Findings<EdgeRef> non_manifold_edges;  ///< in three or more faces

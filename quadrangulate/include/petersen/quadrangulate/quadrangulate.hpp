@@ -3,12 +3,15 @@
 //
 // Two triangles may be paired when they share an edge that belongs to exactly these two faces and
 // their union has four distinct vertices (petersen/dualize/pairable_graph.hpp); every other edge
-// is a cut no pair crosses. The pairing is a maximum matching of that graph, certified:
+// is a cut no pair crosses. By default (Objective::quads) the pairing is the matching of that graph
+// of least total cost, each quad costing its shape and each triangle left a price, found exactly
+// and proved optimal by its dual certificate. Objective::pairs and quality pair the maximum:
 // - components of the graph in which every triangle has three pairable sides (closed surfaces)
 //   are matched perfectly by the chosen algorithm (Petersen's theorem: their graph is cubic and
 //   bridgeless, since a bridge would be a one-edge boundary), and checked by the O(n) verifier;
 // - every other component by a greedy pass and Tarjan's augmenting paths, whose final Edmonds
-//   forest gives a Tutte–Berge witness that verify_maximum_matching checks.
+//   forest gives a Tutte–Berge witness that verify_maximum_matching checks;
+// quality takes, among the maximum pairings, the one of least total shape cost.
 // Faces that are not triangles are kept exactly as they are; triangles left unpaired stay
 // triangles, or with all_quad are turned into quads by splitting edges (see QuadOptions).
 
@@ -30,23 +33,61 @@ namespace petersen {
 /// for normals written with four decimals).
 inline constexpr double kFlatShadingCosine = 0.9999;
 
-/// What the pairing optimises besides its size (always the maximum).
+/// What the pairing optimises.
 enum class Objective {
-  pairs,    ///< nothing else: the algorithm's pairing, fastest
-  quality,  ///< the least total quad cost (quad_corner_deviation), exact and certified
+  /// The quads people keep (the default): the least total of every quad's cost, its shape
+  /// (quad_corner_deviation) plus QuadOptions::flow_weight times its edge flow (how far its sides
+  /// lie from a smooth cross field, petersen/dualize/cross_field.hpp), plus
+  /// QuadOptions::triangle_cost for every triangle left unpaired. Not the maximum pairing: a
+  /// triangle stays where every quad it could join costs more than leaving it, so a model's own
+  /// triangles stay where pairing them would break good quads. Exact, its dual certificate checked.
+  quads,
+  pairs,    ///< the maximum pairing by the algorithm, nothing else weighed: fastest
+  quality,  ///< the maximum pairing of least total quad_corner_deviation, exact and certified
 };
 std::string_view to_string(Objective objective);
 std::optional<Objective> parse_objective(std::string_view name);
+
+/// Objective::quads' defaults, chosen on the recovery bench (bench/quad_recovery.py: quad models
+/// exported triangulated and converted back) and the scans of ../shared/meshes. Leaving a triangle
+/// costs as much as a quad whose worst corner is 90° off a right angle, so a pair of cost c saves
+/// 180 − c over its two triangles: scans keep all but a fraction of a percent of their triangles
+/// paired, while a model's own triangles stay where pairing them would turn its quads. The edge
+/// flow is off by default: a cross field made from the triangles' own sides points the wrong way
+/// often enough on the bench's models (whose quads meet at many irregular vertices) that every
+/// weight tried brought fewer quads back than shape alone.
+inline constexpr double kDefaultTriangleCost = 90.0;
+inline constexpr double kDefaultFlowWeight = 0.0;
+/// Their largest values: far above what any quad costs, inside the solver's range once scaled.
+inline constexpr double kMaxTriangleCost = 10000.0;
+inline constexpr double kMaxFlowWeight = 100.0;
 
 /// The most threads QuadOptions::threads may ask for: more than any machine has cores, few enough
 /// that a mistyped count cannot start a thread per block of a large mesh.
 inline constexpr std::uint32_t kMaxQuadThreads = 1024;
 
 struct QuadOptions {
-  /// The algorithm for the closed components: auto, sg, ps, ds, gw, frink, lemon or lrs. lrs works
-  /// on each closed, connected, orientable manifold component (it flips edges, see LrsResult); a
-  /// closed component it cannot take (pinched vertex, non-orientable) is matched by auto instead
-  /// and counted in QuadStats::lrs_fallback_components.
+  /// Objective::quads pairs by the exact minimum-cost matching of any size with a price per left
+  /// triangle (min_cost_matching in min_cost_matching.hpp) over the whole pairable graph (with
+  /// all_quad, which splits every triangle left, the cheapest maximum pairing, as quality);
+  /// Objective::quality by the minimum-cost matching of the quads' worst-corner deviation,
+  /// perfect on closed components and the cheapest maximum one elsewhere. Each is proved optimal
+  /// by its dual certificate. Objective::pairs runs `algorithm`, `augment` and `seed`, which the
+  /// other two do not use: an algorithm other than automatic with them is refused.
+  Objective objective = Objective::quads;
+  /// Objective::quads: what a triangle left unpaired costs, in the quads' cost units (degrees). A
+  /// pair is made where its quad costs less than the two triangles it takes (twice this) and the
+  /// pairs it displaces allow; 0 would pair nothing that costs. Finite and at least 0.
+  double triangle_cost = kDefaultTriangleCost;
+  /// Objective::quads: degrees of shape cost per degree of edge flow (pairable_edge_flow in
+  /// petersen/dualize/cross_field.hpp: how closely the edge a pair removes runs along the cross
+  /// field, in [0, 90]). Finite and at least 0; 0 (the default) weighs shape alone and computes no
+  /// field.
+  double flow_weight = kDefaultFlowWeight;
+  /// Objective::pairs: the algorithm for the closed components: auto, sg, ps, ds, gw, frink, lemon
+  /// or lrs. lrs works on each closed, connected, orientable manifold component (it flips edges,
+  /// see LrsResult); a closed component it cannot take (pinched vertex, non-orientable) is matched
+  /// by auto instead and counted in QuadStats::lrs_fallback_components.
   Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
@@ -67,19 +108,17 @@ struct QuadOptions {
   /// chosen first, by elimination over GF(2), and the minimum is then the T-join's given them
   /// (all_quad_certified is false, as it is wherever a non-manifold edge borders faces that
   /// need splits: splitting it flips all of its faces at once, which the T-join does not weigh).
+  /// A face repeating a vertex (a degenerate triangle such as {a, a, b}) has no cut into quads
+  /// that repeats none: it is kept as it is, its sides never split, and counted in
+  /// QuadStats::degenerate_faces, while every other face becomes quads.
   /// Input vertices never move and the surface's topology is
   /// unchanged. Throws MeshError only with a proof that no all-quad mesh exists (faces whose total
-  /// side count stays odd whatever is split, naming an input face), or for a face repeating a
-  /// vertex that would have to change.
+  /// side count stays odd whatever is split, naming an input face), the kept faces as they are.
   bool all_quad = false;
   /// With all_quad: the input's faces that are not triangles are kept exactly as they are (never
   /// in T, their edges never split); where that leaves a region of odd total side count, the
   /// MeshError says that --keep-polygons is what makes it impossible.
   bool keep_polygons = false;
-  /// Objective::quality pairs by the exact minimum-cost matching (min_cost_matching.hpp) of the
-  /// quads' worst-corner deviation, perfect on closed components and the cheapest maximum one
-  /// elsewhere, each proved optimal by its dual certificate; `algorithm` is then not used.
-  Objective objective = Objective::pairs;
   /// The threshold mode (Blender's Tris to Quads, made exact): only triangles whose quad costs at
   /// most this many degrees (quad_corner_deviation) may be paired; every other pairable edge is a
   /// cut of cause CutCause::shape. The pairing is then a certified maximum matching of what is
@@ -121,15 +160,27 @@ struct QuadOptions {
 };
 
 struct QuadStats {
-  std::uint64_t faces_in = 0;        ///< faces of the input
-  std::uint64_t vertices = 0;        ///< vertices of the input (referenced or not)
-  std::uint64_t triangles = 0;       ///< triangles of the input
-  std::uint64_t polygons_kept = 0;   ///< faces that are not triangles, kept as they are
-  std::uint64_t pairs = 0;           ///< quads made of two input triangles
-  std::uint64_t triangles_left = 0;  ///< triangles no maximum pairing can pair (before all_quad)
+  std::uint64_t faces_in = 0;       ///< faces of the input
+  std::uint64_t vertices = 0;       ///< vertices of the input (referenced or not)
+  std::uint64_t triangles = 0;      ///< triangles of the input
+  std::uint64_t polygons_kept = 0;  ///< faces that are not triangles, kept as they are
+  /// Faces with the same corners as an earlier face (duplicate_faces, petersen/mesh/
+  /// duplicate_faces.hpp): their edges are edges of three or more faces (or of a face and its
+  /// copy), so no pair crosses them; drop_duplicate_faces removes them before a run. Looked for
+  /// only where some edge is cut as non-manifold or duplicate, among the polygons and the
+  /// triangles cut on every side: a copy of a triangle can be nowhere else, a copy of a polygon
+  /// nowhere else that matters to the pairing.
+  std::uint64_t duplicate_faces = 0;
+  std::uint64_t pairs = 0;  ///< quads made of two input triangles
+  /// Triangles left unpaired (before all_quad): none that a maximum pairing can pair, except with
+  /// Objective::quads, which leaves those that cost less as triangles.
+  std::uint64_t triangles_left = 0;
   /// all_quad: every new vertex, split_edges + centre_vertices.
   std::uint64_t added_vertices = 0;
-  std::uint64_t split_edges = 0;      ///< all_quad: edges given a midpoint
+  std::uint64_t split_edges = 0;  ///< all_quad: edges given a midpoint
+  /// all_quad: faces (not pairs) repeating a vertex, which no cut into quads can fix, kept as they
+  /// are; their sides are never split.
+  std::uint64_t degenerate_faces = 0;
   std::uint64_t centre_vertices = 0;  ///< all_quad: centres of faces cut around one
   /// all_quad: the fewest midpoints that make every face even for this pairing (the minimum
   /// T-join's size, plus the non-manifold splits when parity forced some).
@@ -151,13 +202,16 @@ struct QuadStats {
   std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
   std::uint64_t components = 0;          ///< components of the pairable graph
   std::uint64_t closed_components = 0;   ///< of them, those matched by `algorithm`
-  bool maximum_certified = false;        ///< the pairing passed the verifier and the witness check
-  /// Objective::quality: the certificates proved the total cost minimal.
+  /// The pairing passed the verifier and the witness check: no pairing leaves fewer triangles.
+  /// Objective::quads does not seek the maximum: there it is true only when the optimum happens
+  /// to leave no triangle a maximum pairing would pair (every triangle paired, or proved so).
+  bool maximum_certified = false;
+  /// Objective::quads and quality: the certificates proved the total cost minimal.
   bool optimality_certified = false;
   /// The quads made of two input triangles, by quad_corner_deviation in degrees (quality_figures
   /// of petersen/dualize/quad_quality.hpp): median, 95th percentile, how many are non-convex
-  /// (cost above 90), and the sum (for Objective::quality
-  /// the certified optimum, in the solver's integer units over kDefaultCostScale).
+  /// (cost above 90), and the sum (for Objective::quality and quads the certified optimum, in the
+  /// solver's integer units over kDefaultCostScale: for quads, shape, flow and left triangles).
   double quality_median = 0, quality_p95 = 0, objective_total = 0;
   std::uint64_t nonconvex_quads = 0;
   /// Of `algorithm` on the closed components (the paper's columns), plus the augmentation of the
@@ -168,13 +222,15 @@ struct QuadStats {
   std::uint64_t lrs_fallback_components = 0;
   std::string lrs_fallback_reason;  ///< the first component's refusal, when there was one
 
-  double check_seconds = 0;     ///< the input check and the pairable graph
-  double dual_seconds = 0;      ///< the graphs the algorithms run on
-  double verify_seconds = 0;    ///< the verifier and the maximality witness (on a closed
-                                ///< mesh, the components are counted beside the verifier)
-  double quads_seconds = 0;     ///< the output faces
-  double all_quad_seconds = 0;  ///< the splits
-  double total_seconds = 0;     ///< everything above plus the matching
+  double check_seconds = 0;            ///< the input check and the pairable graph (and the field)
+  double field_seconds = 0;            ///< Objective::quads: the cross field and the flow costs
+  std::uint32_t field_iterations = 0;  ///< Objective::quads: the field solve's iterations
+  double dual_seconds = 0;             ///< the graphs the algorithms run on
+  double verify_seconds = 0;           ///< the verifier and the maximality witness (on a closed
+                                       ///< mesh, the components are counted beside the verifier)
+  double quads_seconds = 0;            ///< the output faces
+  double all_quad_seconds = 0;         ///< the splits
+  double total_seconds = 0;            ///< everything above plus the matching
 };
 
 struct QuadResult {

@@ -1,6 +1,7 @@
 #pragma once
 // A picture of a polygon mesh, PNG or SVG (cairo): a shaded orthographic view, face edges drawn,
-// quads coloured by their worst-corner deviation (quad_quality.hpp) with a colour bar, triangles
+// quads coloured by their worst-corner deviation (quad_quality.hpp) with a colour bar that spans
+// every cost drawn (0 to 90°, or on to the worst non-convex quad's), triangles
 // beside quads and vertices added by all_quad highlighted, lines of figures in a caption.
 
 #include <array>
@@ -19,7 +20,7 @@ struct Rgb {
 };
 
 /// A quad's colour for its cost in degrees: blue at 0°, light blue at 30°, salmon at 60°, red at
-/// 90°, linear between, dark red above 90° (non-convex).
+/// 90°, linear between; above 90° (non-convex) dark red, darkening up to 270° (degenerate).
 Rgb quality_colour(double degrees);
 
 inline constexpr Rgb kTriangleColour{1.0, 0.85, 0.0};  ///< triangles of a mesh with quads
