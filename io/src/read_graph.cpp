@@ -15,10 +15,6 @@ namespace {
 constexpr std::pair<GraphFormat, std::string_view> kFormatNames[] = {
     {GraphFormat::dimacs, "dimacs"}, {GraphFormat::edges, "edges"}};
 
-// Isolated nodes a file may declare beyond those its edges touch (DIMACS header, or the largest
-// id of an edge list): 2^24 of them cost 64 MiB per per-node array of the matching.
-constexpr std::uint64_t kMostIsolatedNodes = std::uint64_t{1} << 24;
-
 // Errors at "source:line"; the line is set as the parse goes, or to an earlier line whose
 // content a later check refuses.
 struct At {
@@ -36,16 +32,82 @@ NodeId parse_id(std::string_view token, const At& at, std::string_view what) {
   return static_cast<NodeId>(value);
 }
 
-// An edge's cost: a whole integer within kMaxFileCost.
-std::int64_t parse_cost(std::string_view token, const At& at) {
-  std::int64_t value = 0;
-  if (!text::parse_integer(token, value)) {
-    at.fail("bad cost " + text::Located::quote(token) + " (an integer)");
+// A cost as the file writes it: value, and when its digits allow, exactly mantissa ·
+// 10^exponent (at most 18 significant digits, trailing zeros moved into the exponent).
+struct Decimal {
+  double value = 0;
+  bool exact = false;
+  std::int64_t mantissa = 0;
+  std::int64_t exponent = 0;
+};
+
+// [+-] digits [. digits] [(e|E) [+-] digits], at least one digit before the exponent.
+Decimal parse_cost(std::string_view token, const At& at) {
+  auto bad = [&]() { at.fail("bad cost " + text::Located::quote(token) + " (a number)"); };
+  Decimal d;
+  if (!text::parse_real(token, d.value)) bad();
+  std::size_t i = token.empty() || (token[0] != '+' && token[0] != '-') ? 0 : 1;
+  const bool negative = i == 1 && token[0] == '-';
+  int digits = 0, significant = 0;
+  bool point = false;
+  for (; i < token.size() && token[i] != 'e' && token[i] != 'E'; ++i) {
+    if (token[i] == '.' && !point) {
+      point = true;
+      continue;
+    }
+    if (token[i] < '0' || token[i] > '9') bad();  // hex floats, inf, nan: from_chars took them
+    ++digits;
+    if (point) --d.exponent;
+    if (d.mantissa == 0 && token[i] == '0') continue;
+    if (++significant > 18) return d;  // inexact: the double only
+    d.mantissa = 10 * d.mantissa + (token[i] - '0');
   }
-  if (value > kMaxFileCost || value < -kMaxFileCost) {
-    at.fail("cost " + std::to_string(value) + " out of range (at most 2^40 in absolute value)");
+  if (digits == 0) bad();
+  if (i < token.size()) {
+    std::int64_t e = 0;
+    if (!text::parse_integer(token.substr(i + 1), e) || e > 100000 || e < -100000) return d;
+    d.exponent += e;
   }
-  return value;
+  while (d.mantissa != 0 && d.mantissa % 10 == 0) {
+    d.mantissa /= 10;
+    ++d.exponent;
+  }
+  if (d.mantissa == 0) d.exponent = 0;
+  if (negative) d.mantissa = -d.mantissa;
+  d.exact = true;
+  return d;
+}
+
+// The parsed costs into `graph`: integers times 10^decimals when every one is exact and fits
+// within kMaxFileCost so, else the doubles.
+void set_costs(const std::vector<Decimal>& parsed, GraphFile& graph) {
+  std::int64_t decimals = 0;
+  bool exact = true;
+  for (const Decimal& d : parsed) {
+    exact = exact && d.exact;
+    if (d.exact) decimals = std::max(decimals, -d.exponent);
+  }
+  if (exact && decimals <= 18) {
+    std::vector<std::int64_t> costs;
+    costs.reserve(parsed.size());
+    for (const Decimal& d : parsed) {
+      // |mantissa| < 10^18 and |value| <= 2^40 < 10^13 leave no room for overflow.
+      std::int64_t scaled = d.mantissa;
+      for (std::int64_t k = d.exponent + decimals; k > 0 && exact; --k) {
+        exact = scaled <= kMaxFileCost && scaled >= -kMaxFileCost;
+        scaled *= 10;
+      }
+      exact = exact && scaled <= kMaxFileCost && scaled >= -kMaxFileCost;
+      costs.push_back(scaled);
+    }
+    if (exact) {
+      graph.costs = std::move(costs);
+      graph.cost_decimals = static_cast<std::uint32_t>(decimals);
+      return;
+    }
+  }
+  graph.real_costs.reserve(parsed.size());
+  for (const Decimal& d : parsed) graph.real_costs.push_back(d.value);
 }
 
 // Whether every edge line gives a cost or none does: the first edge line decides (on line
@@ -59,13 +121,10 @@ struct CostPresence {
       with_cost = has_cost;
       first_line = at.line;
     } else if (*with_cost != has_cost) {
-      differs(has_cost, first_line, at);
+      at.fail(std::string(has_cost ? "a cost on this edge line, none"
+                                   : "no cost on this edge line, one") +
+              " on line " + std::to_string(first_line) + " (a cost on every edge line or on none)");
     }
-  }
-  [[noreturn]] static void differs(bool has_cost, std::size_t other_line, const At& at) {
-    at.fail(std::string(has_cost ? "a cost on this edge line, none"
-                                 : "no cost on this edge line, one") +
-            " on line " + std::to_string(other_line) + " (a cost on every edge line or on none)");
   }
 };
 
@@ -76,20 +135,27 @@ void check_node_count(std::uint64_t nodes, std::uint64_t edges, const At& at) {
   }
 }
 
+[[noreturn]] void empty_file(At& at) {
+  at.line = 1;
+  at.fail("empty graph file (no edge and no header)");
+}
+
 GraphFile parse_dimacs(std::string_view bytes, const std::string& source) {
   GraphFile graph;
   graph.first_id = 1;
   text::Lines lines{bytes};
   At at{source};
   At header_at{source};
-  bool have_header = false;
+  bool have_header = false, any_line = false;
   std::uint64_t declared_edges = 0;
   CostPresence presence;
+  std::vector<Decimal> costs;
   std::string_view line, token;
   while (lines.next(line)) {
     at.line = lines.line;
     text::Tokens tokens{line};
     if (!tokens.next(token) || token == "c") continue;
+    any_line = true;
     if (token == "p") {
       if (have_header)
         at.fail("a second 'p' line (the first is line " + std::to_string(header_at.line) + ")");
@@ -124,14 +190,16 @@ GraphFile parse_dimacs(std::string_view bytes, const std::string& source) {
         ends[k] = id - 1;
       }
       graph.edges.push_back(ends);
+      graph.edge_lines.push_back(static_cast<std::uint32_t>(at.line));
       const bool has_cost = tokens.next(token);
       presence.check(has_cost, at);
-      if (has_cost) graph.costs.push_back(parse_cost(token, at));
+      if (has_cost) costs.push_back(parse_cost(token, at));
     } else {
       at.fail("unknown line type " + text::Located::quote(token) + " (expected c, p or e)");
     }
     if (tokens.next(token)) at.fail("unexpected " + text::Located::quote(token));
   }
+  if (!any_line) empty_file(at);
   if (!have_header) {
     at.line = std::max<std::size_t>(lines.line, 1);
     at.fail("no 'p edge N M' line");
@@ -140,61 +208,95 @@ GraphFile parse_dimacs(std::string_view bytes, const std::string& source) {
     header_at.fail("header declares " + std::to_string(declared_edges) + " edges, the file has " +
                    std::to_string(graph.edges.size()));
   }
+  set_costs(costs, graph);
   return graph;
+}
+
+// The edge list's header: a comment "# nodes N" or "# nodes N edges M" (nothing else on it)
+// before the first edge. A comment whose first words are not "nodes" and an integer is none.
+struct EdgeListHeader {
+  std::uint32_t nodes = 0;
+  std::optional<std::uint64_t> edges;
+  std::size_t line = 0;
+};
+
+// The header a comment line declares, if it is one; `comment` is the text after '#'.
+std::optional<EdgeListHeader> header_of(std::string_view comment, const At& at) {
+  text::Tokens tokens{comment};
+  std::string_view token, n_token, m_token;
+  std::int64_t count = 0;
+  if (!tokens.next(token) || token != "nodes" || !tokens.next(n_token) ||
+      !text::parse_integer(n_token, count)) {
+    return std::nullopt;  // a comment like any other
+  }
+  EdgeListHeader header;
+  header.line = at.line;
+  header.nodes = parse_id(n_token, at, "node count");
+  if (tokens.next(token)) {
+    if (token != "edges" || !tokens.next(m_token))
+      at.fail("expected '# nodes N' or '# nodes N edges M'");
+    header.edges = parse_id(m_token, at, "edge count");
+  }
+  if (tokens.next(token)) at.fail("unexpected " + text::Located::quote(token) + " in the header");
+  return header;
 }
 
 GraphFile parse_edge_list(std::string_view bytes, const std::string& source) {
   GraphFile graph;
   text::Lines lines{bytes};
   At at{source};
-  std::vector<std::size_t> line_of;  // of each pair, for the errors found after the first pass
-  std::string_view line, token;
-  // Every data line is a pair, with or without a cost; whether the first is a header is known
-  // once all are counted. A header has no cost; with costs, every other line has one.
+  std::optional<EdgeListHeader> header;
   CostPresence presence;
-  bool first_has_cost = false;
+  std::vector<Decimal> costs;
+  std::string_view line, token;
   while (lines.next(line)) {
     at.line = lines.line;
-    text::Tokens tokens{text::strip_comment(line)};
-    if (!tokens.next(token)) continue;
-    std::string_view second;
-    if (!tokens.next(second)) at.fail("expected two node ids 'U V'");
-    graph.edges.push_back({parse_id(token, at, "node id"), parse_id(second, at, "node id")});
-    line_of.push_back(lines.line);
-    const bool has_cost = tokens.next(token);
-    if (graph.edges.size() == 1) {
-      first_has_cost = has_cost;
-    } else {
-      presence.check(has_cost, at);
-    }
-    if (has_cost) graph.costs.push_back(parse_cost(token, at));
-    if (tokens.next(token)) at.fail("unexpected " + text::Located::quote(token));
-  }
-  const bool header =
-      !graph.edges.empty() && !first_has_cost && graph.edges[0][1] == graph.edges.size() - 1;
-  // Without a header, the first line is an edge like the others.
-  if (!header && presence.with_cost && first_has_cost != *presence.with_cost) {
-    at.line = line_of[0];
-    CostPresence::differs(first_has_cost, line_of[1], at);
-  }
-  if (header) {
-    at.line = line_of[0];
-    graph.node_count = graph.edges[0][0];
-    check_node_count(graph.node_count, graph.edges.size() - 1, at);
-    graph.edges.erase(graph.edges.begin());
-    line_of.erase(line_of.begin());
-    for (std::size_t e = 0; e < graph.edges.size(); ++e) {
-      for (NodeId id : graph.edges[e]) {
-        if (id >= graph.node_count) {
-          at.line = line_of[e];
-          at.fail("node " + std::to_string(id) + " out of range (the header on line " +
-                  std::to_string(line_of.empty() ? 1 : line_of[0] - 1) + " declares " +
-                  std::to_string(graph.node_count) + " nodes)");
+    const std::string_view data = text::strip_comment(line);
+    if (graph.edges.empty() && data.size() < line.size()) {
+      // Only a whole-line comment before the first edge can be the header.
+      text::Tokens before{data};
+      if (!before.next(token)) {
+        if (std::optional<EdgeListHeader> h = header_of(line.substr(data.size() + 1), at)) {
+          if (header) {
+            at.fail("a second '# nodes' header (the first is line " + std::to_string(header->line) +
+                    ")");
+          }
+          header = h;
         }
       }
     }
+    text::Tokens tokens{data};
+    if (!tokens.next(token)) continue;
+    std::string_view second;
+    if (!tokens.next(second)) at.fail("expected two node ids 'U V'");
+    const std::array<NodeId, 2> ends{parse_id(token, at, "node id"),
+                                     parse_id(second, at, "node id")};
+    for (NodeId id : ends) {
+      if (header && id >= header->nodes) {
+        at.fail("node " + std::to_string(id) + " out of range (the header on line " +
+                std::to_string(header->line) + " declares " + std::to_string(header->nodes) +
+                " nodes)");
+      }
+    }
+    graph.edges.push_back(ends);
+    graph.edge_lines.push_back(static_cast<std::uint32_t>(at.line));
+    const bool has_cost = tokens.next(token);
+    presence.check(has_cost, at);
+    if (has_cost) costs.push_back(parse_cost(token, at));
+    if (tokens.next(token)) at.fail("unexpected " + text::Located::quote(token));
+  }
+  set_costs(costs, graph);
+  if (header) {
+    at.line = header->line;
+    if (header->edges && *header->edges != graph.edges.size()) {
+      at.fail("header declares " + std::to_string(*header->edges) + " edges, the file has " +
+              std::to_string(graph.edges.size()));
+    }
+    check_node_count(header->nodes, graph.edges.size(), at);
+    graph.node_count = header->nodes;
     return graph;
   }
+  if (graph.edges.empty()) empty_file(at);
   std::uint64_t largest = 0;
   std::size_t largest_edge = 0;
   for (std::size_t e = 0; e < graph.edges.size(); ++e) {
@@ -205,7 +307,7 @@ GraphFile parse_edge_list(std::string_view bytes, const std::string& source) {
       }
     }
   }
-  if (!graph.edges.empty()) at.line = line_of[largest_edge];
+  at.line = graph.edge_lines[largest_edge];
   check_node_count(largest, graph.edges.size(), at);
   graph.node_count = static_cast<std::uint32_t>(largest);
   return graph;

@@ -20,12 +20,21 @@ struct Lines {
   std::size_t pos = 0;
   std::size_t line = 0;
 
-  /// The next line without its terminator ("\n" or "\r\n"), or false at the end.
+  /// The next line without its terminator ("\n", "\r\n" or a lone "\r", as old Mac files end
+  /// lines), or false at the end. A UTF-8 byte-order mark opening the text is skipped.
   bool next(std::string_view& out) {
+    if (pos == 0 && text.substr(0, 3) == "\xEF\xBB\xBF") pos = 3;
     if (pos >= text.size()) return false;
     const char* begin = text.data() + pos;
     const void* nl = std::memchr(begin, '\n', text.size() - pos);
-    const std::size_t len = nl ? static_cast<const char*>(nl) - begin : text.size() - pos;
+    std::size_t len = nl ? static_cast<const char*>(nl) - begin : text.size() - pos;
+    // A '\r' before the '\n' other than just before it ends the line there (the line is in
+    // cache: the second scan is cheap).
+    if (const void* cr = std::memchr(begin, '\r', len);
+        cr && static_cast<const char*>(cr) - begin + 1 < static_cast<std::ptrdiff_t>(len + !nl)) {
+      len = static_cast<const char*>(cr) - begin;
+      nl = cr;
+    }
     pos += len + (nl ? 1 : 0);
     ++line;
     out = std::string_view(begin, len);

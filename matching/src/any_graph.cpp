@@ -10,6 +10,7 @@
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/matching/tutte_berge.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
 
 namespace petersen {
 
@@ -20,21 +21,36 @@ std::string edge_name(EdgeId e, const std::array<NodeId, 2>& ends) {
          std::to_string(ends[1]) + ")";
 }
 
-// Why the graph is not cubic (the first node of another degree, or the first loop), or nothing.
-std::optional<std::string> not_cubic(std::uint32_t node_count,
-                                     const std::vector<std::array<NodeId, 2>>& edges) {
+// What the note of match_any_graph says: of node `v` or edge `e`, `predicate`.
+void set_note(AnyGraphMatching& result, NodeId v, EdgeId e, const std::array<NodeId, 2>& ends,
+              std::string predicate) {
+  result.note_node = v;
+  result.note_edge = e;
+  result.note = (e != kNoEdge ? edge_name(e, ends) : "node " + std::to_string(v)) + " " + predicate;
+  result.note_predicate = std::move(predicate);
+}
+
+// Notes why the graph is not cubic (the first node of another degree, or the first loop); false
+// when it is.
+bool not_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 2>>& edges,
+               AnyGraphMatching& result) {
   std::vector<std::uint32_t> degree(node_count, 0);
   for (EdgeId e = 0; e < edges.size(); ++e) {
     auto [a, b] = edges[e];
-    if (a == b) return edge_name(e, edges[e]) + " is a loop";
+    if (a == b) {
+      set_note(result, kNoNode, e, edges[e], "is a loop");
+      return true;
+    }
     ++degree[a];
     ++degree[b];
   }
   for (NodeId v = 0; v < node_count; ++v) {
-    if (degree[v] != 3)
-      return "node " + std::to_string(v) + " has degree " + std::to_string(degree[v]);
+    if (degree[v] != 3) {
+      set_note(result, v, kNoEdge, {}, "has degree " + std::to_string(degree[v]));
+      return true;
+    }
   }
-  return std::nullopt;
+  return false;
 }
 
 // PerfectMatchingOptions::algorithm on a cubic graph, verified; false (and the bridge in `note`) if
@@ -44,7 +60,7 @@ bool match_cubic(std::uint32_t node_count, const std::vector<std::array<NodeId, 
   const CubicGraph graph = CubicGraph::from_edges(node_count, edges);
   Stopwatch validate;
   if (const std::optional<EdgeId> bridge = find_bridge(graph)) {
-    result.note = edge_name(*bridge, edges[*bridge]) + " is a bridge";
+    set_note(result, kNoNode, *bridge, edges[*bridge], "is a bridge");
     return false;
   }
   const double validate_seconds = validate.seconds();
@@ -95,6 +111,14 @@ void match_general(std::uint32_t node_count, const std::vector<std::array<NodeId
   result.perfect = 2 * std::uint64_t{matched.size} == node_count;
 }
 
+// A certificate the independent verifier refused is a bug, never an answer.
+void certified(const CertificateCheck& check) {
+  if (!check.ok()) {
+    throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
+                           check.problem);
+  }
+}
+
 // GraphError naming the first edge with an endpoint out of range, or too many edges.
 void check_edge_list(std::uint32_t node_count,
                      const std::vector<std::array<std::uint32_t, 2>>& edges) {
@@ -114,9 +138,7 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
                                  const PerfectMatchingOptions& options) {
   check_edge_list(node_count, edges);
   AnyGraphMatching result;
-  if (std::optional<std::string> why = not_cubic(node_count, edges)) {
-    result.note = std::move(*why);
-  } else if (match_cubic(node_count, edges, options, result)) {
+  if (!not_cubic(node_count, edges, result) && match_cubic(node_count, edges, options, result)) {
     return result;
   }
   match_general(node_count, edges, options, result);
@@ -125,8 +147,9 @@ AnyGraphMatching match_any_graph(std::uint32_t node_count,
 
 AnyGraphCheapestMatching cheapest_matching_any_graph(
     std::uint32_t node_count, const std::vector<std::array<std::uint32_t, 2>>& edges,
-    const std::vector<std::int64_t>& costs, std::uint32_t threads) {
+    const std::vector<std::int64_t>& costs, std::uint32_t threads, CostObjective objective) {
   check_edge_list(node_count, edges);
+  const MinCostOptions options{.threads = threads};
   if (costs.size() != edges.size()) {
     throw std::invalid_argument("min-cost matching: " + std::to_string(costs.size()) +
                                 " costs for " + std::to_string(edges.size()) + " edges");
@@ -140,17 +163,44 @@ AnyGraphCheapestMatching cheapest_matching_any_graph(
     kept_costs.push_back(costs[e]);
     input_edge.push_back(e);
   }
-  const CheapestMaximumResult cheapest = cheapest_maximum_matching(
-      CsrGraph::from_edges(node_count, kept), kept_costs, {.threads = threads});
+  const CsrGraph graph = CsrGraph::from_edges(node_count, kept);
   AnyGraphCheapestMatching result;
-  result.mate_edge.resize(node_count, kNoEdge);
+  result.mate_edge.assign(node_count, kNoEdge);
+  Matching matching;
+  if (objective == CostObjective::maximum) {
+    CheapestMaximumResult cheapest = cheapest_maximum_matching(graph, kept_costs, options);
+    matching = std::move(cheapest.matching);
+    result.size = cheapest.size;
+    result.total_cost = cheapest.total_cost;
+  } else if (objective == CostObjective::any_size) {
+    const std::vector<Cost> zero = {0};
+    MinCostMatchingResult cheapest = min_cost_matching(graph, kept_costs, zero, options);
+    certified(verify_min_cost_matching(node_count, graph.edge_ends(), kept_costs, zero,
+                                       cheapest.matching, cheapest.total, cheapest.certificate));
+    matching = std::move(cheapest.matching);
+    result.size = cheapest.size;
+    result.total_cost = cheapest.total;
+  } else {
+    AnyGraphMatching maximum = match_any_graph(node_count, edges);  // verified by its witness
+    if (!maximum.perfect) {
+      maximum.mate_edge.swap(result.mate_edge);
+      result.size = maximum.size;
+      result.tutte_set = std::move(maximum.tutte_set);
+      return result;
+    }
+    MinCostResult cheapest = min_cost_perfect_matching(graph, kept_costs, options);
+    certified(verify_min_cost_perfect_matching(node_count, graph.edge_ends(), kept_costs,
+                                               cheapest.matching, cheapest.total_cost,
+                                               cheapest.certificate));
+    matching = std::move(cheapest.matching);
+    result.size = node_count / 2;
+    result.total_cost = cheapest.total_cost;
+  }
   for (NodeId v = 0; v < node_count; ++v) {
-    const EdgeId e = cheapest.matching.mate_edge[v];
+    const EdgeId e = matching.mate_edge[v];
     if (e != kNoEdge) result.mate_edge[v] = input_edge[e];
   }
-  result.size = cheapest.size;
-  result.perfect = cheapest.perfect;
-  result.total_cost = cheapest.total_cost;
+  result.perfect = 2 * std::uint64_t{result.size} == node_count;
   return result;
 }
 

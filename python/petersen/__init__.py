@@ -22,6 +22,8 @@ import numpy as np
 import numpy.typing as npt
 
 from . import _petersen, interop
+from .graphs import (NoPerfectMatching, WeightedMatching, max_weight_matching,
+                     min_weight_matching, weighted_matching)
 
 __all__ = [
     "ALGORITHMS",
@@ -30,15 +32,20 @@ __all__ = [
     "CheapestMatching",
     "DroppedWarning",
     "MaximumMatching",
+    "NoPerfectMatching",
+    "WeightedMatching",
     "Mesh",
     "QuadResult",
+    "max_weight_matching",
     "maximum_matching",
     "min_cost_matching",
+    "min_weight_matching",
     "perfect_matching",
     "quad_quality",
     "quadrangulate",
     "read_mesh",
     "render",
+    "weighted_matching",
     "write_mesh",
 ]
 

@@ -25,6 +25,9 @@ def quadrangulate(
 def maximum_matching(
     n: int, edges: npt.ArrayLike, algorithm: str, augment: str, seed: int
 ) -> Tuple[np.ndarray, bool, np.ndarray]: ...
+def weighted_matching(
+    n: int, edges: npt.ArrayLike, costs: np.ndarray, objective: str, threads: int
+) -> Tuple[np.ndarray, bool, int, float, bool, np.ndarray]: ...
 def min_cost_matching(
     n: int, edges: npt.ArrayLike, costs: np.ndarray, threads: int
 ) -> Tuple[np.ndarray, int, bool]: ...

@@ -1,5 +1,6 @@
 #include "arrays.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -127,6 +128,33 @@ py::object faces_object(const PolygonMesh& mesh) {
     faces.append(std::move(row));
   }
   return faces;
+}
+
+std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle& edges) {
+  const std::vector<std::array<std::int64_t, 2>> pairs = pairs_from(edges, "edges");
+  std::vector<std::array<NodeId, 2>> list(pairs.size());
+  for (std::size_t e = 0; e < list.size(); ++e) {
+    for (int k = 0; k < 2; ++k) {
+      const std::int64_t v = pairs[e][k];
+      if (v < 0 || v >= std::int64_t{n}) {
+        throw py::value_error("edge " + std::to_string(e) + ": node " + std::to_string(v) +
+                              " is out of range (" + std::to_string(n) + " nodes)");
+      }
+      list[e][k] = static_cast<NodeId>(v);
+    }
+  }
+  return list;
+}
+
+std::vector<std::int64_t> matched_edges(const std::vector<std::array<NodeId, 2>>& list,
+                                        std::span<const EdgeId> mate_edge) {
+  std::vector<std::int64_t> matched;
+  for (NodeId v = 0; v < mate_edge.size(); ++v) {
+    const EdgeId e = mate_edge[v];
+    if (e != kNoEdge && list[e][0] == v) matched.push_back(e);
+  }
+  std::sort(matched.begin(), matched.end());
+  return matched;
 }
 
 }  // namespace petersen::python

@@ -8,8 +8,10 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
+#include "petersen/graph/cubic_graph.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen::python {
@@ -34,6 +36,14 @@ void add_faces_from(const py::handle& F, PolygonMesh& mesh);
 
 /// An (e, 2) integer array-like as pairs; `what` names it in the ValueError or TypeError.
 std::vector<std::array<std::int64_t, 2>> pairs_from(const py::handle& obj, const char* what);
+
+/// The (e, 2) array of node pairs `edges` over nodes 0..n-1; ValueError naming the edge otherwise.
+std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle& edges);
+
+/// The indices of the edges matched in mate_edge (by node, kNoEdge when free), sorted: each edge
+/// once, at its first end in `list`.
+std::vector<std::int64_t> matched_edges(const std::vector<std::array<NodeId, 2>>& list,
+                                        std::span<const EdgeId> mate_edge);
 
 /// The mesh's positions as an owned (n, 3) float64 array.
 py::array_t<double> positions_array(const Positions& positions);

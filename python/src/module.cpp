@@ -16,6 +16,7 @@
 
 #include "arrays.hpp"
 #include "attributes.hpp"
+#include "graph_functions.hpp"
 #include "partition.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/io/read_mesh.hpp"
@@ -243,36 +244,6 @@ std::vector<std::string> write_mesh_py(const std::string& path, const py::handle
   return write_mesh(path, mesh);
 }
 
-// The (e, 2) array of node pairs `edges` over nodes 0..n-1; ValueError naming the edge otherwise.
-std::vector<std::array<NodeId, 2>> node_pairs(std::uint32_t n, const py::handle& edges) {
-  const std::vector<std::array<std::int64_t, 2>> pairs = pairs_from(edges, "edges");
-  std::vector<std::array<NodeId, 2>> list(pairs.size());
-  for (std::size_t e = 0; e < list.size(); ++e) {
-    for (int k = 0; k < 2; ++k) {
-      const std::int64_t v = pairs[e][k];
-      if (v < 0 || v >= std::int64_t{n}) {
-        throw py::value_error("edge " + std::to_string(e) + ": node " + std::to_string(v) +
-                              " is out of range (" + std::to_string(n) + " nodes)");
-      }
-      list[e][k] = static_cast<NodeId>(v);
-    }
-  }
-  return list;
-}
-
-// The indices of the edges matched in mate_edge (by node, kNoEdge when free), sorted: each edge
-// once, at its first end in `list`.
-std::vector<std::int64_t> matched_edges(const std::vector<std::array<NodeId, 2>>& list,
-                                        std::span<const EdgeId> mate_edge) {
-  std::vector<std::int64_t> matched;
-  for (NodeId v = 0; v < mate_edge.size(); ++v) {
-    const EdgeId e = mate_edge[v];
-    if (e != kNoEdge && list[e][0] == v) matched.push_back(e);
-  }
-  std::sort(matched.begin(), matched.end());
-  return matched;
-}
-
 // The options of perfect_matching and maximum_matching; lemon runs the peer.
 PerfectMatchingOptions graph_options(const std::string& algorithm, const std::string& augment,
                                      std::uint64_t seed) {
@@ -378,4 +349,5 @@ PYBIND11_MODULE(_petersen, m) {
   m.attr("CROSSABLE") = crossable_names();
   add_render(m);
   add_partition(m);
+  add_graph_functions(m);
 }

@@ -9,6 +9,8 @@
 #include <rapidcheck/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 #include "peers.hpp"
@@ -18,6 +20,7 @@
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/matching/real_costs.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "shared_meshes.hpp"
@@ -546,6 +549,40 @@ TEST(ScaleCosts, RoundsAndRejectsNonFinite) {
     EXPECT_EQ(scaled[i], static_cast<Cost>(std::llround(degrees[i] * kDefaultCostScale)));
   const std::vector<double> bad = {1.0, std::numeric_limits<double>::quiet_NaN()};
   EXPECT_THROW(scale_costs(bad), std::invalid_argument);
+}
+
+// Binary doubles that a power of two makes integers within the limit are exact; others are
+// rounded at the largest power of two that keeps them within it, the rounding stated.
+TEST(IntegerCosts, ExactForShortBinaryFractionsRoundedOtherwise) {
+  const std::vector<double> binary = {2.5, -3.0, 0.125, 0};
+  const IntegerCosts exact = integer_costs(binary);
+  EXPECT_TRUE(exact.exact);
+  EXPECT_EQ(exact.exponent, 3);
+  EXPECT_EQ(std::vector<Cost>(exact.costs.begin(), exact.costs.end()),
+            (std::vector<Cost>{20, -24, 1, 0}));
+  EXPECT_EQ(exact.rounding, 0);
+  EXPECT_EQ(exact.gap_bound(1000), 0);
+  const std::vector<double> reals = {3.141592653589793, -2.718281828459045, 0.1};
+  const IntegerCosts rounded = integer_costs(reals);
+  EXPECT_FALSE(rounded.exact);
+  for (std::size_t e = 0; e < reals.size(); ++e) {
+    EXPECT_LE(std::abs(static_cast<double>(rounded.costs[e])), static_cast<double>(kMaxCost));
+    EXPECT_LE(
+        std::abs(std::ldexp(static_cast<double>(rounded.costs[e]), -rounded.exponent) - reals[e]),
+        rounded.rounding);
+  }
+  EXPECT_LE(rounded.rounding, std::ldexp(0.5, -rounded.exponent));
+  EXPECT_GT(std::abs(static_cast<double>(rounded.costs[0])), static_cast<double>(kMaxCost) / 4);
+  // A smaller limit, and costs far past it (a negative exponent).
+  const IntegerCosts small = integer_costs(reals, 1000);
+  EXPECT_LE(std::abs(small.costs[0]), 1000);
+  const std::vector<double> huge = {1e300, -3e299};
+  const IntegerCosts far = integer_costs(huge);
+  EXPECT_LT(far.exponent, 0);
+  EXPECT_LE(std::abs(far.costs[0]), kMaxCost);
+  const std::vector<double> bad = {1.0, std::numeric_limits<double>::infinity()};
+  EXPECT_THROW(integer_costs(bad), std::invalid_argument);
+  EXPECT_THROW(integer_costs(binary, 0), std::invalid_argument);
 }
 
 }  // namespace

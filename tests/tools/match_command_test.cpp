@@ -96,7 +96,8 @@ std::string dimacs(std::uint32_t n, const testing::EdgeList& edges) {
 }
 
 std::string edge_list(std::uint32_t n, const testing::EdgeList& edges) {
-  std::string text = std::to_string(n) + " " + std::to_string(edges.size()) + "\n";
+  std::string text =
+      "# nodes " + std::to_string(n) + " edges " + std::to_string(edges.size()) + "\n";
   for (auto [a, b] : edges) text += std::to_string(a) + " " + std::to_string(b) + "\n";
   return text;
 }
@@ -231,11 +232,160 @@ TEST_F(MatchCommand, CostsWithoutAPerfectMatchingGiveTheCheapestMaximumOne) {
   // Without costs the objective cannot be met: refused, naming the file.
   write(path("plain.txt"), "0 1\n1 2\n2 3\n");
   EXPECT_EQ(run(path("plain.txt") + " " + path("p.txt") + " --objective cost"), 1);
-  EXPECT_NE(err_.find("plain.txt: --objective cost needs a cost on every edge line"),
+  EXPECT_NE(err_.find("plain.txt: --objective cost needs a number on every edge line"),
             std::string::npos)
       << err_;
   EXPECT_FALSE(fs::exists(path("p.txt")));
   EXPECT_EQ(run(path("plain.txt") + " " + path("p.txt") + " --objective beauty"), 105);
+}
+
+// The best matching by brute force over all matchings of a tiny graph: the heaviest of any size
+// (any_size), the heaviest maximum one, or the cheapest perfect one (nullopt: none).
+struct Brute {
+  std::optional<double> heaviest, heaviest_maximum, cheapest_perfect;
+};
+Brute brute_force(std::uint32_t n, const testing::EdgeList& edges, const std::vector<double>& w) {
+  Brute best;
+  int most = -1;
+  const std::size_t m = edges.size();
+  for (std::uint64_t subset = 0; subset < (std::uint64_t{1} << m); ++subset) {
+    std::vector<char> used(n, 0);
+    double weight = 0;
+    int size = 0;
+    bool ok = true;
+    for (std::size_t e = 0; e < m && ok; ++e) {
+      if (!(subset >> e & 1)) continue;
+      const auto [a, b] = edges[e];
+      ok = a != b && !used[a] && !used[b];
+      used[a] = used[b] = 1;
+      weight += w[e];
+      ++size;
+    }
+    if (!ok) continue;
+    best.heaviest = std::max(best.heaviest.value_or(weight), weight);
+    if (size > most) best.heaviest_maximum.reset();
+    if (size >= most) {
+      most = size;
+      best.heaviest_maximum = std::max(best.heaviest_maximum.value_or(weight), weight);
+    }
+    if (2 * size == static_cast<int>(n)) {
+      best.cheapest_perfect = std::min(best.cheapest_perfect.value_or(weight), weight);
+    }
+  }
+  return best;
+}
+
+// The weight of the written matching ("u v" lines in ids from first_id): each pair at its
+// heaviest edge between them, or lightest (`heaviest` false).
+double weight_of(const std::string& output, const testing::EdgeList& edges,
+                 const std::vector<double>& w, std::uint32_t first_id, bool heaviest) {
+  std::istringstream in(output);
+  long long u = 0, v = 0;
+  double total = 0;
+  while (in >> u >> v) {
+    std::optional<double> pick;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      const auto [a, b] = edges[e];
+      if (std::min(a, b) + first_id != std::min(u, v) ||
+          std::max(a, b) + first_id != std::max(u, v))
+        continue;
+      pick = !pick ? w[e] : heaviest ? std::max(*pick, w[e]) : std::min(*pick, w[e]);
+    }
+    total += pick.value();
+  }
+  return total;
+}
+
+// The objectives on small random graphs with decimal weights, in both formats: each answer the
+// brute force's optimum (exact decimals: equal to the last digit printed), certified.
+TEST_F(MatchCommand, WeightAndPerfectCostObjectivesAreTheBruteForceOptima) {
+  std::mt19937_64 random(3);
+  for (int trial = 0; trial < 40; ++trial) {
+    const std::uint32_t n = 2 + random() % 7;
+    testing::EdgeList edges;
+    std::vector<double> w;
+    std::string text = "# nodes " + std::to_string(n) + "\n", dimacs_text;
+    const std::size_t m = random() % 11;
+    for (std::size_t e = 0; e < m; ++e) {
+      const std::uint32_t a = random() % n, b = random() % n;
+      const long long hundredths = static_cast<long long>(random() % 2001) - 500;
+      edges.push_back({a, b});
+      w.push_back(static_cast<double>(hundredths) / 100);
+      char number[32];
+      std::snprintf(number, sizeof number, "%.2f", w.back());
+      text += std::to_string(a) + " " + std::to_string(b) + " " + number + "\n";
+      dimacs_text +=
+          "e " + std::to_string(a + 1) + " " + std::to_string(b + 1) + " " + number + "\n";
+    }
+    write(path("w.txt"), text);
+    write(path("w.dimacs"),
+          "p edge " + std::to_string(n) + " " + std::to_string(m) + "\n" + dimacs_text);
+    const Brute best = brute_force(n, edges, w);
+    for (const char* file : {"w.txt", "w.dimacs"}) {
+      const std::uint32_t first = std::string(file) == "w.txt" ? 0 : 1;
+      SCOPED_TRACE(text + file);
+      ASSERT_EQ(run(path(file) + " " + path("m.txt") + " --objective weight"), 0) << err_;
+      EXPECT_NEAR(weight_of(read(path("m.txt")), edges, w, first, true), *best.heaviest, 1e-9);
+      EXPECT_NE(read(path("stdout")).find("maximum certified"), std::string::npos);
+      ASSERT_EQ(run(path(file) + " " + path("m.txt") + " --objective weight-maximum"), 0) << err_;
+      EXPECT_NEAR(weight_of(read(path("m.txt")), edges, w, first, true), *best.heaviest_maximum,
+                  1e-9);
+      const int code = run(path(file) + " " + path("p.txt") + " --objective perfect-cost" +
+                           " --stats-json " + path("s.json"));
+      if (best.cheapest_perfect) {
+        ASSERT_EQ(code, 0) << err_;
+        EXPECT_NEAR(weight_of(read(path("p.txt")), edges, w, first, false), *best.cheapest_perfect,
+                    1e-9);
+        EXPECT_NE(read(path("s.json")).find("\"exact\": true"), std::string::npos);
+      } else {
+        ASSERT_EQ(code, 3) << err_;
+        EXPECT_NE(err_.find("Tutte-Berge witness A = {"), std::string::npos) << err_;
+        EXPECT_NE(read(path("s.json")).find("\"tutte_set\": ["), std::string::npos);
+        EXPECT_FALSE(fs::exists(path("p.txt")));
+      }
+      fs::remove(path("p.txt"));
+    }
+  }
+}
+
+// Costs no power of ten makes integers within 2^40: rounded at a power of two, the tolerance
+// printed and in the JSON, the answer the brute force's.
+TEST_F(MatchCommand, BinaryRealCostsStateTheirTolerance) {
+  const testing::EdgeList edges = {{0, 1}, {1, 2}, {2, 3}, {3, 0}};
+  const std::vector<double> w = {3.141592653589793, 2.718281828459045, 1.4142135623730951,
+                                 1.7320508075688772};
+  std::string text;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    char line[64];
+    std::snprintf(line, sizeof line, "%u %u %.17g\n", edges[e][0], edges[e][1], w[e]);
+    text += line;
+  }
+  write(path("r.txt"), text);
+  ASSERT_EQ(run(path("r.txt") + " " + path("m.txt") + " --objective weight --stats-json " +
+                path("s.json")),
+            0)
+      << err_;
+  EXPECT_NEAR(weight_of(read(path("m.txt")), edges, w, 0, true), w[0] + w[2], 1e-12);
+  EXPECT_NE(read(path("stdout")).find("tolerance"), std::string::npos);
+  const std::string stats = read(path("s.json"));
+  EXPECT_NE(stats.find("\"exact\": false"), std::string::npos) << stats;
+  EXPECT_EQ(stats.find("\"gap_bound\": 0,"), std::string::npos) << stats;
+}
+
+// Notes name nodes and edges as the file does: DIMACS ids 1-based, an edge by its line.
+TEST_F(MatchCommand, NotesUseTheFilesOwnIds) {
+  // A K4 on nodes 1-4 and a tail 4-5-6: node 4 (index 3) is the first of another degree.
+  write(path("k.dimacs"),
+        "c K4 and a tail\np edge 6 8\ne 1 2\ne 1 3\ne 1 4\ne 2 3\ne 2 4\ne 3 4\ne 4 5\ne 5 6\n");
+  ASSERT_EQ(run(path("k.dimacs") + " " + path("m.txt")), 0) << err_;
+  EXPECT_NE(err_.find("(node 4 has degree 4)"), std::string::npos) << err_;
+  // Two K4s with one edge subdivided each, joined at the subdivision nodes: cubic, and the
+  // joining edge (on line 13) is a bridge.
+  write(path("b.dimacs"),
+        "p edge 10 15\ne 1 2\ne 1 3\ne 1 5\ne 2 3\ne 2 4\ne 3 4\ne 4 5\n"
+        "e 6 7\ne 6 8\ne 6 10\ne 7 8\ne 5 10\ne 7 9\ne 8 9\ne 9 10\n");
+  ASSERT_EQ(run(path("b.dimacs") + " " + path("m.txt")), 0) << err_;
+  EXPECT_NE(err_.find("(the edge on line 13 (5, 10) is a bridge)"), std::string::npos) << err_;
 }
 
 TEST_F(MatchCommand, BadFilesAreRefusedWithTheirLine) {
