@@ -35,6 +35,17 @@ void add_run(PerfectMatchingStats& total, const PerfectMatchingStats& run) {
   for (int k = 0; k < 3; ++k) total.lift_cases[k] += run.lift_cases[k];
 }
 
+// The minimum-cost matching's work in the paper's columns: its start as the initial pairing, its
+// searches and certificate as the augmentation.
+void add_min_cost_run(PerfectMatchingStats& total, const MinCostStats& run) {
+  total.initial_seconds += run.init_seconds;
+  total.unpaired_after_initial += run.free_after_init;
+  total.augment_seconds += run.search_seconds + run.certificate_seconds;
+  total.augmenting_paths += run.searches;
+  total.blossoms += run.blossoms_shrunk;
+  total.nodes_labelled += run.nodes_labelled;
+}
+
 // Components of the pairable graph (disjoint sets over its edges), numbered in order of their
 // first node, and whether each is closed: every node has three pairable sides.
 struct Components {
@@ -102,12 +113,7 @@ Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost
                                    const QuadOptions& options, TrianglePairing& pairing,
                                    QuadStats& stats, Stopwatch& clock) {
   MinCostResult result = min_cost_perfect_matching(cubic, costs, {.threads = options.threads});
-  stats.matching.initial_seconds += result.stats.init_seconds;
-  stats.matching.unpaired_after_initial += result.stats.free_after_init;
-  stats.matching.augment_seconds += result.stats.search_seconds + result.stats.certificate_seconds;
-  stats.matching.augmenting_paths += result.stats.searches;
-  stats.matching.blossoms += result.stats.blossoms_shrunk;
-  stats.matching.nodes_labelled += result.stats.nodes_labelled;
+  add_min_cost_run(stats.matching, result.stats);
   clock.lap();
   if (CertificateCheck check =
           verify_min_cost_perfect_matching(cubic.node_count(), cubic.edge_ends(), costs,
@@ -374,12 +380,7 @@ void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
   stats.dual_seconds += clock.lap();
   MinCostMatchingResult result =
       min_cost_matching(whole, costs, {&price, 1}, {.threads = options.threads});
-  stats.matching.initial_seconds += result.stats.init_seconds;
-  stats.matching.unpaired_after_initial += result.stats.free_after_init;
-  stats.matching.augment_seconds += result.stats.search_seconds + result.stats.certificate_seconds;
-  stats.matching.augmenting_paths += result.stats.searches;
-  stats.matching.blossoms += result.stats.blossoms_shrunk;
-  stats.matching.nodes_labelled += result.stats.nodes_labelled;
+  add_min_cost_run(stats.matching, result.stats);
   clock.lap();
   if (CertificateCheck check =
           verify_min_cost_matching(whole.node_count(), whole.edge_ends(), costs, {&price, 1},
