@@ -44,7 +44,8 @@ double side_angle(const PolygonMesh& mesh, std::span<const VertexId> t, const Fr
   return std::atan2(vec3::dot(d, frame.y), vec3::dot(d, frame.x));
 }
 
-// Per node: its frame and the fourth powers of its sides' directions, e^{4iα_k}.
+// Per node: whether it has a frame, and the fourth powers of its sides' directions, e^{4iα_k}
+// (0 without a frame).
 struct SideDirections {
   std::vector<std::uint8_t> valid;
   std::vector<std::array<Complex, 3>> power;  // e^{4iα_k}, k = 0, 1, 2
@@ -80,7 +81,7 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
                                 std::to_string(options.alignment));
   }
   const std::uint32_t n = graph.node_count;
-  const SideDirections sides = side_directions(graph, mesh);
+  SideDirections sides = side_directions(graph, mesh);
   const double lambda = options.alignment;
   // The system (L + λI) u = λ q: L the connection Laplacian, one row per node.
   Eigen::VectorXcd target(n);
@@ -129,26 +130,26 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
   const Eigen::VectorXcd u = solver.solveWithGuess(target, start);
   CrossField field;
   field.cross.assign(u.data(), u.data() + n);
+  field.side_power = std::move(sides.power);
   field.iterations = static_cast<std::uint32_t>(solver.iterations());
   field.residual = solver.error();
   return field;
 }
 
-HugeVector<double> side_alignment(const PairableGraph& graph, const PolygonMesh& mesh,
-                                  const CrossField& field) {
-  const SideDirections sides = side_directions(graph, mesh);
-  HugeVector<double> alignment(3 * std::size_t{graph.node_count}, 0.0);
-  for (NodeId t = 0; t < graph.node_count; ++t) {
+HugeVector<double> side_alignment(const CrossField& field) {
+  const std::size_t n = field.cross.size();
+  HugeVector<double> alignment(3 * n, 0.0);
+  for (std::size_t t = 0; t < n; ++t) {
     const Complex u = field.cross[t];
     const double confidence = std::min(1.0, std::abs(u));
-    if (!sides.valid[t] || confidence == 0) continue;
+    if (field.side_power[t][0] == Complex{0} || confidence == 0) continue;  // no frame, no cross
     const Complex towards = u / std::abs(u);
     for (int k = 0; k < 3; ++k) {
       // cos 4δ for δ the angle to the nearest of the cross's four directions, δ in [0, 45°].
       const double cosine =
-          std::clamp(std::real(sides.power[t][k] * std::conj(towards)), -1.0, 1.0);
+          std::clamp(std::real(field.side_power[t][k] * std::conj(towards)), -1.0, 1.0);
       const double degrees = std::acos(cosine) / 4 * (180 / std::numbers::pi);
-      alignment[3 * std::size_t{t} + k] = confidence * (45 - degrees);
+      alignment[3 * t + k] = confidence * (45 - degrees);
     }
   }
   return alignment;

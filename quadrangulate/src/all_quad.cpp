@@ -81,9 +81,8 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   std::vector<Blend> new_vertices;
   std::vector<Blend>* const blends = carry ? &new_vertices : nullptr;
   const std::vector<VertexId> midpoint = add_midpoints(mesh, half, plan, blends);
-  QuadPieces cut =
-      cut_into_quads(mesh, half, groups, midpoint, plan.kept, result.sources, blends,
-                     {.centres_where_better = options.objective != Objective::pairs});
+  QuadPieces cut = cut_into_quads(mesh, half, groups, midpoint, plan.kept, result.sources, blends,
+                                  {.centres_where_better = options.objective != Objective::pairs});
 
   PolygonMesh& out = cut.mesh;
   if (carry) {

@@ -107,6 +107,17 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
   return sub;
 }
 
+// The graph of these edge ends (edge e joins ends 2e and 2e + 1), in CsrGraph's form; the ends are
+// freed before the graph is built, so that the two are not live together with the edge list.
+CsrGraph csr_taking(std::uint32_t node_count, HugeVector<NodeId> edge_ends) {
+  std::vector<std::array<NodeId, 2>> edges(edge_ends.size() / 2);
+  for (EdgeId e = 0; e < edges.size(); ++e) {
+    edges[e] = {edge_ends[2 * std::size_t{e}], edge_ends[2 * std::size_t{e} + 1]};
+  }
+  edge_ends = HugeVector<NodeId>();
+  return CsrGraph::from_edges(node_count, edges);
+}
+
 // The exact minimum-cost perfect matching of a closed graph, its certificate checked; adds the
 // certified total to the pairing's objective.
 Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost> costs,
@@ -315,15 +326,8 @@ void pair_open_components(PairableGraph& graph, std::vector<NodeId> open_nodes,
   Subgraph sub = induced(graph, std::move(open_nodes));
   graph.node_edges = HugeVector<EdgeId>();
   graph.edge_ends = HugeVector<NodeId>();
-  CsrGraph open;
-  {
-    std::vector<std::array<NodeId, 2>> edges(sub.edge_of.size());
-    for (EdgeId i = 0; i < edges.size(); ++i) {
-      edges[i] = {sub.edge_ends[2 * i], sub.edge_ends[2 * i + 1]};
-    }
-    sub.edge_ends = HugeVector<NodeId>();
-    open = CsrGraph::from_edges(static_cast<std::uint32_t>(sub.nodes.size()), edges);
-  }
+  const CsrGraph open =
+      csr_taking(static_cast<std::uint32_t>(sub.nodes.size()), std::move(sub.edge_ends));
   if (costs.empty()) sub.edge_of = std::vector<EdgeId>();  // only the costs are looked up by it
   stats.dual_seconds += clock.lap();
   // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
@@ -366,16 +370,8 @@ void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
     stats.components = components.closed.size();
     for (std::uint8_t closed : components.closed) stats.closed_components += closed;
   }
-  CsrGraph whole;
-  {
-    std::vector<std::array<NodeId, 2>> edges(graph.edge_count());
-    for (EdgeId e = 0; e < edges.size(); ++e) {
-      edges[e] = {graph.edge_ends[2 * std::size_t{e}], graph.edge_ends[2 * std::size_t{e} + 1]};
-    }
-    graph.node_edges = HugeVector<EdgeId>();
-    graph.edge_ends = HugeVector<NodeId>();
-    whole = CsrGraph::from_edges(graph.node_count, edges);
-  }
+  graph.node_edges = HugeVector<EdgeId>();
+  const CsrGraph whole = csr_taking(graph.node_count, std::move(graph.edge_ends));
   const Cost price = static_cast<Cost>(std::llround(options.triangle_cost * kDefaultCostScale));
   stats.dual_seconds += clock.lap();
   MinCostMatchingResult result =

@@ -118,7 +118,7 @@ bool wants_flow(const QuadRun& run) {
 void measure_flow(QuadRun& run) {
   Stopwatch clock;
   const CrossField field = cross_field(run.graph, run.mesh);
-  run.edge_flow = pairable_edge_flow(run.graph, side_alignment(run.graph, run.mesh, field));
+  run.edge_flow = pairable_edge_flow(run.graph, side_alignment(field));
   run.stats().field_iterations = field.iterations;
   run.stats().field_seconds = clock.lap();
 }

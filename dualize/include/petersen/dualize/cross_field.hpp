@@ -19,6 +19,7 @@
 // field is fixed before any pairing, so each pair's flow cost is its own and the minimum-cost
 // matching stays exact.
 
+#include <array>
 #include <complex>
 #include <cstdint>
 #include <span>
@@ -49,6 +50,9 @@ struct CrossField {
   /// side 0 (corner 0 to corner 1) and whose normal is the triangle's. |u_t| is near 1 where the
   /// neighbourhood agrees on one cross and near 0 where it does not (no preferred direction).
   std::vector<std::complex<double>> cross;
+  /// Per node and side k: the side's direction in the same frame, raised to the fourth power
+  /// (e^{4iα}); all 0 for a triangle without a frame. What side_alignment reads the cross against.
+  std::vector<std::array<std::complex<double>, 3>> side_power;
   std::uint32_t iterations = 0;  ///< conjugate-gradient iterations taken
   double residual = 0;           ///< the final relative residual
 };
@@ -65,8 +69,7 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
 /// 45 − δ for δ in [0, 45] the angle between the side and the cross's nearest direction, weighted
 /// by the cross's confidence min(1, |u_t|). 45 where the side runs along the field (a quad side),
 /// 0 where it runs diagonally across it (a quad's diagonal) or where the field says nothing. O(n).
-HugeVector<double> side_alignment(const PairableGraph& graph, const PolygonMesh& mesh,
-                                  const CrossField& field);
+HugeVector<double> side_alignment(const CrossField& field);
 
 /// For each edge of `graph`, the flow cost of removing it to pair its two triangles: its alignment
 /// (side_alignment) in each of them, summed, in [0, 90]. Removing a quad's diagonal costs nothing;
