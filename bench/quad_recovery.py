@@ -18,6 +18,9 @@ and petersen's mesh.petersen_tris_to_quads with its defaults and with objective 
 A row gives the share of the model's quads that come back (the same four vertices as one face),
 its triangles left, and the operator's wall time.
 
+--flow-weights=W,...: instead of the operators, petersen.quadrangulate's default with each edge-flow
+weight (the module on the same triangulations), the trial behind the default weight of 0.
+
 --scans: instead, each MESH as it is (a scan: nothing to recover): the share of regular interior
 vertices (four edges, every face around it a quad), triangles left, and the quads' worst corner
 (median, p95: petersen.quad_quality).
@@ -173,14 +176,26 @@ def run_operator(obj, kind, options):
     return mesh_faces(obj.data), seconds
 
 
-def recovery_rows(name, V, faces, rng):
+def module_run(V, triangles, flow_weight):
+    """petersen.quadrangulate's default with this edge-flow weight: its faces and seconds."""
+    start = time.perf_counter()
+    r = petersen.quadrangulate(V, np.array(triangles, np.int64), flow_weight=flow_weight)
+    return list(r.quads) + list(r.triangles), time.perf_counter() - start
+
+
+def recovery_rows(name, V, faces, rng, flow_weights=()):
     rows = []
     for rule in ("random", "short"):
         triangles, quads = triangulate(V, faces, rule, rng)
         own = sum(1 for f in faces if len(f) == 3)
-        for label, kind, options in OPERATORS:
-            obj = make_object(name, V, triangles)
-            (_, out), seconds = run_operator(obj, kind, options)
+        runs = [(label, kind, options) for label, kind, options in OPERATORS if not flow_weights]
+        runs += [(f"petersen, flow weight {w:g}", "module", w) for w in flow_weights]
+        for label, kind, options in runs:
+            if kind == "module":
+                out, seconds = module_run(V, triangles, options)
+            else:
+                obj = make_object(name, V, triangles)
+                (_, out), seconds = run_operator(obj, kind, options)
             back = sum(1 for f in out if len(f) == 4 and frozenset(int(v) for v in f) in quads)
             left = sum(1 for f in out if len(f) == 3)
             rows.append(f"| {name} | {len(quads):,} + {own:,} | {rule} | {label} | "
@@ -227,6 +242,8 @@ def scan_rows(name, V, faces):
 def main():
     args = sys.argv[sys.argv.index("--") + 1:]
     scans, quick = "--scans" in args, "--quick" in args
+    flow_weights = [float(w) for a in args if a.startswith("--flow-weights=")
+                    for w in a.split("=", 1)[1].split(",")]
     paths = [a for a in args if not a.startswith("--")]
     bpy.ops.wm.read_factory_settings(use_empty=True)
     petersen_quads.register()
@@ -240,13 +257,13 @@ def main():
             rows += scan_rows(name, np.asarray(mesh.V, np.float64), faces)
             continue
         if any(len(f) == 4 for f in faces):
-            rows += recovery_rows(name, np.asarray(mesh.V, np.float64), faces, rng)
+            rows += recovery_rows(name, np.asarray(mesh.V, np.float64), faces, rng, flow_weights)
         for levels in (1,) if quick else (1, 2):
             V, quads = catmull_clark(mesh.V, faces, levels)
-            rows += recovery_rows(f"{name}-cc{levels}", V, quads, rng)
+            rows += recovery_rows(f"{name}-cc{levels}", V, quads, rng, flow_weights)
             if levels == 1:
                 Vc, mixed = collapse_edges(V, quads, 0.01, rng)
-                rows += recovery_rows(f"{name}-cc1+tri", Vc, mixed, rng)
+                rows += recovery_rows(f"{name}-cc1+tri", Vc, mixed, rng, flow_weights)
     print()
     if scans:
         print("| scan | operator | regular interior vertices | triangles left | worst corner, "
