@@ -1,7 +1,9 @@
-"""A picture made by Blender of its own Tris to Quads beside petersen's: docs/images/blender-quads.png.
+"""A picture made by Blender of its own Tris to Quads beside petersen's: docs/images/blender-quads.png
+and docs/images/blender-recovery.png.
 
     PETERSEN_PYTHONPATH=DIR blender -b --factory-startup --python bench/blender_render_quads.py \
         -- MESH OUT.png [DEGREES]
+    ... -- MODEL OUT.png --recover LEVELS
 
 Reads MESH (petersen.read_mesh; a Y-up mesh such as the bunny is turned Z-up), converts every face
 of one copy with Blender's mesh.tris_convert_to_quads and of another with petersen's operator
@@ -10,6 +12,12 @@ renders them side by side headless with Workbench: quads shaded from white (righ
 (worst corner 45 degrees or more from a right angle, petersen.quad_quality), the triangles left
 orange, every edge drawn (a Wireframe modifier on a copy), a caption under each.
 docs/images/blender-quads.png is bunny.off.gz of the shared meshes at 180 degrees.
+
+--recover LEVELS: MODEL is made a quad model as bench/quad_recovery.py makes them (Blender's
+Catmull-Clark at LEVELS), exported as triangles one shorter diagonal per quad, as exporters cut
+them, and brought back by each operator at its defaults (Blender's 40-degree limits; petersen's
+add-on: objective Quads, no limits); each caption gives the share of the model's quads that come
+back. docs/images/blender-recovery.png is suzanne.obj of pmp-library/pmp-data at level 1.
 """
 
 import math
@@ -17,6 +25,7 @@ import os
 import pathlib
 import struct
 import sys
+import types
 import zlib
 
 sys.path[:0] = [p for p in os.environ.get("PETERSEN_PYTHONPATH", "").split(os.pathsep) if p]
@@ -31,23 +40,50 @@ from mathutils import Matrix, Vector  # noqa: E402
 import petersen  # noqa: E402
 import petersen_quads  # noqa: E402
 from blender_side_by_side import make_object  # noqa: E402
+from quad_recovery import catmull_clark, clear, triangulate  # noqa: E402
 
 WIRE = (0.08, 0.08, 0.1, 1.0)
 LEFT = (1.0, 0.45, 0.05, 1.0)
 
 
 def convert(name, mesh, operator, angle):
-    """A copy of mesh converted by operator; its faces by corner count."""
+    """A copy of mesh converted by operator (its default limits when angle is None); the object
+    and its faces' vertex lists."""
     objects = [o for o in bpy.data.objects]
     obj = make_object(name, mesh, keep=objects)
     obj.data.transform(Matrix.Rotation(math.pi / 2, 4, 'X'))  # Y-up to Z-up
     bpy.ops.object.mode_set(mode='EDIT')
     bpy.ops.mesh.select_all(action='SELECT')
-    operator(face_threshold=angle, shape_threshold=angle)
+    operator(**({} if angle is None else {"face_threshold": angle, "shape_threshold": angle}))
     bm = bmesh.from_edit_mesh(obj.data)
-    left = sum(len(f.verts) == 3 for f in bm.faces)
+    faces = [[v.index for v in f.verts] for f in bm.faces]
     bpy.ops.object.mode_set(mode='OBJECT')
-    return obj, left
+    return obj, faces
+
+
+def quad_model(path, levels):
+    """MODEL's Catmull-Clark at levels, cut one shorter diagonal per quad: the triangle mesh (with
+    V and F) and the set of the quads' vertex sets."""
+    mesh = petersen.read_mesh(path)
+    V, quads = catmull_clark(mesh.V, [list(f) for f in mesh.F], levels)
+    clear()  # the subdivided object: only the two converted copies are drawn
+    triangles, originals = triangulate(V, quads, "short", np.random.default_rng(1))
+    return types.SimpleNamespace(V=V, F=np.array(triangles, np.int64)), originals
+
+
+def captions(mesh, faces_theirs, faces_ours, originals):
+    """The two captions: triangles left, and with a quad model the share of its quads back."""
+    def told(faces):
+        left = sum(len(f) == 3 for f in faces)
+        if not originals:
+            return f"{left:,} of {len(mesh.F):,} triangles left"
+        back = sum(len(f) == 4 and frozenset(f) in originals for f in faces)
+        return f"{100.0 * back / len(originals):.1f} % of the quads back"
+    if originals:
+        return (f"Blender's Tris to Quads: {told(faces_theirs)}",
+                f"petersen: {told(faces_ours)}")
+    return (f"Blender's Tris to Quads: {told(faces_theirs)}",
+            f"petersen (Quality): {told(faces_ours)}")
 
 
 def colour_faces(obj):
@@ -92,15 +128,20 @@ def add_caption(text, location, size):
 def main():
     args = sys.argv[sys.argv.index("--") + 1:]
     source, target = args[0], os.path.abspath(args[1])
-    angle = math.radians(float(args[2]) if len(args) > 2 else 180.0)
     bpy.ops.wm.read_factory_settings(use_empty=True)
     petersen_quads.register()
-    mesh = petersen.read_mesh(source)
-    triangles = sum(len(f) == 3 for f in mesh.F)
-    theirs, their_left = convert("blender", mesh, bpy.ops.mesh.tris_convert_to_quads, angle)
-    ours, our_left = convert(
-        "petersen", mesh,
-        lambda **o: bpy.ops.mesh.petersen_tris_to_quads(objective='QUALITY', **o), angle)
+    if "--recover" in args:
+        mesh, originals = quad_model(source, int(args[args.index("--recover") + 1]))
+        theirs, their_faces = convert("blender", mesh, bpy.ops.mesh.tris_convert_to_quads, None)
+        ours, our_faces = convert("petersen", mesh, bpy.ops.mesh.petersen_tris_to_quads, None)
+    else:
+        angle = math.radians(float(args[2]) if len(args) > 2 else 180.0)
+        mesh, originals = petersen.read_mesh(source), set()
+        theirs, their_faces = convert("blender", mesh, bpy.ops.mesh.tris_convert_to_quads, angle)
+        ours, our_faces = convert(
+            "petersen", mesh,
+            lambda **o: bpy.ops.mesh.petersen_tris_to_quads(objective='QUALITY', **o), angle)
+    their_caption, our_caption = captions(mesh, their_faces, our_faces, originals)
 
     corners = np.array([v.co for v in ours.data.vertices])
     low, high = corners.min(axis=0), corners.max(axis=0)
@@ -115,10 +156,8 @@ def main():
         colour_faces(obj)
         add_wire(obj, size * 0.0011)
     below = low[2] - 0.09 * height
-    add_caption(f"Blender's Tris to Quads: {their_left:,} of {triangles:,} triangles left",
-                (-(width + gap) / 2, low[1], below), 0.045 * width)
-    add_caption(f"petersen (Quality): {our_left:,} left",
-                ((width + gap) / 2, low[1], below), 0.045 * width)
+    add_caption(their_caption, (-(width + gap) / 2, low[1], below), 0.04 * width)
+    add_caption(our_caption, ((width + gap) / 2, low[1], below), 0.04 * width)
 
     camera = bpy.data.objects.new("camera", bpy.data.cameras.new("camera"))
     bpy.context.scene.collection.objects.link(camera)
@@ -143,7 +182,7 @@ def main():
     scene.world.color = (1.0, 1.0, 1.0)
     bpy.ops.render.render(write_still=True)
     shrink_png(target)
-    print(f"wrote {target}: Blender left {their_left}, petersen {our_left} of {triangles}")
+    print(f"wrote {target}: {their_caption}; {our_caption}")
 
 
 def shrink_png(path, levels=24):
