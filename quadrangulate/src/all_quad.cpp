@@ -1,9 +1,8 @@
-#include "all_quad.hpp"
-
 #include "carry_attributes.hpp"
 #include "cut_into_quads.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/mesh/edge_groups.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 #include "split_plan.hpp"
 
 namespace petersen::quad_detail {
@@ -56,8 +55,13 @@ void record_split_quality(QuadStats& stats, const PolygonMesh& out,
 
 }  // namespace
 
+}  // namespace petersen::quad_detail
+
+namespace petersen {
+
 void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
                      const QuadOptions& options) {
+  using namespace quad_detail;  // the plan, the cuts and the attributes' blends
   QuadStats& stats = result.stats;
   PolygonMesh& mesh = result.mesh;
   if (!has_work(mesh, kinds, options.keep_polygons)) {
@@ -108,4 +112,4 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   result.sources = std::move(cut.sources);
 }
 
-}  // namespace petersen::quad_detail
+}  // namespace petersen

@@ -5,8 +5,8 @@
 #include <span>
 #include <vector>
 
-#include "pair_triangles.hpp"
 #include "petersen/graph/stopwatch.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 
 namespace petersen::quad_detail {
 

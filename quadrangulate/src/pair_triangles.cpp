@@ -1,5 +1,3 @@
-#include "pair_triangles.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -15,6 +13,7 @@
 #include "petersen/matching/perfect_partners.hpp"
 #include "petersen/matching/tutte_berge.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 
 namespace petersen::quad_detail {
 
@@ -405,10 +404,15 @@ bool lrs_takes_whole_mesh(const PairableGraph& graph, const PolygonMesh& mesh) {
 
 }  // namespace
 
+}  // namespace petersen::quad_detail
+
+namespace petersen {
+
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
                                HugeVector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats) {
+  using namespace quad_detail;  // the strategies above
   Stopwatch clock;
   TrianglePairing pairing;
   const Algorithm closed_algorithm =
@@ -466,4 +470,4 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   return pairing;
 }
 
-}  // namespace petersen::quad_detail
+}  // namespace petersen

@@ -6,8 +6,8 @@
 #include <span>
 #include <vector>
 
-#include "all_quad.hpp"
 #include "petersen/mesh/edge_groups.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 
 namespace petersen::quad_detail {
 

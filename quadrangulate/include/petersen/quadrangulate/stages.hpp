@@ -1,0 +1,106 @@
+#pragma once
+// The stages of quadrangulate() (quadrangulate.hpp), each a function from values to values that an
+// expert can run alone, as LEMON's phases; the front door is their composition, in this order:
+//   pairable_mesh    the pairable graph with every cut, and each pair's cost where one is wanted
+//   pair_triangles   the pairing, checked: maximum (Tutte–Berge witness) or least cost (its dual)
+//   output_faces     the pairs' quads and the faces kept or left, in input order
+//   measure_quads    the quads' worst-corner figures
+//   split_leftovers  with all_quad: every face made a quad by the fewest midpoints
+// (the attributes are carried by attributes_of_pairs between the last two). Every stage takes the
+// QuadOptions the front door was given (each reads only its own fields) and fills its own fields of
+// the one QuadStats; no stage reads what another left anywhere but in its arguments.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/dualize/quad_quality.hpp"
+#include "petersen/lrs/lrs.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
+
+namespace petersen {
+
+/// What the pairing runs on: a mesh's pairable graph with every cut (structural, attribute,
+/// sharp, kept-edge and shape), and each pairable edge's cost when one is wanted.
+struct PairableMesh {
+  PairableGraph graph;
+  /// Per pairable edge: its quad's quad_corner_deviation, plus QuadOptions::flow_weight times
+  /// its edge flow with Objective::quads; empty with Objective::pairs and no
+  /// max_corner_deviation, which need none.
+  HugeVector<double> costs;
+};
+
+/// Stage 1: the pairable graph of `mesh` (build_pairable_graph) with the attribute cuts the
+/// options do not cross, the pairs' costs, the cross field when a flow weight is given, and the
+/// shape cuts of max_corner_deviation. Fills the mesh's figures in `stats` (faces_in, vertices,
+/// triangles, polygons_kept, mesh_edges, cuts, duplicate_faces, inconsistent_edges,
+/// euler_characteristic, field_iterations, field_seconds, and genus where chosen cuts join the
+/// surface). Throws MeshError naming the face for bad input. O(C) for C corners on the threads,
+/// plus the field's solve when asked.
+PairableMesh pairable_mesh(const PolygonMesh& mesh, const QuadOptions& options, QuadStats& stats);
+
+/// A quad lrs made, with the input triangles behind it (kNoFace where its flips made a new one).
+using LrsQuad = petersen::LrsQuad;
+
+/// What pair_triangles found.
+struct TrianglePairing {
+  /// Per node: its partner node, kNoNode when unpaired, kLrsNode when lrs paired it (lrs_quads).
+  HugeVector<NodeId> partner;
+  HugeVector<LrsQuad> lrs_quads;     ///< on huge pages: they reuse what the pairing freed
+  std::vector<NodeId> tutte_set;     ///< nodes; see QuadResult::tutte_set
+  std::int64_t objective_units = 0;  ///< a cost objective's certified total, in scaled costs
+};
+inline constexpr NodeId kLrsNode = kNoNode - 1;
+
+/// Stage 2: pairs the nodes of `graph` (the pairable graph of `mesh`; its edge arrays may be taken
+/// over, its node_face stays) by the options' objective and checks the answer; the cost
+/// objectives need `degrees`, each edge's cost (PairableMesh::costs). `releasable_corners`, when
+/// not null, is mesh.corners, which lrs on a whole closed mesh frees without options.sources; the
+/// mesh then has no corners when this returns, and output_faces still reads it rightly (its
+/// faces are then all lrs quads). Throws std::logic_error if a matching fails the verifier, its
+/// witness or its certificate. Fills the matching, lrs, component and time fields of `stats`,
+/// maximum_certified and optimality_certified.
+TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
+                               HugeVector<VertexId>* releasable_corners,
+                               std::span<const double> degrees, const QuadOptions& options,
+                               QuadStats& stats);
+
+/// What each output face is: a face kept as it was (not a triangle), a triangle left, a pair's
+/// quad.
+enum class FaceKind : std::uint8_t { kept, left, pair };
+
+/// What output_faces makes: the result (its mesh, the sources when asked, the Tutte–Berge set in
+/// input faces; its stats left to the caller) and what each of its faces is.
+struct OutputFaces {
+  QuadResult result;
+  std::vector<FaceKind> kinds;
+};
+
+/// Stage 3: the output mesh on `positions` (the input's, moved or copied in by the caller): in
+/// input order each pair's quad where its first triangle was and every other face as it is, then
+/// lrs's quads. `with_sources`: fill result.sources (what attributes and all_quad read).
+/// `pairing` is taken, and freed before this returns. Counts pairs and triangles_left into
+/// `stats`. O(F).
+OutputFaces output_faces(const PolygonMesh& mesh, const PairableGraph& graph,
+                         TrianglePairing pairing, Positions positions, bool with_sources,
+                         QuadStats& stats);
+
+/// Stage 4: the worst-corner figures of the faces `kinds` marks as pairs' quads, measured on
+/// `threads` and gathered in face order (the figures do not depend on the threads). O(F).
+QualityFigures measure_quads(const PolygonMesh& out, std::span<const FaceKind> kinds,
+                             std::uint32_t threads);
+
+/// Stage 5 (all_quad): makes every face of `result` a quad (but those QuadOptions::keep_polygons
+/// keeps): the fewest edges get a midpoint so that every face has an even side count (a minimum
+/// T-join, certified, after the non-manifold edges parity forces), then every face is cut into
+/// quads. Updates the mesh, the sources, the attributes and the stats (added_vertices,
+/// split_edges, centre_vertices, added_vertices_minimum, all_quad_certified, split_quads,
+/// split_quality_*; triangles_left stays the pairing's). Throws MeshError naming an input face
+/// when a face that must change repeats a vertex, or when parity proves that no all-quad mesh
+/// exists. O(H) plus the T-join's matching.
+void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
+                     const QuadOptions& options);
+
+}  // namespace petersen
