@@ -1,7 +1,7 @@
 """Builds petersen's Python module with the repository's own CMake build (no second build system).
 
 The extension petersen._petersen is the CMake target _petersen (python/CMakeLists.txt), configured
-with PETERSEN_PYTHON=ON (and the LEMON peer) and tests, bench and tools off, so the library is compiled exactly as for
+with PETERSEN_PYTHON=ON and tests, bench and tools off, so the library is compiled exactly as for
 the CLI, only position-independent. Everything comes from Debian's packages (cmake, ninja,
 pybind11-dev, the libraries of scripts/ensure-deps) and setuptools is Debian's too: install with
 
@@ -82,7 +82,6 @@ class CMakeBuild(build_ext):
             "-DPETERSEN_BUILD_TESTS=OFF",
             "-DPETERSEN_BUILD_BENCH=OFF",
             "-DPETERSEN_BUILD_TOOLS=OFF",
-            "-DPETERSEN_WITH_LEMON=ON",  # algorithm="lemon", the comparison peer
             f"-DPython_EXECUTABLE={sys.executable}",
             f"-DCMAKE_LIBRARY_OUTPUT_DIRECTORY={out_dir}",
         ]

@@ -200,15 +200,12 @@ int main(int argc, char** argv) {
   std::uint64_t triangles = 0;
   for (FaceId f = 0; f < mesh.face_count(); ++f) triangles += mesh.arity(f) == 3;
   const std::string name = std::filesystem::path(file).filename().string();
-  const PeerMatcher lemon = &lemon_peer::maximum_matching;
   std::vector<Row> rows;
-  rows.push_back(by_petersen(
-      mesh, "sg", {.objective = Objective::pairs, .algorithm = Algorithm::sg, .peer = lemon}));
-  rows.push_back(by_petersen(
-      mesh, "auto",
-      {.objective = Objective::pairs, .algorithm = Algorithm::automatic, .peer = lemon}));
-  rows.push_back(by_petersen(
-      mesh, "lrs", {.objective = Objective::pairs, .algorithm = Algorithm::lrs, .peer = lemon}));
+  rows.push_back(
+      by_petersen(mesh, "sg", {.objective = Objective::pairs, .algorithm = Algorithm::sg}));
+  rows.push_back(by_petersen(mesh, "auto",
+                             {.objective = Objective::pairs, .algorithm = Algorithm::automatic}));
+  rows.push_back(by_petersen(mesh, "lrs", {.objective = Objective::pairs, .algorithm = kLrs}));
   rows.push_back(by_petersen(mesh, "quality", {.objective = Objective::quality}));
   rows.push_back(by_petersen(mesh, "quality, max 40",
                              {.objective = Objective::quality, .max_corner_deviation = 40.0}));

@@ -49,9 +49,9 @@ constexpr const char* kOwnExtension = kFormat == MeshFormat::obj   ? ".obj"
 QuadOptions options_from(std::uint8_t choice) {
   // ds and gw pair small closed components by reductions, lrs by contraction; frink is their
   // O(n^2) oracle (inputs stay under -max_len, so it stays quick).
-  constexpr Algorithm kAlgorithms[] = {Algorithm::ps,        Algorithm::sg, Algorithm::lrs,
-                                       Algorithm::gw,        Algorithm::ds, Algorithm::frink,
-                                       Algorithm::automatic, Algorithm::lrs};
+  constexpr PairingAlgorithm kAlgorithms[] = {Algorithm::ps,        Algorithm::sg, kLrs,
+                                              Algorithm::gw,        Algorithm::ds, Algorithm::frink,
+                                              Algorithm::automatic, kLrs};
   QuadOptions options;
   options.algorithm = kAlgorithms[choice & 7];
   options.objective = (choice & 8) ? Objective::quality : Objective::pairs;

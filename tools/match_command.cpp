@@ -15,7 +15,6 @@
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/read_graph.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
 
 namespace petersen::cli {
@@ -155,13 +154,6 @@ void write_stats_json(const MatchReport& r) {
   write_printed(r.args.stats_json, [&](std::FILE* out) { print_stats_json(out, r); });
 }
 
-// The algorithms that run on a graph: all but lrs, which needs a mesh.
-std::vector<std::string> graph_algorithm_names() {
-  std::vector<std::string> names = names_of<Algorithm>();
-  std::erase(names, std::string(to_string(Algorithm::lrs)));
-  return names;
-}
-
 }  // namespace
 
 CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
@@ -182,8 +174,8 @@ CLI::App* add_match_command(CLI::App& app, MatchArgs& args) {
       ->transform(one_of(names_of<GraphFormat>()));
   cmd->add_option("--algorithm", args.algorithm,
                   "for a cubic bridgeless graph: auto (the fastest pairing, then augmenting "
-                  "paths), sg, ps (Puli-Segal as the paper has it), ds, gw, frink or lemon")
-      ->transform(one_of(graph_algorithm_names(), " (lrs works on meshes: petersen quad)"))
+                  "paths), sg, ps (Puli-Segal as the paper has it), ds, gw or frink")
+      ->transform(one_of(names_of<Algorithm>(), " (lrs works on meshes: petersen quad)"))
       ->capture_default_str();
   cmd->add_option("--objective", args.objective,
                   "size: a maximum matching (perfect when there is one); from the numbers the "
@@ -215,10 +207,8 @@ int run_match(const MatchArgs& args) {
     if (!format) throw CLI::ValidationError("--format", "unknown graph format " + args.format);
   }
   const std::optional<Algorithm> algorithm = parse_algorithm(args.algorithm);
-  if (!algorithm || *algorithm == Algorithm::lrs) {
-    throw CLI::ValidationError("--algorithm",
-                               "unknown graph algorithm " + args.algorithm +
-                                   (algorithm ? " (lrs works on meshes: petersen quad)" : ""));
+  if (!algorithm) {
+    throw CLI::ValidationError("--algorithm", "unknown graph algorithm " + args.algorithm);
   }
   const std::optional<Augment> augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
@@ -246,10 +236,7 @@ int run_match(const MatchArgs& args) {
   std::optional<AnyGraphMatching> matched;
   if (!by_cost || (args.require_perfect && *objective->solver != CostObjective::perfect)) {
     matched = match_any_graph(graph.node_count, graph.edges,
-                              {.algorithm = *algorithm,
-                               .augment = *augment,
-                               .seed = args.seed,
-                               .peer = &lemon_peer::maximum_matching});
+                              {.algorithm = *algorithm, .augment = *augment, .seed = args.seed});
   }
   std::optional<AnyGraphCheapestMatching> cheapest;
   std::optional<SolverCosts> costs;

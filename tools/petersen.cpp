@@ -21,7 +21,6 @@
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
@@ -168,13 +167,13 @@ int quad(const QuadArgs& args) {
                                "sizes the parts of the out-of-core conversion: give --memory-limit "
                                "with it (IN a binary PLY)");
   }
-  const auto algorithm = parse_algorithm(args.algorithm);
+  const auto algorithm = parse_pairing_algorithm(args.algorithm);
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
-  if (*objective != Objective::pairs && *algorithm != Algorithm::automatic) {
+  if (*objective != Objective::pairs && *algorithm != PairingAlgorithm{Algorithm::automatic}) {
     throw CLI::ValidationError(
         "--algorithm", "chooses how --objective pairs pairs, and --objective " + args.objective +
                            " pairs by the minimum-cost matching: add "
@@ -198,7 +197,6 @@ int quad(const QuadArgs& args) {
   report.options.objective = *objective;
   report.options.triangle_cost = args.triangle_cost;
   report.options.flow_weight = args.flow_weight;
-  report.options.peer = &lemon_peer::maximum_matching;
   report.options.cross = cross;
   report.options.threads = args.threads;
   // The tool writes the mesh and the stats, never the quads' sources: not asking for them lets
@@ -379,6 +377,13 @@ std::vector<std::string> attribute_cause_names() {
   return names;
 }
 
+// What --algorithm takes: perfect_matching's algorithms, then lrs.
+std::vector<std::string> pairing_algorithm_names() {
+  std::vector<std::string> names = names_of<Algorithm>();
+  names.emplace_back(to_string(kLrs));
+  return names;
+}
+
 // `petersen quad` and its flags, into `args`.
 CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
   CLI::App* quad_cmd = app.add_subcommand("quad",
@@ -394,8 +399,8 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
   quad_cmd
       ->add_option("--algorithm", quad_args.algorithm,
                    "auto (the fastest pairing, then augmenting paths), sg, ps (Puli-Segal as the "
-                   "paper has it), ds, gw, frink, lemon or lrs")
-      ->transform(one_of(names_of<Algorithm>()))
+                   "paper has it), ds, gw, frink or lrs")
+      ->transform(one_of(pairing_algorithm_names()))
       ->capture_default_str();
   quad_cmd
       ->add_option("--augment", quad_args.augment,

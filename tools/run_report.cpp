@@ -55,10 +55,12 @@ void print_summary(std::FILE* out, const RunReport& r) {
                    std::string(to_string(CutCause(c))).c_str(), s.cuts.by_cause[c]);
     }
   }
-  const Algorithm a = r.options.algorithm;
+  const PairingAlgorithm& a = r.options.algorithm;
   const bool quality = r.options.objective != Objective::pairs;
-  const bool augments = !quality && (a == Algorithm::automatic || a == Algorithm::sg ||
-                                     a == Algorithm::ps || a == Algorithm::lrs);
+  const bool lrs = std::holds_alternative<Lrs>(a);
+  const Algorithm* graph = std::get_if<Algorithm>(&a);
+  const bool augments = !quality && (lrs || *graph == Algorithm::automatic ||
+                                     *graph == Algorithm::sg || *graph == Algorithm::ps);
   const std::string by_cost =
       "min-cost (objective " + std::string(to_string(r.options.objective)) + ")";
   std::fprintf(out, "\nalgorithm   %s%s%s\n",
@@ -93,7 +95,7 @@ void print_summary(std::FILE* out, const RunReport& r) {
       s.matching.nodes_labelled);
   if (s.matching.reductions > 0)
     std::fprintf(out, "reductions  %" PRIu64 "\n", s.matching.reductions);
-  if (a == Algorithm::lrs) {
+  if (lrs) {
     std::fprintf(out,
                  "flipped     %" PRIu64 " edges, irreducible triangulations %" PRIu64 " vertices\n",
                  s.flipped_edges, s.irreducible_vertices);

@@ -1,7 +1,6 @@
 #include "petersen/matching/perfect_matching.hpp"
 
 #include <optional>
-#include <stdexcept>
 
 #include "augment/augment_cubic.hpp"
 #include "greedy/greedy.hpp"
@@ -14,21 +13,11 @@ namespace petersen {
 namespace {
 
 constexpr std::pair<Algorithm, std::string_view> kAlgorithmNames[] = {
-    {Algorithm::automatic, "auto"}, {Algorithm::sg, "sg"},   {Algorithm::ps, "ps"},
-    {Algorithm::ds, "ds"},          {Algorithm::gw, "gw"},   {Algorithm::frink, "frink"},
-    {Algorithm::lemon, "lemon"},    {Algorithm::lrs, "lrs"},
+    {Algorithm::automatic, "auto"}, {Algorithm::sg, "sg"}, {Algorithm::ps, "ps"},
+    {Algorithm::ds, "ds"},          {Algorithm::gw, "gw"}, {Algorithm::frink, "frink"},
 };
 constexpr std::pair<Augment, std::string_view> kAugmentNames[] = {{Augment::local, "local"},
                                                                   {Augment::faithful, "faithful"}};
-
-// The caller's peer (LEMON's MaxMatching from petersen::lemon_peer) on the graph's own arrays:
-// a one-step algorithm, so all of it is "initial".
-void match_with_peer(const CubicGraph& graph, PeerMatcher peer, PerfectMatchingResult& result) {
-  Stopwatch clock;
-  peer(graph.node_count(), graph.edge_ends().data(), graph.edge_count(),
-       result.matching.mate_edge.data());
-  result.stats.initial_seconds = clock.seconds();
-}
 
 // SG or PS (paper §3.1), then Tarjan's augmenting paths until the matching is perfect. PS and
 // the augmentation share one NeighbourTable, built in PS's time; SG does not read neighbours,
@@ -105,17 +94,6 @@ std::optional<Augment> parse_augment(std::string_view name) {
 
 PerfectMatchingResult perfect_matching(const CubicGraph& graph,
                                        const PerfectMatchingOptions& options) {
-  if (options.algorithm == Algorithm::lrs) {
-    throw std::invalid_argument(
-        "perfect_matching: lrs contracts and flips a triangulation, so it needs a mesh "
-        "(use quadrangulate)");
-  }
-  if (options.algorithm == Algorithm::lemon && options.peer == nullptr) {
-    throw std::invalid_argument(
-        "perfect_matching: lemon is a comparison peer the core does not link; set "
-        "PerfectMatchingOptions::peer "
-        "(petersen::lemon_peer::maximum_matching, target petersen::lemon_peer)");
-  }
   PerfectMatchingResult result{Matching(graph.node_count()), {}};
   if (options.validate) {
     Stopwatch clock;
@@ -123,9 +101,6 @@ PerfectMatchingResult perfect_matching(const CubicGraph& graph,
     result.stats.validate_seconds = clock.seconds();
   }
   switch (options.algorithm) {
-    case Algorithm::lemon:
-      match_with_peer(graph, options.peer, result);
-      break;
     case Algorithm::automatic:
     case Algorithm::sg:
     case Algorithm::ps:
@@ -136,8 +111,6 @@ PerfectMatchingResult perfect_matching(const CubicGraph& graph,
     case Algorithm::gw:
       match_by_reductions(graph, options, result);
       break;
-    case Algorithm::lrs:
-      break;  // refused above
   }
   return result;
 }

@@ -51,7 +51,7 @@ __all__ = [
 
 #: The algorithms of ``quadrangulate`` (all) and ``perfect_matching`` (all but lrs, which needs a
 #: mesh): see the README's table.
-ALGORITHMS = ("auto", "sg", "ps", "ds", "gw", "frink", "lemon", "lrs")
+ALGORITHMS = ("auto", "sg", "ps", "ds", "gw", "frink", "lrs")
 
 #: Faces: an (m, k) integer array (every face k corners) or a sequence of faces of any length >= 3.
 Faces = Union[npt.ArrayLike, Sequence[Sequence[int]]]
@@ -211,7 +211,7 @@ def quadrangulate(
     triangle left unpaired ``triangle_cost`` degrees, so a triangle stays where pairing it would
     break better quads. ``objective="pairs"`` gives a
     certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,
-    sg, ps, ds, gw, frink, lemon or lrs), the rest by greedy pairing and augmenting paths with a
+    sg, ps, ds, gw, frink or lrs), the rest by greedy pairing and augmenting paths with a
     Tutte-Berge witness. Faces that are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
     (a minimum T-join, certified: ``stats["all_quad_certified"]``, ``stats["added_vertices"]`` and
     ``stats["added_vertices_minimum"]``), polygons included unless ``keep_polygons``; a face

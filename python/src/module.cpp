@@ -21,7 +21,6 @@
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/any_graph.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/mesh/duplicate_faces.hpp"
@@ -32,10 +31,17 @@
 namespace petersen::python {
 namespace {
 
-Algorithm algorithm_of(const std::string& name) {
-  if (auto a = parse_algorithm(name)) return *a;
-  throw py::value_error("unknown algorithm '" + name +
-                        "': auto, sg, ps, ds, gw, frink, lemon or lrs");
+PairingAlgorithm algorithm_of(const std::string& name) {
+  if (auto a = parse_pairing_algorithm(name)) return *a;
+  throw py::value_error("unknown algorithm '" + name + "': auto, sg, ps, ds, gw, frink or lrs");
+}
+
+// The graph functions run perfect_matching's algorithms; lrs is a name they know but cannot run.
+Algorithm graph_algorithm_of(const std::string& name) {
+  const PairingAlgorithm a = algorithm_of(name);
+  if (const Algorithm* graph = std::get_if<Algorithm>(&a)) return *graph;
+  throw py::value_error(
+      "lrs contracts and flips a triangulation, so it needs a mesh (use quadrangulate)");
 }
 
 Augment augment_of(const std::string& name) {
@@ -134,7 +140,6 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
   options.objective = objective_of(objective);
   options.triangle_cost = triangle_cost;
   options.flow_weight = flow_weight;
-  options.peer = &lemon_peer::maximum_matching;
   options.cuts.sharp_angle_degrees = sharp_angle;
   options.max_corner_deviation = max_corner_deviation;
   options.cuts.user_edges = kept_edges;
@@ -244,14 +249,13 @@ std::vector<std::string> write_mesh_py(const std::string& path, const py::handle
   return write_mesh(path, mesh);
 }
 
-// The options of perfect_matching and maximum_matching; lemon runs the peer.
+// The options of perfect_matching and maximum_matching.
 PerfectMatchingOptions graph_options(const std::string& algorithm, const std::string& augment,
                                      std::uint64_t seed) {
   PerfectMatchingOptions options;
-  options.algorithm = algorithm_of(algorithm);
+  options.algorithm = graph_algorithm_of(algorithm);
   options.augment = augment_of(augment);
   options.seed = seed;
-  options.peer = &lemon_peer::maximum_matching;
   return options;
 }
 

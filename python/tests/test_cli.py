@@ -14,7 +14,7 @@ TIMES = {"input", "output", "load_seconds", "write_seconds"}
 @pytest.mark.parametrize("algorithm,objective,all_quad", [
     ("auto", "pairs", False), ("ps", "pairs", False), ("sg", "pairs", False),
     ("ds", "pairs", False), ("gw", "pairs", False), ("lrs", "pairs", False),
-    ("lemon", "pairs", False), ("auto", "pairs", True), ("auto", "quality", False)])
+    ("auto", "pairs", True), ("auto", "quality", False)])
 def test_same_stats_and_faces_as_the_cli(tmp_path, cli, shared_meshes, algorithm, objective,
                                          all_quad):
     mesh_path = shared_meshes / "bunny.off.gz"

@@ -59,6 +59,8 @@ def test_graphs_that_are_not_cubic_bridgeless_raise_value_error():
         petersen.perfect_matching(2, [[0, 5]])
     with pytest.raises(ValueError, match="mesh|lrs"):
         petersen.perfect_matching(10, petersen_graph()[1], algorithm="lrs")
+    with pytest.raises(ValueError, match="unknown algorithm 'lemon'"):
+        petersen.maximum_matching(10, petersen_graph()[1], algorithm="lemon")
     with pytest.raises(ValueError, match=r"\(e, 2\)"):
         petersen.perfect_matching(10, [1, 2, 3])
 

@@ -153,8 +153,7 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
     PerfectMatchingResult result = perfect_matching(cubic, {.algorithm = algorithm,
                                                             .augment = options.augment,
                                                             .seed = options.seed,
-                                                            .validate = false,
-                                                            .peer = options.peer});
+                                                            .validate = false});
     add_run(stats.matching, result.stats);
     matching = std::move(result.matching);
     clock.lap();
@@ -415,11 +414,11 @@ TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
   using namespace quad_detail;  // the strategies above
   Stopwatch clock;
   TrianglePairing pairing;
-  const Algorithm closed_algorithm =
-      options.algorithm == Algorithm::lrs ? Algorithm::automatic : options.algorithm;
+  // With lrs, auto matches the closed components lrs does not take.
+  const Algorithm* chosen = std::get_if<Algorithm>(&options.algorithm);
+  const Algorithm closed_algorithm = chosen ? *chosen : Algorithm::automatic;
   // lrs flips edges, making quads the threshold never judged: with one, auto does its work.
-  bool use_lrs = options.algorithm == Algorithm::lrs && options.objective == Objective::pairs &&
-                 !options.max_corner_deviation;
+  bool use_lrs = !chosen && options.objective == Objective::pairs && !options.max_corner_deviation;
   const HugeVector<Cost> costs =
       options.objective != Objective::pairs ? scale_costs(degrees) : HugeVector<Cost>{};
   stats.dual_seconds += clock.lap();

@@ -29,6 +29,17 @@ std::optional<Objective> parse_objective(std::string_view name) {
   return std::nullopt;
 }
 
+std::string_view to_string(const PairingAlgorithm& algorithm) {
+  if (const Algorithm* graph = std::get_if<Algorithm>(&algorithm)) return to_string(*graph);
+  return "lrs";
+}
+
+std::optional<PairingAlgorithm> parse_pairing_algorithm(std::string_view name) {
+  if (name == to_string(kLrs)) return kLrs;
+  if (const std::optional<Algorithm> graph = parse_algorithm(name)) return *graph;
+  return std::nullopt;
+}
+
 namespace {
 
 // A closed, consistently oriented triangle surface: every component of the graph is one of the

@@ -22,17 +22,21 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   auto d = [&](const char* key, double value) { add(key, value); };
   if (!run.input.empty()) add("input", run.input);
   if (!run.output.empty()) add("output", run.output);
-  const Algorithm a = options.algorithm;
   // Both cost objectives run the minimum-cost matching, not the algorithm.
   const bool quality = options.objective != Objective::pairs;
+  // What the algorithm ran: lrs, or a graph algorithm; auto, sg, ps and lrs augment, auto and ps
+  // pair in PS's place.
+  const bool lrs = !quality && std::holds_alternative<Lrs>(options.algorithm);
+  const Algorithm* graph = quality ? nullptr : std::get_if<Algorithm>(&options.algorithm);
+  const bool in_ps_place = graph && (*graph == Algorithm::automatic || *graph == Algorithm::ps);
+  const bool augments = lrs || in_ps_place || (graph && *graph == Algorithm::sg);
   add("objective", std::string(to_string(options.objective)));
-  add("algorithm", quality ? std::string("min-cost") : std::string(to_string(a)));
+  add("algorithm", quality ? std::string("min-cost") : std::string(to_string(options.algorithm)));
   if (options.objective == Objective::quads) {
     d("triangle_cost", options.triangle_cost);
     d("flow_weight", options.flow_weight);
   }
-  if (!quality && (a == Algorithm::automatic || a == Algorithm::sg || a == Algorithm::ps ||
-                   a == Algorithm::lrs)) {
+  if (augments) {
     add("augment", std::string(to_string(options.augment)));
   }
   if (options.max_corner_deviation) d("max_corner_deviation", *options.max_corner_deviation);
@@ -66,7 +70,6 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
         ? 100.0
         : 100.0 * double(s.triangles - s.matching.unpaired_after_initial) / double(s.triangles));
   u("unpaired_after_initial", s.matching.unpaired_after_initial);
-  const bool in_ps_place = (a == Algorithm::automatic || a == Algorithm::ps) && !quality;
   if (in_ps_place) add("schrijver", s.matching.schrijver);
   if (in_ps_place) add("ordered_sweep", s.matching.ordered_sweep);
   d("augment_seconds", s.matching.augment_seconds);
@@ -75,7 +78,7 @@ std::vector<StatField> stats_fields(const QuadStats& s, const QuadOptions& optio
   u("blossoms", s.matching.blossoms);
   u("nodes_labelled", s.matching.nodes_labelled);
   u("reductions", s.matching.reductions);
-  if (a == Algorithm::lrs && !quality) {
+  if (lrs) {
     u("flipped_edges", s.flipped_edges);
     u("irreducible_vertices", s.irreducible_vertices);
     u("lrs_fallback_components", s.lrs_fallback_components);

@@ -41,7 +41,8 @@ void validate_options(const QuadOptions& options) {
   // scaled costs inside the solver's range.
   check_range("triangle_cost", options.triangle_cost, 0, kMaxTriangleCost);
   check_range("flow_weight", options.flow_weight, 0, kMaxFlowWeight, "degrees per degree");
-  if (options.objective != Objective::pairs && options.algorithm != Algorithm::automatic) {
+  if (options.objective != Objective::pairs &&
+      options.algorithm != PairingAlgorithm{Algorithm::automatic}) {
     throw std::invalid_argument("algorithm " + std::string(to_string(options.algorithm)) +
                                 " pairs by objective pairs only; objective " +
                                 std::string(to_string(options.objective)) +

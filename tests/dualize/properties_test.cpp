@@ -4,11 +4,10 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
-#include "petersen/matching/perfect_matching.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "quad_mesh_check.hpp"
@@ -30,12 +29,10 @@ void check_pipeline(const PolygonMesh& mesh, std::uint32_t genus) {
       RC_ASSERT(dual.side(e, 0) == 3 * t + k || dual.side(e, 1) == 3 * t + k);
     }
   }
-  const PerfectMatchingResult result = perfect_matching(
-      dual.graph, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  const MatchingCheck matching = verify_perfect_matching(dual.graph, result.matching);
-  RC_ASSERT(matching.ok());
+  const Matching matching = testing::lemon_matching(dual.graph);
+  RC_ASSERT(verify_perfect_matching(dual.graph, matching).ok());
   RC_ASSERT(testing::quad_mesh_problem(
-                mesh, testing::quads_of_matching(mesh, dual.graph, result.matching)) == "");
+                mesh, testing::quads_of_matching(mesh, dual.graph, matching)) == "");
 }
 
 RC_GTEST_PROP(SurfacePipeline, RandomClosedSurfacesOfGenusUpTo30, ()) {

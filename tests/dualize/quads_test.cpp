@@ -1,8 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
-#include "petersen/matching/perfect_matching.hpp"
 #include "quad_mesh_check.hpp"
 
 namespace petersen {
@@ -44,9 +43,7 @@ TEST(Quads, KeepTheOrientationOfBothTriangles) {
 TEST(Quads, LemonMatchingGivesAValidQuadMesh) {
   const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const PerfectMatchingResult result = perfect_matching(
-      dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  const PolygonMesh quads = quads_of_matching(mesh, dual, result.matching);
+  const PolygonMesh quads = quads_of_matching(mesh, dual, testing::lemon_matching(dual));
   EXPECT_EQ(quads.face_count(), 4u);
   EXPECT_EQ(quad_mesh_problem(mesh, quads), "");
 }
@@ -61,10 +58,7 @@ TEST(Quads, ImperfectMatchingIsRefused) {
 TEST(Quads, CheckFindsEachKindOfDefect) {
   const PolygonMesh mesh = octahedron();
   const CubicGraph dual = dual_graph(mesh);
-  const PolygonMesh good = quads_of_matching(
-      mesh, dual,
-      perfect_matching(dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching})
-          .matching);
+  const PolygonMesh good = quads_of_matching(mesh, dual, testing::lemon_matching(dual));
   // Corner k of quad q is corners[4q + k]: every face of `good` has four.
   auto problem = [&](auto edit) {
     PolygonMesh q = good;

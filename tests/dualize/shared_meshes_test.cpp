@@ -5,11 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include "peers.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/io/read_mesh.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
-#include "petersen/matching/perfect_matching.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "quad_mesh_check.hpp"
 
@@ -53,12 +52,10 @@ TEST(SharedMeshes, ClosedOnesConvertThroughLemon) {
     const PolygonMesh mesh = read_mesh(*dir + "/" + expected.file);
     const CubicGraph dual = dual_graph(mesh);
     EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-    const PerfectMatchingResult result = perfect_matching(
-        dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-    ASSERT_TRUE(verify_perfect_matching(dual, result.matching).ok());
-    EXPECT_EQ(
-        testing::quad_mesh_problem(mesh, testing::quads_of_matching(mesh, dual, result.matching)),
-        "");
+    const Matching matching = testing::lemon_matching(dual);
+    ASSERT_TRUE(verify_perfect_matching(dual, matching).ok());
+    EXPECT_EQ(testing::quad_mesh_problem(mesh, testing::quads_of_matching(mesh, dual, matching)),
+              "");
   }
 }
 
@@ -105,9 +102,8 @@ TEST(SharedMeshes, InvalidOnesFailAsDescribed) {
   }
   const CubicGraph dual = dual_graph(cow);
   EXPECT_NO_THROW(validate_connected_bridgeless(dual));
-  const PerfectMatchingResult result = perfect_matching(
-      dual, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  EXPECT_EQ(testing::quad_mesh_problem(cow, testing::quads_of_matching(cow, dual, result.matching)),
+  EXPECT_EQ(testing::quad_mesh_problem(
+                cow, testing::quads_of_matching(cow, dual, testing::lemon_matching(dual))),
             "");
 }
 

@@ -4,7 +4,6 @@
 #include "peers.hpp"
 #include "petersen/generators/graph_generators.hpp"
 #include "petersen/graph/connectivity.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
 #include "petersen/testing/arbitrary.hpp"
 
@@ -55,18 +54,16 @@ TEST(Verifier, NamesAnEdgeOutOfRangeOrNotIncident) {
 
 TEST(Algorithms, NamesRoundTrip) {
   for (Algorithm a : {Algorithm::automatic, Algorithm::sg, Algorithm::ps, Algorithm::ds,
-                      Algorithm::gw, Algorithm::frink, Algorithm::lrs, Algorithm::lemon}) {
+                      Algorithm::gw, Algorithm::frink}) {
     EXPECT_EQ(parse_algorithm(to_string(a)), a);
   }
   EXPECT_EQ(to_string(Algorithm::automatic), "auto");
   EXPECT_EQ(PerfectMatchingOptions{}.algorithm, Algorithm::automatic);
-  EXPECT_FALSE(parse_algorithm("blossom").has_value());
+  // lrs needs a mesh (the front door's PairingAlgorithm), LEMON is a peer of the tests and bench.
+  for (const char* other : {"blossom", "lrs", "lemon"}) {
+    EXPECT_FALSE(parse_algorithm(other).has_value()) << other;
+  }
   EXPECT_EQ(parse_augment("faithful"), Augment::faithful);
-}
-
-TEST(PerfectMatching, LemonNeedsTheCallersPeer) {
-  EXPECT_THROW(perfect_matching(petersen_graph(), {.algorithm = Algorithm::lemon}),
-               std::invalid_argument);
 }
 
 RC_GTEST_PROP(PerfectMatching, RefusesEveryPlantedBridge, ()) {
@@ -84,18 +81,13 @@ TEST(PerfectMatching, RefusesABridgeAtTheDoor) {
   }
   edges.push_back({4, 9});
   CubicGraph g = CubicGraph::from_edges(10, edges);
-  EXPECT_THROW(
-      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching}),
-      GraphError);
+  EXPECT_THROW(perfect_matching(g), GraphError);
 }
 
 RC_GTEST_PROP(PerfectMatching, LemonIsPerfectAndAgreesWithBoost, ()) {
   const auto n = *rc::gen::inRange<std::uint32_t>(1, 150) * 2;
   CubicGraph g = random_cubic_bridgeless(n, *rc::gen::arbitrary<std::uint64_t>());
-  PerfectMatchingResult result =
-      perfect_matching(g, {.algorithm = Algorithm::lemon, .peer = &lemon_peer::maximum_matching});
-  MatchingCheck check = verify_perfect_matching(g, result.matching);
-  RC_ASSERT(check.ok());
+  RC_ASSERT(verify_perfect_matching(g, testing::lemon_matching(g)).ok());
   RC_ASSERT(testing::boost_matching_size(n, testing::edge_list(g)) == n / 2);
 }
 

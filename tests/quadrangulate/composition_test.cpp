@@ -73,8 +73,8 @@ std::vector<std::pair<std::string, QuadOptions>> option_sets(
       o.keep_polygons = true;
       sets.push_back({tag + "keep_polygons", o});
     }
-    for (Algorithm a :
-         {Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, Algorithm::lrs}) {
+    for (const PairingAlgorithm& a : std::vector<PairingAlgorithm>{
+             Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, kLrs}) {
       o = base;
       o.objective = Objective::pairs;
       o.algorithm = a;
@@ -89,8 +89,8 @@ QuadOptions random_options(const std::vector<std::array<VertexId, 2>>& kept) {
   QuadOptions o;
   o.objective = *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
   if (o.objective == Objective::pairs) {
-    o.algorithm = *rc::gen::element(Algorithm::automatic, Algorithm::sg, Algorithm::ps,
-                                    Algorithm::ds, Algorithm::gw, Algorithm::lrs);
+    o.algorithm = *rc::gen::elementOf(std::vector<PairingAlgorithm>{
+        Algorithm::automatic, Algorithm::sg, Algorithm::ps, Algorithm::ds, Algorithm::gw, kLrs});
   }
   o.all_quad = *rc::gen::arbitrary<bool>();
   o.keep_polygons = *rc::gen::arbitrary<bool>();
@@ -104,7 +104,7 @@ QuadOptions random_options(const std::vector<std::array<VertexId, 2>>& kept) {
 
 // One run checked; the problem, or empty.
 std::string run_and_check(const PolygonMesh& mesh, const QuadOptions& options) {
-  const bool lrs = options.algorithm == Algorithm::lrs;
+  const bool lrs = std::holds_alternative<Lrs>(options.algorithm);
   QuadResult result;
   try {
     result = quadrangulate(mesh, options);

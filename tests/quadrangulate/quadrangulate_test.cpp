@@ -11,7 +11,6 @@
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/mesh/mesh_report.hpp"
 #include "petersen/testing/arbitrary.hpp"
@@ -25,11 +24,9 @@ namespace {
 using testing::check_attributes_kept;
 using testing::check_quad_result;
 
-constexpr PeerMatcher kLemon = &lemon_peer::maximum_matching;
-
-constexpr Algorithm kAlgorithms[] = {Algorithm::automatic, Algorithm::sg, Algorithm::ps,
-                                     Algorithm::ds,        Algorithm::gw, Algorithm::frink,
-                                     Algorithm::lemon,     Algorithm::lrs};
+constexpr PairingAlgorithm kAlgorithms[] = {
+    Algorithm::automatic, Algorithm::sg,    Algorithm::ps, Algorithm::ds,
+    Algorithm::gw,        Algorithm::frink, kLrs};
 
 PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
                     std::vector<std::vector<VertexId>> faces) {
@@ -40,14 +37,13 @@ PolygonMesh mesh_of(std::vector<std::array<double, 3>> positions,
 }
 
 void expect_correct(const PolygonMesh& mesh, bool all_quad = false) {
-  for (Algorithm algorithm : kAlgorithms) {
+  for (const PairingAlgorithm& algorithm : kAlgorithms) {
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result = quadrangulate(mesh, {.objective = Objective::pairs,
-                                                   .algorithm = algorithm,
-                                                   .all_quad = all_quad,
-                                                   .peer = kLemon});
+    const QuadResult result = quadrangulate(
+        mesh, {.objective = Objective::pairs, .algorithm = algorithm, .all_quad = all_quad});
     EXPECT_TRUE(result.stats.maximum_certified);
-    EXPECT_EQ(check_quad_result(mesh, result, all_quad, algorithm == Algorithm::lrs), "");
+    EXPECT_EQ(check_quad_result(mesh, result, all_quad, std::holds_alternative<Lrs>(algorithm)),
+              "");
   }
 }
 
@@ -105,8 +101,7 @@ TEST(Quadrangulate, LrsReportsItsAugmentationsLabels) {
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     const PolygonMesh plate = randomize_triangulation(
         voxel_plate({.holes_x = 2, .holes_y = 1, .subdivision = 4}), 300, 300, seed);
-    const QuadResult r =
-        quadrangulate(plate, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
+    const QuadResult r = quadrangulate(plate, {.objective = Objective::pairs, .algorithm = kLrs});
     ASSERT_TRUE(r.stats.maximum_certified);
     ASSERT_EQ(r.stats.triangles_left, 0u);
     EXPECT_GE(r.stats.matching.nodes_labelled, r.stats.matching.augmenting_paths);
@@ -191,9 +186,9 @@ TEST(Quadrangulate, RefusesCornersOutOfRangeAndShortFaces) {
 // A closed mesh takes the fast path: every triangle paired by every algorithm.
 TEST(Quadrangulate, ClosedMeshesArePerfect) {
   const PolygonMesh mesh = random_closed_surface(2, 40, 200, 5);
-  for (Algorithm algorithm : kAlgorithms) {
-    const QuadResult result = quadrangulate(
-        mesh, {.objective = Objective::pairs, .algorithm = algorithm, .peer = kLemon});
+  for (const PairingAlgorithm& algorithm : kAlgorithms) {
+    const QuadResult result =
+        quadrangulate(mesh, {.objective = Objective::pairs, .algorithm = algorithm});
     EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
     EXPECT_EQ(result.stats.pairs, mesh.face_count() / 2);
   }
@@ -206,12 +201,12 @@ TEST(Quadrangulate, KleinBottleAndProjectivePlane) {
   for (const PolygonMesh& mesh : {klein_bottle(7, 9), projective_plane(2)}) {
     expect_correct(mesh);
     expect_correct(mesh, /*all_quad=*/true);
-    for (Algorithm algorithm : kAlgorithms) {
-      const QuadResult result = quadrangulate(
-          mesh, {.objective = Objective::pairs, .algorithm = algorithm, .peer = kLemon});
+    for (const PairingAlgorithm& algorithm : kAlgorithms) {
+      const QuadResult result =
+          quadrangulate(mesh, {.objective = Objective::pairs, .algorithm = algorithm});
       EXPECT_EQ(result.stats.triangles_left, 0u) << to_string(algorithm);
       EXPECT_EQ(result.stats.inconsistent_edges > 0, true);
-      if (algorithm == Algorithm::lrs) {
+      if (std::holds_alternative<Lrs>(algorithm)) {
         EXPECT_EQ(result.stats.lrs_fallback_components, 1u);
         EXPECT_NE(result.stats.lrs_fallback_reason, "");
       }
@@ -245,8 +240,7 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
     faces.push_back({8 + i, 8 + (i + 1) % 4, 12});
   }
   const PolygonMesh pinched = mesh_of(positions, faces);
-  const QuadResult lrs =
-      quadrangulate(pinched, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
+  const QuadResult lrs = quadrangulate(pinched, {.objective = Objective::pairs, .algorithm = kLrs});
   const QuadResult by_auto =
       quadrangulate(pinched, {.objective = Objective::pairs, .algorithm = Algorithm::automatic});
   EXPECT_EQ(lrs.stats.lrs_fallback_components, 1u);
@@ -258,9 +252,8 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
   EXPECT_EQ(check_quad_result(pinched, lrs, false, true), "");
   // The consuming door without sources lets lrs free the corners once its triangulation has read
   // them: the pinch is refused before that, and auto pairs the corners as they were.
-  const QuadResult consumed =
-      quadrangulate(PolygonMesh(pinched),
-                    {.objective = Objective::pairs, .algorithm = Algorithm::lrs, .sources = false});
+  const QuadResult consumed = quadrangulate(
+      PolygonMesh(pinched), {.objective = Objective::pairs, .algorithm = kLrs, .sources = false});
   EXPECT_EQ(consumed.stats.lrs_fallback_components, 1u);
   EXPECT_EQ(consumed.mesh.corners, by_auto.mesh.corners);
   // Without the pinch (vertex 12 split into one apex per cone) lrs pairs it, with flips allowed.
@@ -268,7 +261,7 @@ TEST(Quadrangulate, LrsGivesAPinchedClosedMeshToAuto) {
   for (VertexId i = 0; i < 4; ++i) faces[16 + 2 * i + 1][2] = 13;
   const PolygonMesh sphere = mesh_of(positions, faces);
   const QuadResult split =
-      quadrangulate(sphere, {.objective = Objective::pairs, .algorithm = Algorithm::lrs});
+      quadrangulate(sphere, {.objective = Objective::pairs, .algorithm = kLrs});
   EXPECT_EQ(split.stats.lrs_fallback_components, 0u);
   EXPECT_EQ(split.stats.pairs, 12u);
   EXPECT_EQ(split.stats.irreducible_vertices, 4u);
@@ -345,8 +338,8 @@ RC_GTEST_PROP(Quadrangulate, NoPairCrossesACut, ()) {
   if (*rc::gen::arbitrary<bool>()) cuts.sharp_angle_degrees = *rc::gen::inRange(10, 170) + 0.5;
   const Algorithm algorithm =
       *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::ps, Algorithm::gw, Algorithm::sg});
-  const QuadResult result = quadrangulate(
-      mesh, {.objective = Objective::pairs, .algorithm = algorithm, .cuts = cuts, .peer = kLemon});
+  const QuadResult result =
+      quadrangulate(mesh, {.objective = Objective::pairs, .algorithm = algorithm, .cuts = cuts});
   RC_ASSERT(result.stats.maximum_certified);
   const std::string problem = check_quad_result(mesh, result, false, false, cuts);
   RC_LOG() << problem;
@@ -390,8 +383,8 @@ RC_GTEST_PROP(Quadrangulate, WithoutSourcesTheSameMesh, ()) {
   const PolygonMesh mesh = closed ? *testing::closed_triangulations_up_to(3)
                                   : random_mixed_mesh(*rc::gen::inRange<std::uint64_t>(0, 1u << 30),
                                                       *rc::gen::inRange<std::uint32_t>(4, 300));
-  const Algorithm algorithm =
-      *rc::gen::elementOf(std::vector<Algorithm>{Algorithm::lrs, Algorithm::ps});
+  const PairingAlgorithm algorithm =
+      *rc::gen::elementOf(std::vector<PairingAlgorithm>{kLrs, Algorithm::ps});
   const QuadOptions with{.objective = Objective::pairs, .algorithm = algorithm};
   QuadOptions without = with;
   without.sources = false;
@@ -629,16 +622,13 @@ RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
   const Objective objective =
       *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
   // The algorithm is the pairs objective's choice: the others refuse any but automatic.
-  const Algorithm algorithm = objective == Objective::pairs
-                                  ? *rc::gen::elementOf(std::vector<Algorithm>(
-                                        std::begin(kAlgorithms), std::end(kAlgorithms)))
-                                  : Algorithm::automatic;
+  const PairingAlgorithm algorithm = objective == Objective::pairs
+                                         ? *rc::gen::elementOf(std::vector<PairingAlgorithm>(
+                                               std::begin(kAlgorithms), std::end(kAlgorithms)))
+                                         : PairingAlgorithm{Algorithm::automatic};
   const bool all_quad = *rc::gen::arbitrary<bool>();
-  const QuadOptions options{.objective = objective,
-                            .algorithm = algorithm,
-                            .all_quad = all_quad,
-                            .cross = cross,
-                            .peer = kLemon};
+  const QuadOptions options{
+      .objective = objective, .algorithm = algorithm, .all_quad = all_quad, .cross = cross};
   QuadResult result;
   try {
     result = quadrangulate(mesh, options);
@@ -653,7 +643,8 @@ RC_GTEST_PROP(Quadrangulate, AttributesCutAndSurvive, ()) {
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::material)] > 0, "material borders");
   RC_CLASSIFY(result.stats.added_vertices > 0, "split");
   RC_ASSERT(result.stats.maximum_certified || objective == Objective::quads);
-  if (algorithm == Algorithm::lrs && per_face) RC_ASSERT(result.stats.flipped_edges == 0u);
+  if (std::holds_alternative<Lrs>(algorithm) && per_face)
+    RC_ASSERT(result.stats.flipped_edges == 0u);
   std::string problem = check_quad_result(mesh, result, options);
   if (problem.empty()) problem = check_attributes_kept(mesh, result);
   RC_LOG() << problem;
@@ -666,16 +657,13 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   const auto seed = *rc::gen::inRange<std::uint64_t>(0, 1u << 30);
   const Objective objective =
       *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
-  const Algorithm algorithm = objective == Objective::pairs
-                                  ? *rc::gen::elementOf(std::vector<Algorithm>(
-                                        std::begin(kAlgorithms), std::end(kAlgorithms)))
-                                  : Algorithm::automatic;
+  const PairingAlgorithm algorithm = objective == Objective::pairs
+                                         ? *rc::gen::elementOf(std::vector<PairingAlgorithm>(
+                                               std::begin(kAlgorithms), std::end(kAlgorithms)))
+                                         : PairingAlgorithm{Algorithm::automatic};
   const bool all_quad = *rc::gen::arbitrary<bool>();
-  const QuadOptions options{.objective = objective,
-                            .algorithm = algorithm,
-                            .seed = seed,
-                            .all_quad = all_quad,
-                            .peer = kLemon};
+  const QuadOptions options{
+      .objective = objective, .algorithm = algorithm, .seed = seed, .all_quad = all_quad};
   QuadResult result;
   try {
     result = quadrangulate(mesh, options);
@@ -694,8 +682,9 @@ RC_GTEST_PROP(Quadrangulate, MaximumAndCertifiedOnMixedMeshes, ()) {
   RC_ASSERT(problem.empty());
   // The summary's initial pairing: what the greedy passes left, each augmenting path pairing two
   // of them (auto, ps and sg: their paths are the only step after the initial pairing).
-  if ((algorithm == Algorithm::automatic || algorithm == Algorithm::ps ||
-       algorithm == Algorithm::sg) &&
+  const Algorithm* graph = std::get_if<Algorithm>(&algorithm);
+  if (graph &&
+      (*graph == Algorithm::automatic || *graph == Algorithm::ps || *graph == Algorithm::sg) &&
       objective == Objective::pairs) {
     RC_ASSERT(result.stats.matching.unpaired_after_initial ==
               result.stats.triangles_left + 2 * result.stats.matching.augmenting_paths);

@@ -466,7 +466,7 @@ std::string check_quad_result(const PolygonMesh& input, const QuadResult& result
 
 std::string check_quad_result(const PolygonMesh& input, const QuadResult& result,
                               const QuadOptions& options) {
-  const bool flips_allowed = options.algorithm == Algorithm::lrs;
+  const bool flips_allowed = std::holds_alternative<Lrs>(options.algorithm);
   std::string problem =
       check_pairing(input, result, options.all_quad, flips_allowed, options.cuts, options.cross,
                     options.max_corner_deviation, options.objective != Objective::quads);

@@ -15,7 +15,6 @@
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/io/read_mesh.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "result_check.hpp"
@@ -71,16 +70,18 @@ TEST_P(EveryAlgorithm, ConvertsTheMesh) {
   const std::string& file = GetParam();
   const PolygonMesh mesh = read_bare_mesh(*dir + "/" + file);
   const bool small = full_run() || mesh.face_count() <= kAllAlgorithmsUpTo;
-  for (Algorithm algorithm : {Algorithm::automatic, Algorithm::sg, Algorithm::ps, Algorithm::ds,
-                              Algorithm::gw, Algorithm::frink, Algorithm::lemon, Algorithm::lrs}) {
-    if (!small && algorithm != Algorithm::automatic && algorithm != Algorithm::lrs) continue;
-    if (algorithm == Algorithm::frink && mesh.face_count() > kFrinkUpTo) continue;
+  const PairingAlgorithm algorithms[] = {
+      Algorithm::automatic, Algorithm::sg,    Algorithm::ps, Algorithm::ds,
+      Algorithm::gw,        Algorithm::frink, kLrs};
+  for (const PairingAlgorithm& algorithm : algorithms) {
+    const bool lrs = std::holds_alternative<Lrs>(algorithm);
+    if (!small && algorithm != PairingAlgorithm{Algorithm::automatic} && !lrs) continue;
+    if (algorithm == PairingAlgorithm{Algorithm::frink} && mesh.face_count() > kFrinkUpTo) continue;
     SCOPED_TRACE(std::string(to_string(algorithm)));
-    const QuadResult result = quadrangulate(mesh, {.objective = Objective::pairs,
-                                                   .algorithm = algorithm,
-                                                   .peer = &lemon_peer::maximum_matching});
+    const QuadResult result =
+        quadrangulate(mesh, {.objective = Objective::pairs, .algorithm = algorithm});
     EXPECT_TRUE(result.stats.maximum_certified);
-    EXPECT_EQ(testing::check_quad_result(mesh, result, false, algorithm == Algorithm::lrs), "");
+    EXPECT_EQ(testing::check_quad_result(mesh, result, false, lrs), "");
   }
   try {
     const QuadOptions options{.all_quad = true};

@@ -8,7 +8,6 @@
 #include <cmath>
 
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "result_check.hpp"
@@ -100,15 +99,14 @@ RC_GTEST_PROP(Threshold, MaximumOfWhatIsAllowedAndNothingOver, ()) {
   const double degrees = *rc::gen::inRange(0, 180) + 0.5;
   const Objective objective =
       *rc::gen::element(Objective::quads, Objective::pairs, Objective::quality);
-  const Algorithm algorithm = objective == Objective::pairs
-                                  ? *rc::gen::element(Algorithm::sg, Algorithm::ps, Algorithm::gw,
-                                                      Algorithm::lemon, Algorithm::lrs)
-                                  : Algorithm::automatic;
+  const PairingAlgorithm algorithm = objective == Objective::pairs
+                                         ? *rc::gen::elementOf(std::vector<PairingAlgorithm>{
+                                               Algorithm::sg, Algorithm::ps, Algorithm::gw, kLrs})
+                                         : PairingAlgorithm{Algorithm::automatic};
   const QuadOptions options{.objective = objective,
                             .algorithm = algorithm,
                             .seed = *rc::gen::arbitrary<std::uint64_t>(),
-                            .max_corner_deviation = degrees,
-                            .peer = &lemon_peer::maximum_matching};
+                            .max_corner_deviation = degrees};
   const QuadResult result = quadrangulate(mesh, options);
   RC_CLASSIFY(result.stats.cuts.by_cause[int(CutCause::shape)] > 0, "shape cuts");
   RC_ASSERT(result.stats.maximum_certified || objective == Objective::quads);

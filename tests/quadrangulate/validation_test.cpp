@@ -113,6 +113,27 @@ TEST(Validation, ThreadsAboveTheLimitAreRefused) {
   EXPECT_EQ(check_quad_result(mesh, result, false, false), "");
 }
 
+// The front door's algorithms: perfect_matching's, by their names, and lrs; like every one but
+// auto, lrs pairs by the pairs objective only.
+TEST(Validation, PairingAlgorithmsByNameAndTheObjectiveTheyNeed) {
+  const PairingAlgorithm algorithms[] = {
+      Algorithm::automatic, Algorithm::sg,    Algorithm::ps, Algorithm::ds,
+      Algorithm::gw,        Algorithm::frink, kLrs};
+  for (const PairingAlgorithm& a : algorithms) {
+    EXPECT_EQ(parse_pairing_algorithm(to_string(a)), a) << to_string(a);
+  }
+  EXPECT_EQ(to_string(kLrs), "lrs");
+  EXPECT_EQ(to_string(PairingAlgorithm{Algorithm::automatic}), "auto");
+  EXPECT_EQ(QuadOptions{}.algorithm, PairingAlgorithm{Algorithm::automatic});
+  for (const char* other : {"lemon", "blossom", "LRS"}) {
+    EXPECT_FALSE(parse_pairing_algorithm(other).has_value()) << other;
+  }
+  const PolygonMesh mesh = open_grid(3, 3);
+  const std::string message = message_of<std::invalid_argument>(
+      [&] { quadrangulate(mesh, {.objective = Objective::quality, .algorithm = kLrs}); });
+  EXPECT_TRUE(contains(message, "algorithm lrs")) << message;
+}
+
 // The library's choice for a mesh with nothing to pair: an empty result, no error (the CLI and
 // the Python module refuse such input themselves).
 TEST(Validation, EmptyMeshGivesAnEmptyResult) {

@@ -17,6 +17,13 @@ std::uint32_t boost_matching_size(std::uint32_t node_count,
   return static_cast<std::uint32_t>(boost::matching_size(graph, mate.data()));
 }
 
+Matching lemon_matching(const CubicGraph& g) {
+  Matching matching(g.node_count());
+  lemon_peer::maximum_matching(g.node_count(), g.edge_ends().data(), g.edge_count(),
+                               matching.mate_edge.data());
+  return matching;
+}
+
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges) {
   std::vector<std::uint32_t> ends;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
+#include "petersen/matching/matching.hpp"
 
 namespace petersen::testing {
 
@@ -23,6 +24,9 @@ inline EdgeList edge_list(const CubicGraph& g) {
 /// Size of a maximum matching by Boost's edmonds_maximum_cardinality_matching.
 std::uint32_t boost_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges);
+/// A maximum matching of `g` by LEMON's MaxMatching, on its edge ids (perfect when g is cubic and
+/// bridgeless): an independent matching to check what consumes one, or to verify.
+Matching lemon_matching(const CubicGraph& g);
 /// Size of a maximum matching by LEMON's MaxMatching.
 std::uint32_t lemon_matching_size(std::uint32_t node_count,
                                   std::span<const std::array<std::uint32_t, 2>> edges);

@@ -261,8 +261,13 @@ refuses "a view of three zeros" "view" "$petersen" render "$example" "$work/x.pn
 # or subcommand to a misspelt one, output folders checked before any work in every subcommand.
 check "an enum value in capitals" "$petersen" quad "$example" "$work/x.obj" --algorithm PS \
   --objective Pairs --augment LOCAL
-refuses "a bad algorithm lists the algorithms" "one of auto, sg, ps, ds, gw, frink, lemon, lrs" \
+refuses "a bad algorithm lists the algorithms" "one of auto, sg, ps, ds, gw, frink, lrs" \
   "$petersen" quad "$example" "$work/x.obj" --algorithm blossom
+# LEMON is the tests' and the bench's peer, not an algorithm of the tool.
+refuses "quad lemon" "unknown value lemon: one of auto, sg, ps, ds, gw, frink, lrs" \
+  "$petersen" quad "$example" "$work/x.obj" --algorithm lemon
+refuses "match lemon" "unknown value lemon: one of auto, sg, ps, ds, gw, frink (lrs" \
+  "$petersen" match "$work/g.txt" "$work/m.txt" --algorithm lemon
 refuses "a bad objective lists the objectives" "unknown value best: one of quads, pairs, quality" \
   "$petersen" quad "$example" "$work/x.obj" --objective best
 refuses "match lrs" "lrs works on meshes" "$petersen" match "$work/g.txt" "$work/m.txt" --algorithm lrs

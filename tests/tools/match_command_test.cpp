@@ -106,7 +106,7 @@ TEST_F(MatchCommand, PetersenGraphInDimacsByEveryAlgorithm) {
   const CubicGraph g = petersen_graph();
   const testing::EdgeList edges = testing::edge_list(g);
   write(path("petersen.dimacs"), dimacs(10, edges));
-  for (const char* algorithm : {"auto", "sg", "ps", "ds", "gw", "frink", "lemon"}) {
+  for (const char* algorithm : {"auto", "sg", "ps", "ds", "gw", "frink"}) {
     SCOPED_TRACE(algorithm);
     ASSERT_EQ(run(path("petersen.dimacs") + " " + path("m.txt") + " --algorithm " + algorithm +
                   " --stats-json " + path("stats.json")),

@@ -43,9 +43,8 @@ struct AnyGraphMatching {
 /// augment_matching on a CsrGraph) with its Tutte–Berge witness. Edge e joins edges[e][0] and
 /// edges[e][1]; parallel edges and loops are allowed (a loop is never matched). Every answer
 /// goes through the verifier before it is returned (std::logic_error if it fails, which would be
-/// a bug). Throws GraphError naming the first edge with an endpoint out of range, and what
-/// perfect_matching throws for `options` (lrs, or lemon without a peer). O(n + m) plus the
-/// algorithm.
+/// a bug). Throws GraphError naming the first edge with an endpoint out of range. O(n + m) plus
+/// the algorithm.
 AnyGraphMatching match_any_graph(std::uint32_t node_count,
                                  const std::vector<std::array<std::uint32_t, 2>>& edges,
                                  const PerfectMatchingOptions& options = {});

@@ -9,6 +9,9 @@
 
 namespace petersen {
 
+/// The algorithms perfect_matching runs on a cubic bridgeless graph. lrs, which contracts and flips
+/// a triangulation, is chosen at the mesh front door (PairingAlgorithm,
+/// petersen/quadrangulate/quadrangulate.hpp).
 enum class Algorithm {
   automatic,  ///< "auto": the fastest pairing in PS's place (the ordered sweep where the numbering
               ///< is local, PerfectMatchingStats::ordered_sweep; Schrijver's exact matching on a
@@ -20,10 +23,6 @@ enum class Algorithm {
   ds,         ///< Frink reductions, Diks–Stańczyk choice over dynamic connectivity (paper §3.2)
   gw,         ///< Frink reductions, Gawrychowski–Wasylkiewicz choice over link-cut trees
   frink,      ///< Frink reductions, bridge test from scratch: O(n^2), a test oracle
-  lemon,      ///< the comparison peer (LEMON's MaxMatching): runs PerfectMatchingOptions::peer, see
-              ///< there
-  lrs,        ///< contraction and expansion with flips (paper §3.3): needs a mesh, so it is run
-              ///< by quadrangulate (petersen/quadrangulate), not by perfect_matching
 };
 
 /// How augmenting paths are searched (paper §3.1, Tarjan's procedure).
@@ -37,25 +36,12 @@ std::optional<Algorithm> parse_algorithm(std::string_view name);
 std::string_view to_string(Augment augment);
 std::optional<Augment> parse_augment(std::string_view name);
 
-/// A maximum-matching routine of another library, run for Algorithm::lemon on the graph's flat
-/// arrays: edge e joins edge_ends[2e] and edge_ends[2e + 1] (CubicGraph::edge_ends()); it writes
-/// each node's matched edge, or 0xFFFFFFFF when the node is left free, to mate_edge[v]. Plain
-/// arrays, so that a peer compiled as C++17 (LEMON) can be handed in without a copy.
-using PeerMatcher = void (*)(std::uint32_t node_count, const std::uint32_t* edge_ends,
-                             std::uint32_t edge_count, std::uint32_t* mate_edge);
-
 struct PerfectMatchingOptions {
   Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
-  /// The matcher Algorithm::lemon runs. The core links no peer library: a caller that compares
-  /// against LEMON links the optional target petersen::lemon_peer and sets this to
-  /// petersen::lemon_peer::maximum_matching (petersen/lemon_peer/lemon_peer.hpp), as the CLI and
-  /// the bench do. Left empty, Algorithm::lemon throws std::invalid_argument. Its answer goes
-  /// through the same verifier as every other algorithm's.
-  PeerMatcher peer = nullptr;
 };
 
 /// Statistics of one run, in the columns of the paper's Table 4.3 plus per-algorithm counts.

@@ -12,9 +12,7 @@ struct PerfectMatchingResult {
 };
 
 /// A perfect matching of a cubic bridgeless (multi)graph, by the chosen algorithm. Components are
-/// matched independently. Throws GraphError if `options.validate` and the graph has a bridge,
-/// std::invalid_argument for Algorithm::lrs (which works on a triangulation, not a graph) and for
-/// Algorithm::lemon without `options.peer`.
+/// matched independently. Throws GraphError if `options.validate` and the graph has a bridge.
 PerfectMatchingResult perfect_matching(const CubicGraph& graph,
                                        const PerfectMatchingOptions& options = {});
 

@@ -20,6 +20,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
@@ -47,6 +48,19 @@ enum class Objective {
 };
 std::string_view to_string(Objective objective);
 std::optional<Objective> parse_objective(std::string_view name);
+
+/// lrs, contraction and expansion with flips (paper §3.3, petersen/lrs/lrs.hpp): it works on the
+/// mesh's triangulation, not on a graph, so it is chosen here rather than among Algorithm's.
+struct Lrs {
+  bool operator==(const Lrs&) const = default;
+};
+inline constexpr Lrs kLrs{};
+/// Objective::pairs' algorithm for the closed components: one that perfect_matching runs, or lrs.
+using PairingAlgorithm = std::variant<Algorithm, Lrs>;
+/// "lrs", or to_string of the Algorithm.
+std::string_view to_string(const PairingAlgorithm& algorithm);
+/// "lrs", or what parse_algorithm accepts; std::nullopt for any other name.
+std::optional<PairingAlgorithm> parse_pairing_algorithm(std::string_view name);
 
 /// Objective::quads' defaults, chosen on the recovery bench (bench/quad_recovery.py: quad models
 /// exported triangulated and converted back) and the scans of ../shared/meshes. Leaving a triangle
@@ -84,11 +98,11 @@ struct QuadOptions {
   /// field, in [0, 90]). Finite and at least 0; 0 (the default) weighs shape alone and computes no
   /// field.
   double flow_weight = kDefaultFlowWeight;
-  /// Objective::pairs: the algorithm for the closed components: auto, sg, ps, ds, gw, frink, lemon
-  /// or lrs. lrs works on each closed, connected, orientable manifold component (it flips edges,
+  /// Objective::pairs: the algorithm for the closed components: auto, sg, ps, ds, gw, frink or
+  /// lrs. lrs works on each closed, connected, orientable manifold component (it flips edges,
   /// see LrsResult); a closed component it cannot take (pinched vertex, non-orientable) is matched
   /// by auto instead and counted in QuadStats::lrs_fallback_components.
-  Algorithm algorithm = Algorithm::automatic;
+  PairingAlgorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
   /// Make every face of the output a quad, adding the fewest vertices this pairing allows. A
@@ -124,7 +138,7 @@ struct QuadOptions {
   /// cut of cause CutCause::shape. The pairing is then a certified maximum matching of what is
   /// left, the cheapest of those with Objective::quality; triangles no such pair takes stay
   /// triangles. With all_quad those are still split into quads, which the threshold does not
-  /// judge (it says which pairs are allowed, not what the splits look like). Algorithm::lrs is
+  /// judge (it says which pairs are allowed, not what the splits look like). lrs is
   /// matched by ps under a threshold, since its flips would make quads the threshold never saw.
   /// Degrees in [0, 270], the measure's range.
   std::optional<double> max_corner_deviation = {};
@@ -143,10 +157,6 @@ struct QuadOptions {
   /// face_property) to let pairs cross it. Any other cause throws std::invalid_argument: the mesh's
   /// structure and the caller's own cuts are never crossed.
   std::vector<CutCause> cross = {};
-  /// The matcher Algorithm::lemon runs (PerfectMatchingOptions::peer):
-  /// petersen::lemon_peer::maximum_matching for the comparison with LEMON; left empty,
-  /// Algorithm::lemon throws std::invalid_argument.
-  PeerMatcher peer = nullptr;
   /// Threads for the phases that split into independent parts (grouping the halfedges and
   /// classifying the edges, the quads' measure, the minimum-cost matching's short searches); 0:
   /// every core; at most kMaxQuadThreads. Threads are started for the call and joined before it
