@@ -138,8 +138,9 @@ struct QuadOptions {
   /// cut of cause CutCause::shape. The pairing is then a certified maximum matching of what is
   /// left, the cheapest of those with Objective::quality; triangles no such pair takes stay
   /// triangles. With all_quad those are still split into quads, which the threshold does not
-  /// judge (it says which pairs are allowed, not what the splits look like). lrs is
-  /// matched by ps under a threshold, since its flips would make quads the threshold never saw.
+  /// judge (it says which pairs are allowed, not what the splits look like). Under a threshold
+  /// the closed components are matched by auto instead of lrs, whose flips would make quads the
+  /// threshold never saw.
   /// Degrees in [0, 270], the measure's range.
   std::optional<double> max_corner_deviation = {};
   /// Edges no pair may cross besides the mesh's own cuts: sharp folds, the caller's edges, seams
