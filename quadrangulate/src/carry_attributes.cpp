@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 
 namespace petersen::quad_detail {
 
@@ -153,8 +154,13 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
   return after;
 }
 
+}  // namespace petersen::quad_detail
+
+namespace petersen {
+
 MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& out,
                                    std::span<const std::array<FaceId, 2>> sources) {
+  using quad_detail::Blend, quad_detail::derived_attributes;
   const MeshAttributes& a = input.attributes;
   std::vector<FaceId> face_of;
   HugeVector<Blend> corner_from;
@@ -200,4 +206,4 @@ MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& 
   return derived_attributes(a, out.positions.size(), face_of, corner_from, {});
 }
 
-}  // namespace petersen::quad_detail
+}  // namespace petersen

@@ -33,12 +33,4 @@ MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vert
                                   std::span<const Blend> corner_from,
                                   std::span<const Blend> new_vertices);
 
-/// The attributes of `out`, made by pairing `input`'s triangles: output face o came from input
-/// faces sources[o] ({f, kNoFace}: face f as it was; {t1, t2}: their quad, whose corners take
-/// the values of the triangle corners at the same vertex, t1's first). Throws std::logic_error
-/// for a face with no input face (lrs's flips, which never run on a mesh with corner or face
-/// attributes). O(C + F).
-MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& out,
-                                   std::span<const std::array<FaceId, 2>> sources);
-
 }  // namespace petersen::quad_detail

@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "carry_attributes.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/quadrangulate/stages.hpp"
@@ -86,7 +85,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
                               ? double(objective_units) / kDefaultCostScale
                               : quality.total;
   if (!attributes.empty()) {
-    result.mesh.attributes = quad_detail::attributes_of_pairs(mesh, result.mesh, result.sources);
+    result.mesh.attributes = attributes_of_pairs(mesh, result.mesh, result.sources);
   }
   // Not an attribute, but what the input's coordinates were: a float PLY is written back as float.
   result.mesh.attributes.position_type = attributes.position_type;

@@ -188,6 +188,14 @@ RC_GTEST_PROP(MeasureQuadsStage, TheQuadsFiguresOnAnyThreads, ()) {
   }
 }
 
+RC_GTEST_PROP(AttributesOfPairsStage, EachQuadCarriesItsTrianglesValues, ()) {
+  const PolygonMesh mesh = *testing::meshes_of_class(testing::MeshClass::textured, 80);
+  const Staged staged = stage_to_output(mesh, {}, true);
+  QuadResult result = staged.out.result;
+  result.mesh.attributes = attributes_of_pairs(mesh, result.mesh, result.sources);
+  RC_ASSERT(testing::check_attributes_kept(mesh, result) == "");
+}
+
 TEST(SplitLeftoversStage, MakesEveryFaceOfAnOutputAQuad) {
   // An open grid with holes, paired by the default: triangles are left beside the holes.
   const PolygonMesh mesh = punch_holes(open_grid(9, 7), 4, 3);

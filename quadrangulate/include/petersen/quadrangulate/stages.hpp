@@ -5,8 +5,9 @@
 //   pair_triangles   the pairing, checked: maximum (Tutte–Berge witness) or least cost (its dual)
 //   output_faces     the pairs' quads and the faces kept or left, in input order
 //   measure_quads    the quads' worst-corner figures
+//   attributes_of_pairs  the input's attributes carried to the quads
 //   split_leftovers  with all_quad: every face made a quad by the fewest midpoints
-// (the attributes are carried by attributes_of_pairs between the last two). Every stage takes the
+// Every stage takes the
 // QuadOptions the front door was given (each reads only its own fields) and fills its own fields of
 // the one QuadStats; no stage reads what another left anywhere but in its arguments.
 
@@ -92,7 +93,16 @@ OutputFaces output_faces(const PolygonMesh& mesh, const PairableGraph& graph,
 QualityFigures measure_quads(const PolygonMesh& out, std::span<const FaceKind> kinds,
                              std::uint32_t threads);
 
-/// Stage 5 (all_quad): makes every face of `result` a quad (but those QuadOptions::keep_polygons
+/// Stage 5: the attributes of `out`, made by output_faces from `input` with sources: face o came
+/// from input faces sources[o] ({f, kNoFace}: face f as it was; {t1, t2}: their quad, whose
+/// corners take the values of the triangle corners at the same vertex, t1's first), its face
+/// attributes those of its first face; vertex properties copied. Throws std::logic_error for a
+/// face with no input face (lrs's flips, which never run on a mesh with corner or face
+/// attributes). O(C + F).
+MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& out,
+                                   std::span<const std::array<FaceId, 2>> sources);
+
+/// Stage 6 (all_quad): makes every face of `result` a quad (but those QuadOptions::keep_polygons
 /// keeps): the fewest edges get a midpoint so that every face has an even side count (a minimum
 /// T-join, certified, after the non-manifold edges parity forces), then every face is cut into
 /// quads. Updates the mesh, the sources, the attributes and the stats (added_vertices,
