@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "petersen/partition/partition.hpp"
+
 namespace petersen::cli {
 
 /// "3G", "512M", "2.5GiB", "1000000" (bytes): the size in bytes. Throws CLI::ValidationError.
@@ -19,6 +21,7 @@ std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
 
 struct OutOfCoreArgs {
   std::string input, output, augment = "local", stats_json;
+  PartCosts costs = {};
   std::uint64_t memory_limit = 0;
   std::uint64_t part_triangles = 0;
   std::uint32_t threads = 1;
