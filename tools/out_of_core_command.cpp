@@ -19,8 +19,12 @@ namespace petersen::cli {
 
 namespace {
 
-// What `petersen quad` holds per triangle of a closed mesh at its peak (bench/RESULTS.md, "Scale").
-constexpr double kInMemoryBytesPerTriangle = 55;
+// What `petersen quad` holds per triangle at its peak, by objective (bench/RESULTS.md, "Scale", and
+// docs/distributed.md): pairs on a closed mesh; the minimum-cost matching's doubled graph for
+// quads, and for quality on an open mesh also the maximum matching that sizes its price.
+double in_memory_bytes_per_triangle(Objective objective) {
+  return objective == Objective::pairs ? 55 : objective == Objective::quads ? 600 : 800;
+}
 // A binary PLY of a closed triangle mesh: 13 bytes per face and 12 per vertex, half a vertex per
 // face.
 constexpr double kPlyBytesPerTriangle = 19;
@@ -160,7 +164,8 @@ std::uint64_t parse_memory_size(const std::string& text) {
 }
 
 std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
-                                               const std::string& memory_limit) {
+                                               const std::string& memory_limit,
+                                               Objective objective) {
   if (!memory_limit.empty()) {
     if (!ends_with_nocase(input, ".ply")) {
       throw CLI::ValidationError(
@@ -175,13 +180,14 @@ std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
   const std::uintmax_t bytes = std::filesystem::file_size(input, error);
   if (error || !ends_with_nocase(input, ".ply")) return std::nullopt;
   const std::optional<std::uint64_t> available = available_memory();
-  const double needed = double(bytes) / kPlyBytesPerTriangle * kInMemoryBytesPerTriangle;
+  const double needed =
+      double(bytes) / kPlyBytesPerTriangle * in_memory_bytes_per_triangle(objective);
   if (!available || needed <= double(*available)) return std::nullopt;
   std::fprintf(stderr,
-               "petersen: %s needs about %.1f GB in memory, %.1f GB are available: converting out "
-               "of core with --memory-limit %.1fG\n",
-               input.c_str(), needed / 1e9, double(*available) / 1e9,
-               double(*available / 2) / double(1u << 30));
+               "petersen: %s needs about %.1f GB in memory for --objective %s, %.1f GB are "
+               "available: converting out of core with --memory-limit %.1fG\n",
+               input.c_str(), needed / 1e9, std::string(to_string(objective)).c_str(),
+               double(*available) / 1e9, double(*available / 2) / double(1u << 30));
   return *available / 2;
 }
 

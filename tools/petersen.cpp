@@ -175,11 +175,9 @@ void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
 }
 
 int quad(const QuadArgs& args) {
-  if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
-    const auto objective = parse_objective(args.objective);
-    if (!objective) {
-      throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
-    }
+  const auto objective = parse_objective(args.objective);
+  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  if (const auto limit = out_of_core_limit(args.input, args.memory_limit, *objective)) {
     refuse_out_of_core_flags(args, *objective);
     return quad_out_of_core_command({.input = args.input,
                                      .output = args.output,
@@ -202,8 +200,6 @@ int quad(const QuadArgs& args) {
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
-  const auto objective = parse_objective(args.objective);
-  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
   if (*objective != Objective::pairs && *algorithm != Algorithm::automatic) {
     throw CLI::ValidationError(
         "--algorithm", "chooses how --objective pairs pairs, and --objective " + args.objective +

@@ -24,10 +24,12 @@ using partition_detail::TempFaceArray;
 // included: 125 bytes per triangle of the largest part, measured on the closed 10^8 plate
 // (docs/distributed.md); parts are sized for 1.5 times their size (next_carry), which covers it.
 constexpr std::uint64_t kBytesPerTriangle = 120;
-// The same for the cost objectives, whose part step holds the corners' positions (72 bytes per
-// triangle), the part as a mesh, the edge costs and the minimum-cost matching's doubled graph
-// and search state.
-constexpr std::uint64_t kCostBytesPerTriangle = 600;
+// The same for the cost objectives (docs/distributed.md), whose part step holds the corners'
+// positions (72 bytes per triangle), the part as a mesh, the edge costs and the minimum-cost
+// matching's doubled graph and search state; quality's also the maximum matching that sizes its
+// price, and a search that leaves more trees open on a part's open border.
+constexpr std::uint64_t kQuadsBytesPerTriangle = 600;
+constexpr std::uint64_t kQualityBytesPerTriangle = 700;
 // Kept back from the limit for what does not scale with the part: the bands and open edges of all
 // parts, the buffers and the program itself.
 constexpr std::uint64_t kFixedBytes = std::uint64_t{256} << 20;
@@ -38,9 +40,11 @@ constexpr std::uint64_t kMinPartTriangles = 64;
 std::uint64_t part_size(const OutOfCoreOptions& options, std::uint64_t triangles) {
   std::uint64_t part = options.part_triangles;
   if (part == 0) {
-    const std::uint64_t per = options.bytes_per_triangle > 0 ? options.bytes_per_triangle
-                              : options.costs.objective == Objective::pairs ? kBytesPerTriangle
-                                                                            : kCostBytesPerTriangle;
+    const Objective objective = options.costs.objective;
+    const std::uint64_t per = options.bytes_per_triangle > 0  ? options.bytes_per_triangle
+                              : objective == Objective::pairs ? kBytesPerTriangle
+                              : objective == Objective::quads ? kQuadsBytesPerTriangle
+                                                              : kQualityBytesPerTriangle;
     const std::uint64_t fixed = std::min(kFixedBytes, options.memory_limit / 2);
     // A part with the end of the previous one it carries holds at most 1.5 parts (next_carry).
     part = std::max(kMinPartTriangles, (options.memory_limit - fixed) / per * 2 / 3);

@@ -203,6 +203,25 @@ TEST(OutOfCore, QuadsObjectiveIsBoundedByTheInMemoryOptimum) {
   }
 }
 
+// The cost objectives' output does not depend on the threads: the same bytes from one and two.
+TEST(OutOfCore, CostObjectivesDoNotDependOnThreads) {
+  const TempDir dir;
+  const auto meshes = cost_meshes(dir);
+  const std::string& path = meshes.front().first;
+  for (Objective objective : {Objective::quads, Objective::quality}) {
+    std::string bytes[2];
+    for (std::uint32_t threads : {1u, 2u}) {
+      quad_out_of_core(
+          path, dir / "quads.ply",
+          {.costs = {.objective = objective}, .part_triangles = 1000, .threads = threads});
+      std::ifstream in(dir / "quads.ply", std::ios::binary);
+      bytes[threads - 1].assign(std::istreambuf_iterator<char>(in), {});
+    }
+    EXPECT_FALSE(bytes[0].empty());
+    EXPECT_EQ(bytes[0], bytes[1]) << to_string(objective);
+  }
+}
+
 // --objective quality out of core: each part's cheapest maximum and the seams'; on the closed
 // torus every triangle is paired, and the cost is never below the in-memory optimum.
 TEST(OutOfCore, QualityObjectivePairsEachPartsMaximum) {
