@@ -85,6 +85,7 @@ void write_stats_json(const std::string& path, const OutOfCoreArgs& args, const 
     u("band_graph_faces", s.band_graph_faces);
     u("repair_radius", s.repair_radius);
   } else {
+    u("band_faces", s.band_faces);
     u("seam_pairs", s.seam_pairs);
     u("seam_graph_faces", s.seam_graph_faces);
   }

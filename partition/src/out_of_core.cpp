@@ -272,12 +272,11 @@ void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
   stats.cut_seconds = clock.lap();
   const SeamResult seams =
       pair_seams({parts.seam, cut.adjacencies}, options.costs, options.threads);
-  for (const auto& [a, b] : seams.pairs) {
-    partner[a] = b;
-    partner[b] = a;
-  }
+  for (std::size_t i = 0; i < parts.seam.size(); ++i)
+    partner[parts.seam[i].face] = seams.partner[i];
   stats.pairs = count_pairing(partner, stats.triangles).first;
-  stats.seam_pairs = seams.pairs.size();
+  stats.seam_pairs = seams.pairs_across;
+  stats.band_faces = parts.seam.size();
   stats.seam_graph_faces = seams.seam_graph_faces;
   const Cost total = parts.units + seams.objective_change;
   stats.objective_total = double(total) / kDefaultCostScale;

@@ -361,24 +361,24 @@ HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonM
   return mate;
 }
 
-// The own triangles with an open side, with their corners and positions (their duals come with
-// the matching).
-std::vector<SeamFace> seam_of(const PartTriangles& part, const Borders& borders) {
-  std::vector<SeamFace> seam;
-  for (NodeId v = 0; v < part.triangle_count(); ++v) {
-    if (!borders.own_border[v]) continue;
-    SeamFace& face = seam.emplace_back();
-    face.face = part.first_face + v;
-    for (int k = 0; k < 3; ++k) {
-      face.corners[k] = part.corners[3 * std::size_t{v} + k];
-      face.positions[k] = part.corner_positions[3 * std::size_t{v} + k];
-    }
+// The band (band_of) with the corners' positions; partners and duals come with the matching.
+std::vector<SeamFace> seam_of(const PartTriangles& part, const PairableGraph& graph,
+                              const Borders& borders, std::uint32_t radius) {
+  const std::vector<BandFace> band = band_of(part, graph, borders, radius);
+  std::vector<SeamFace> seam(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const std::size_t v = band[i].face - part.first_face;
+    seam[i].face = band[i].face;
+    seam[i].corners = band[i].corners;
+    seam[i].sides = band[i].sides;
+    seam[i].distance = band[i].distance;
+    for (int k = 0; k < 3; ++k) seam[i].positions[k] = part.corner_positions[3 * v + k];
   }
   return seam;
 }
 
 // pair_part with a cost objective: the part alone (no carried triangles), no moves (they would
-// change the cost), its seam instead of a band.
+// change the cost), its band as seam faces.
 PartPairing pair_part_at_cost(const PartTriangles& part, const PartPairingOptions& options) {
   const Stopwatch clock;
   if (part.carried > 0) {
@@ -397,11 +397,11 @@ PartPairing pair_part_at_cost(const PartTriangles& part, const PartPairingOption
   result.inner_structural_cuts =
       graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];
   const Borders borders = find_borders(part, graph, result.open_edges);
-  result.seam = seam_of(part, borders);
+  result.seam = seam_of(part, graph, borders, options.band_radius);
   const HugeVector<NodeId> mate = match_part_at_cost(graph, mesh, options, result);
-  for (SeamFace& face : result.seam) face.paired = mate[face.face - part.first_face] != kNoNode;
   const std::vector<std::uint8_t> held(graph.node_count, 0);
   fill_partners(part, mate, held, result);
+  for (SeamFace& face : result.seam) face.partner = result.partner[face.face - part.first_face];
   result.seconds = clock.seconds();
   return result;
 }

@@ -1,5 +1,5 @@
-// The seam step of the cost objectives (partition.hpp): the triangles the parts left beside a cut
-// paired across it by a minimum-cost matching, and the parts' duals stitched into a lower bound.
+// The seam step of the cost objectives (partition.hpp): the parts' bands and the cut adjacencies
+// paired again by a minimum-cost matching, and the parts' duals stitched into a lower bound.
 
 #include <algorithm>
 #include <cmath>
@@ -37,35 +37,66 @@ struct SeamIndex {
   std::uint32_t find(FaceId face) const {
     const auto it = std::lower_bound(by_face.begin(), by_face.end(), face,
                                      [&](std::uint32_t i, FaceId f) { return faces[i].face < f; });
-    if (it == by_face.end() || faces[*it].face != face) {
+    return it != by_face.end() && faces[*it].face == face ? *it : kAbsent;
+  }
+  std::uint32_t at(FaceId face) const {
+    const std::uint32_t i = find(face);
+    if (i == kAbsent) {
       throw std::invalid_argument("pair_seams: face " + std::to_string(face) +
                                   " of a cut adjacency is no seam face");
     }
-    return *it;
+    return i;
   }
 };
 
-// Each adjacency's two seam faces (the lower face first) and its quad's cost in degrees, or NaN
-// where the pair is refused: the adjacencies as a mesh of two triangles each, so that the cut and
-// the measure are quadrangulate's own (build_pairable_graph with the sharp angle,
-// pairable_edge_quality from the lower face), then the corner threshold.
-struct CrossEdges {
+// The candidate edges, each as two seam faces (the lower face first): the cut adjacencies, then
+// the pairable sides inside a part between two seam faces. O(s log s).
+std::vector<std::array<std::uint32_t, 2>> candidate_edges(
+    const SeamIndex& index, std::span<const CutAdjacency> adjacencies) {
   std::vector<std::array<std::uint32_t, 2>> ends;
-  std::vector<double> degrees;
-};
+  for (const CutAdjacency& a : adjacencies) ends.push_back({index.at(a.first), index.at(a.second)});
+  struct Side {
+    VertexId low, high;
+    std::uint32_t face;
+  };
+  std::vector<Side> sides;
+  for (std::uint32_t i = 0; i < index.faces.size(); ++i) {
+    const SeamFace& f = index.faces[i];
+    for (int k = 0; k < 3; ++k) {
+      if (f.sides[k] != SideState::pairable) continue;
+      const VertexId a = f.corners[k], b = f.corners[(k + 1) % 3];
+      sides.push_back({std::min(a, b), std::max(a, b), i});
+    }
+  }
+  std::sort(sides.begin(), sides.end(), [&](const Side& x, const Side& y) {
+    return x.low != y.low     ? x.low < y.low
+           : x.high != y.high ? x.high < y.high
+                              : index.faces[x.face].face < index.faces[y.face].face;
+  });
+  for (std::size_t i = 0; i + 1 < sides.size(); ++i) {
+    if (sides[i].low == sides[i + 1].low && sides[i].high == sides[i + 1].high) {
+      ends.push_back({sides[i].face, sides[i + 1].face});
+      ++i;
+    }
+  }
+  return ends;
+}
 
-CrossEdges measure(const SeamIndex& index, std::span<const CutAdjacency> adjacencies,
-                   const PartCosts& costs, std::uint32_t threads) {
-  CrossEdges cross;
-  const std::size_t a = adjacencies.size();
-  cross.ends.resize(a);
-  cross.degrees.assign(a, std::nan(""));
+// Each candidate edge's quad cost in degrees, or NaN where the pair is refused: the edges as a
+// mesh of two triangles each, so that the cut and the measure are quadrangulate's own
+// (build_pairable_graph with the sharp angle, pairable_edge_quality from the lower face), then
+// the corner threshold.
+std::vector<double> measure(const SeamIndex& index,
+                            std::span<const std::array<std::uint32_t, 2>> ends,
+                            const PartCosts& costs, std::uint32_t threads) {
+  const std::size_t a = ends.size();
+  std::vector<double> degrees(a, std::nan(""));
   PolygonMesh mesh;
   mesh.positions.resize(4 * a);
   mesh.corners.resize(6 * a);
   for (std::size_t i = 0; i < a; ++i) {
-    const SeamFace& low = index.faces[cross.ends[i][0] = index.find(adjacencies[i].first)];
-    const SeamFace& high = index.faces[cross.ends[i][1] = index.find(adjacencies[i].second)];
+    const SeamFace& low = index.faces[ends[i][0]];
+    const SeamFace& high = index.faces[ends[i][1]];
     const VertexId base = static_cast<VertexId>(4 * i);
     for (int k = 0; k < 3; ++k) {
       mesh.corners[6 * i + k] = base + k;
@@ -82,35 +113,96 @@ CrossEdges measure(const SeamIndex& index, std::span<const CutAdjacency> adjacen
   CutOptions cuts;
   cuts.sharp_angle_degrees = costs.sharp_angle_degrees;
   const PairableGraph graph = build_pairable_graph(mesh, cuts, threads);
-  const HugeVector<double> degrees = pairable_edge_quality(graph, mesh, threads);
+  const HugeVector<double> measured = pairable_edge_quality(graph, mesh, threads);
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    const double d = degrees[e];
-    if (!costs.max_corner_deviation || d <= *costs.max_corner_deviation) {
-      cross.degrees[graph.edge_ends[2 * e] / 2] = d;
+    if (!costs.max_corner_deviation || measured[e] <= *costs.max_corner_deviation) {
+      degrees[graph.edge_ends[2 * e] / 2] = measured[e];
     }
   }
-  return cross;
+  return degrees;
 }
 
-// The stitched duals' loss: each cross edge's constraint in each copy of the doubled graph,
+// The stitched duals' loss: each cut adjacency's constraint in each copy of the doubled graph,
 // violated by the parts' duals, lowers its lower face's node dual by what is left of the
 // violation after the lowerings already made at its two ends.
-std::int64_t dual_lowering(const SeamIndex& index, const CrossEdges& cross,
-                           std::span<const Cost> units) {
+std::int64_t dual_lowering(const SeamIndex& index,
+                           std::span<const std::array<std::uint32_t, 2>> cross,
+                           std::span<const double> degrees, std::span<const Cost> units) {
   std::vector<std::array<std::int64_t, 2>> lowered(index.faces.size(), {0, 0});
   std::int64_t total = 0;
-  for (std::size_t i = 0, j = 0; i < cross.ends.size(); ++i) {
-    if (std::isnan(cross.degrees[i])) continue;
-    const Cost cost = units[j++];
-    const auto [x, y] = cross.ends[i];
+  for (std::size_t i = 0; i < cross.size(); ++i) {
+    if (std::isnan(degrees[i])) continue;
+    const auto [x, y] = cross[i];
     for (int k = 0; k < 2; ++k) {
-      const std::int64_t left = index.faces[x].dual[k] + index.faces[y].dual[k] - 2 * cost -
+      const std::int64_t left = index.faces[x].dual[k] + index.faces[y].dual[k] - 2 * units[i] -
                                 lowered[x][k] - lowered[y][k];
       if (left > 0) {
         lowered[x][k] += left;
         total += left;
       }
     }
+  }
+  return total;
+}
+
+// The seam graph: the seam faces not held (paired outside the seams), the allowed candidate
+// edges between two of them, and each node's current partner node (kAbsent: unpaired).
+struct SeamGraph {
+  std::vector<std::uint32_t> face_of;  // seam face of each node
+  std::vector<std::uint32_t> mate;     // current partner node
+  std::vector<std::array<NodeId, 2>> edges;
+  std::vector<Cost> units;
+  std::vector<std::uint8_t> across;  // the edge is a cut adjacency
+};
+
+SeamGraph seam_graph(const SeamIndex& index, std::span<const std::array<std::uint32_t, 2>> ends,
+                     std::size_t cross, std::span<const double> degrees,
+                     std::span<const Cost> units) {
+  SeamGraph g;
+  std::vector<std::uint32_t> node_of(index.faces.size(), kAbsent);
+  for (std::uint32_t i = 0; i < index.faces.size(); ++i) {
+    const FaceId p = index.faces[i].partner;
+    if (p != kNoFace && index.find(p) == kAbsent) continue;
+    node_of[i] = static_cast<std::uint32_t>(g.face_of.size());
+    g.face_of.push_back(i);
+  }
+  g.mate.assign(g.face_of.size(), kAbsent);
+  for (NodeId v = 0; v < g.face_of.size(); ++v) {
+    const FaceId p = index.faces[g.face_of[v]].partner;
+    if (p != kNoFace) g.mate[v] = node_of[index.find(p)];
+  }
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    const std::uint32_t a = node_of[ends[i][0]], b = node_of[ends[i][1]];
+    if (std::isnan(degrees[i]) || a == kAbsent || b == kAbsent) continue;
+    g.edges.push_back({a, b});
+    g.units.push_back(units[i]);
+    g.across.push_back(i < cross);
+  }
+  return g;
+}
+
+// The current pairs' total in the seam graph (quads: with the price of each unpaired node).
+// Throws std::logic_error for a pair that is no edge of it: the parts paired only allowed edges.
+Cost current_total(const SeamGraph& g, const CsrGraph& graph, std::span<const Cost> units,
+                   Cost price) {
+  Cost total = 0;
+  for (NodeId v = 0; v < graph.node_count(); ++v) {
+    const std::uint32_t w = g.mate[v];
+    if (w == kAbsent) {
+      total += price;
+      continue;
+    }
+    if (w < v) continue;
+    Cost cheapest = -1;
+    for (EdgeId e : graph.incident_edges(v)) {
+      if (graph.other_end(e, v) == w && (cheapest < 0 || units[e] < cheapest)) cheapest = units[e];
+    }
+    if (cheapest < 0) {
+      throw std::logic_error(
+          "internal error: a part paired two seam faces that no allowed edge "
+          "joins");
+    }
+    total += cheapest;
   }
   return total;
 }
@@ -123,36 +215,23 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
     throw std::invalid_argument("pair_seams: Objective::pairs repairs by repair_cuts");
   }
   const SeamIndex index(input.faces);
-  const CrossEdges cross = measure(index, input.adjacencies, costs, threads);
-  std::vector<double> allowed;
-  for (double d : cross.degrees)
-    if (!std::isnan(d)) allowed.push_back(d);
-  const HugeVector<Cost> units = scale_costs(allowed);
+  const std::vector<std::array<std::uint32_t, 2>> ends = candidate_edges(index, input.adjacencies);
+  const std::vector<double> degrees = measure(index, ends, costs, threads);
+  std::vector<double> finite(degrees.size(), 0.0);
+  for (std::size_t i = 0; i < degrees.size(); ++i)
+    if (!std::isnan(degrees[i])) finite[i] = degrees[i];
+  const HugeVector<Cost> units = scale_costs(finite);
+  const std::size_t cross = input.adjacencies.size();
   SeamResult result;
-  if (costs.objective == Objective::quads)
-    result.dual_lowering = dual_lowering(index, cross, units);
-
-  // The seam graph: the cross edges between two faces their parts left unpaired.
-  std::vector<std::uint32_t> node_of(index.faces.size(), kAbsent);
-  std::vector<std::uint32_t> face_of;
-  std::vector<std::array<NodeId, 2>> edges;
-  std::vector<Cost> edge_units;
-  auto node = [&](std::uint32_t i) {
-    if (node_of[i] == kAbsent) {
-      node_of[i] = static_cast<std::uint32_t>(face_of.size());
-      face_of.push_back(i);
-    }
-    return node_of[i];
-  };
-  for (std::size_t i = 0, j = 0; i < cross.ends.size(); ++i) {
-    if (std::isnan(cross.degrees[i])) continue;
-    const Cost cost = units[j++];
-    const auto [x, y] = cross.ends[i];
-    if (index.faces[x].paired || index.faces[y].paired) continue;
-    edges.push_back({node(x), node(y)});
-    edge_units.push_back(cost);
+  if (costs.objective == Objective::quads) {
+    result.dual_lowering = dual_lowering(index, {ends.data(), cross}, degrees, units);
   }
-  const CsrGraph graph = CsrGraph::from_edges(static_cast<std::uint32_t>(face_of.size()), edges);
+  result.partner.resize(index.faces.size());
+  for (std::size_t i = 0; i < index.faces.size(); ++i) result.partner[i] = index.faces[i].partner;
+
+  const SeamGraph g = seam_graph(index, ends, cross, degrees, units);
+  const CsrGraph graph =
+      CsrGraph::from_edges(static_cast<std::uint32_t>(g.face_of.size()), g.edges);
   result.seam_graph_faces = graph.node_count();
   result.seam_graph_edges = graph.edge_count();
   result.certified = true;
@@ -160,13 +239,15 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
     result.seconds = clock.seconds();
     return result;
   }
+  const bool quads = costs.objective == Objective::quads;
+  const Cost price =
+      quads ? static_cast<Cost>(std::llround(costs.triangle_cost * kDefaultCostScale)) : 0;
+  const Cost before = current_total(g, graph, g.units, price);
   Matching matching;
-  if (costs.objective == Objective::quads) {
-    const Cost price = static_cast<Cost>(std::llround(costs.triangle_cost * kDefaultCostScale));
-    MinCostMatchingResult r =
-        min_cost_matching(graph, edge_units, {&price, 1}, {.threads = threads});
+  if (quads) {
+    MinCostMatchingResult r = min_cost_matching(graph, g.units, {&price, 1}, {.threads = threads});
     if (CertificateCheck check =
-            verify_min_cost_matching(graph.node_count(), graph.edge_ends(), edge_units, {&price, 1},
+            verify_min_cost_matching(graph.node_count(), graph.edge_ends(), g.units, {&price, 1},
                                      r.matching, r.total, r.certificate);
         !check.ok()) {
       throw std::logic_error(
@@ -174,12 +255,12 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
           "certificate: " +
           check.problem);
     }
-    result.objective_change = r.total - price * Cost(graph.node_count());
+    result.objective_change = r.total - before;
     matching = std::move(r.matching);
   } else {
-    MinCostMaximumResult r = min_cost_maximum_matching(graph, edge_units, {.threads = threads});
+    MinCostMaximumResult r = min_cost_maximum_matching(graph, g.units, {.threads = threads});
     if (CertificateCheck check = verify_min_cost_maximum_matching(
-            graph.node_count(), graph.edge_ends(), edge_units, r.matching, r.total_cost,
+            graph.node_count(), graph.edge_ends(), g.units, r.matching, r.total_cost,
             r.unmatched_cost, r.certificate);
         !check.ok()) {
       throw std::logic_error(
@@ -187,16 +268,15 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
           "certificate: " +
           check.problem);
     }
-    result.objective_change = r.total_cost;
+    result.objective_change = r.total_cost - before;
     matching = std::move(r.matching);
   }
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    const auto [a, b] = graph.endpoints(e);
-    if (matching.mate_edge[a] != e) continue;
-    const FaceId fa = index.faces[face_of[a]].face, fb = index.faces[face_of[b]].face;
-    result.pairs.push_back({std::min(fa, fb), std::max(fa, fb)});
+  for (NodeId v = 0; v < graph.node_count(); ++v) {
+    const EdgeId e = matching.mate_edge[v];
+    const NodeId w = e == kNoEdge ? kNoNode : graph.other_end(e, v);
+    result.partner[g.face_of[v]] = w == kNoNode ? kNoFace : index.faces[g.face_of[w]].face;
+    result.pairs_across += e != kNoEdge && v < w && g.across[e];
   }
-  std::sort(result.pairs.begin(), result.pairs.end());
   result.seconds = clock.seconds();
   return result;
 }

@@ -198,16 +198,18 @@ def _pair_part(layout: PlyLayout, lo: int, hi: int, augment: str, band_radius: i
     return _Part(lo, F, r["partner"], r["open_edges"], r["band"], figures)
 
 
-def _pair_part_at_cost(layout: PlyLayout, lo: int, hi: int, costs: Dict[str, Any]) -> _Part:
+def _pair_part_at_cost(layout: PlyLayout, lo: int, hi: int, band_radius: int,
+                       costs: Dict[str, Any]) -> _Part:
     """Stage 1 of the cost objectives on a worker: reads faces lo..hi-1 and their corners'
     positions and pairs them by the minimum-cost matching of quadrangulate (pair_part), its
-    certificate checked; keeps its seam (the triangles with an open side) for stage 3."""
+    certificate checked; keeps its band (band_radius steps from its open sides) for stage 3."""
     F = _read_faces(layout, lo, hi)
-    r = _petersen.pair_part(lo, F, "local", 0, 1, positions=_corner_positions(layout, F), **costs)
+    r = _petersen.pair_part(lo, F, "local", band_radius, 1, positions=_corner_positions(layout, F),
+                            **costs)
     figures = {k: r[k] for k in ("pairs", "maximum_certified", "optimality_certified",
                                  "objective_units", "inner_structural_cuts", "seconds")}
     figures["unpaired"] = len(r["unpaired"])
-    figures["seam_faces"] = len(r["seam"]["faces"])
+    figures["band_faces"] = len(r["seam"]["faces"])
     return _Part(lo, F, r["partner"], r["open_edges"], r["seam"], figures)
 
 
@@ -233,49 +235,47 @@ def _cut_figures(cut: Dict[str, Any]) -> Dict[str, Any]:
     return figures
 
 
-def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]], augment: str,
-            first_radius: int) -> Dict[str, Any]:
-    """Stage 3: augmenting paths in the bands and the cut adjacencies (repair_cuts). Checked
-    here: the new partners name each other back. Returns each band face's new partner and, for a
-    partner in the bands, its corners (the quad across a cut needs them)."""
-    band = {k: np.concatenate([b[k] for b in bands]) for k in bands[0]}
-    r = _petersen.repair_cuts(band["faces"], band["corners"], band["sides"], band["distance"],
-                              band["partner"], cut["adjacencies"], augment, first_radius)
-    faces, partner = band["faces"], r["partner"]
+def _checked_partners(faces: np.ndarray, corners: np.ndarray, partner: np.ndarray,
+                      figures: Dict[str, Any], step: str) -> Dict[str, Any]:
+    """The band faces' new partners, checked to name each other back, with each partner's corners
+    where the partner is a band face (a quad across a cut needs them): what the write stage
+    reads of stage 3."""
     order = np.argsort(faces)
     at = np.searchsorted(faces, partner, sorter=order)
     at = order[np.minimum(at, len(faces) - 1)]
     inside = (partner >= 0) & (faces[at] == partner)
     if (partner[at[inside]] != faces[inside]).any():
         bad = np.flatnonzero(inside & (partner[at] != faces))[0]
-        raise RuntimeError(f"verification failed: the repair paired triangle {faces[bad]} with "
+        raise RuntimeError(f"verification failed: the {step} paired triangle {faces[bad]} with "
                            f"{partner[bad]}, which is paired with {partner[at[bad]]}")
-    partner_corners = np.where(inside[:, None], band["corners"][at], -1)
-    figures = {k: v for k, v in r.items() if k != "partner"}
+    partner_corners = np.where(inside[:, None], corners[at], -1)
     return {"faces": faces, "partner": partner, "partner_corners": partner_corners,
             "figures": figures}
 
 
+def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]], augment: str,
+            first_radius: int) -> Dict[str, Any]:
+    """Stage 3: augmenting paths in the bands and the cut adjacencies (repair_cuts), checked by
+    _checked_partners."""
+    band = {k: np.concatenate([b[k] for b in bands]) for k in bands[0]}
+    r = _petersen.repair_cuts(band["faces"], band["corners"], band["sides"], band["distance"],
+                              band["partner"], cut["adjacencies"], augment, first_radius)
+    figures = {k: v for k, v in r.items() if k != "partner"}
+    return _checked_partners(band["faces"], band["corners"], r["partner"], figures, "repair")
+
+
 def _seams(cut: Dict[str, Any], seams: Sequence[Dict[str, np.ndarray]],
            costs: Dict[str, Any]) -> Dict[str, Any]:
-    """Stage 3 of the cost objectives: the triangles the parts left beside a cut paired across it
-    by a minimum-cost matching, and the parts' duals stitched into a lower bound (pair_seams).
-    Returns what _repair returns for the pairs it made: each face's partner and its corners."""
+    """Stage 3 of the cost objectives: the parts' bands and the cut adjacencies paired again by a
+    minimum-cost matching, and the parts' duals stitched into a lower bound (pair_seams); checked
+    by _checked_partners."""
     seam = {k: np.concatenate([s[k] for s in seams]) for k in seams[0]}
     units = sum(f["objective_units"] for f in cut["figures"])
-    r = _petersen.pair_seams(seam["faces"], seam["corners"], seam["positions"], seam["paired"],
-                             seam["dual"], cut["adjacencies"], units, **costs)
-    pairs = r["pairs"]
-    faces = np.concatenate([pairs[:, 0], pairs[:, 1]])
-    partner = np.concatenate([pairs[:, 1], pairs[:, 0]])
-    order = np.argsort(faces)
-    faces, partner = faces[order], partner[order]
-    by_face = np.argsort(seam["faces"])
-    at = by_face[np.searchsorted(seam["faces"], partner, sorter=by_face)] if len(partner) else []
-    figures = {k: v for k, v in r.items() if k != "pairs"}
-    figures["pairs"] = len(pairs)
-    return {"faces": faces, "partner": partner, "partner_corners": seam["corners"][at],
-            "figures": figures}
+    r = _petersen.pair_seams(seam["faces"], seam["corners"], seam["positions"], seam["sides"],
+                             seam["distance"], seam["partner"], seam["dual"], cut["adjacencies"],
+                             units, **costs)
+    figures = {k: v for k, v in r.items() if k != "partner"}
+    return _checked_partners(seam["faces"], seam["corners"], r["partner"], figures, "seam step")
 
 
 def _repair_for(repair: Dict[str, Any], lo: int, hi: int) -> Dict[str, Any]:
@@ -411,11 +411,11 @@ def _pair_and_repair(client, layout, bounds, augment, band_radius, first_radius,
         band_radius *= 4
 
 
-def _pair_and_seam(client, layout, bounds, costs, retries):
+def _pair_and_seam(client, layout, bounds, band_radius, costs, retries):
     """Stages 1 to 3 of the cost objectives: each part alone, then the seams."""
     clock = time.perf_counter()
-    parts = [_submit(client, _pair_part_at_cost, layout, int(lo), int(hi), costs, retries=retries)
-             for lo, hi in zip(bounds[:-1], bounds[1:])]
+    parts = [_submit(client, _pair_part_at_cost, layout, int(lo), int(hi), band_radius, costs,
+                     retries=retries) for lo, hi in zip(bounds[:-1], bounds[1:])]
     cut = _submit(client, _cut, [_submit(client, _open_edges, p, retries=retries)
                                  for p in parts], retries=retries)
     cut_figures = _submit(client, _cut_figures, cut, retries=retries).result()
@@ -459,8 +459,8 @@ def _cost_stats(costs, layout, bounds, cut, seamed, quads, left) -> Dict[str, An
         "duplicate_edges": cut["duplicate_edges"],
         "parts_certified": all(f["optimality_certified"] for f in per_part),
         "unpaired_after_parts": sum(f["unpaired"] for f in per_part),
-        "seam_faces": sum(f["seam_faces"] for f in per_part),
-        "seam_pairs": seamed["pairs"], "seam_graph_faces": seamed["seam_graph_faces"],
+        "band_faces": sum(f["band_faces"] for f in per_part),
+        "seam_pairs": seamed["pairs_across"], "seam_graph_faces": seamed["seam_graph_faces"],
         "part_seconds_max": max(f["seconds"] for f in per_part),
         "seam_matching_seconds": seamed["seconds"],
         "parts_seconds": seamed["parts_seconds"], "seam_seconds": seamed["seam_seconds"],
@@ -557,7 +557,8 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         raise ValueError(f"{in_path}: no faces")
     bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
     if costs["objective"] != "pairs":
-        part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, costs, retries)
+        part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, band_radius,
+                                                         costs, retries)
         lap = time.perf_counter()
         quads, left = _write_output(client, layout, part_futures, bounds, seam, out_path, retries)
         if quads * 2 + left != layout.face_count:

@@ -106,13 +106,18 @@ py::dict seam_dict(const std::vector<SeamFace>& seam) {
   });
   DoubleArray positions({seam.size(), std::size_t{3}, std::size_t{3}});
   double* p = positions.mutable_data();
+  py::array_t<std::uint8_t> sides({seam.size(), std::size_t{3}});
+  std::uint8_t* s = sides.mutable_data();
   for (std::size_t i = 0; i < seam.size(); ++i) {
     for (int c = 0; c < 3; ++c) {
       for (int k = 0; k < 3; ++k) p[9 * i + 3 * c + k] = seam[i].positions[c][k];
+      s[3 * i + c] = static_cast<std::uint8_t>(seam[i].sides[c]);
     }
   }
   d["positions"] = positions;
-  d["paired"] = column(seam, [](const SeamFace& f) { return std::int64_t{f.paired}; });
+  d["sides"] = sides;
+  d["distance"] = column(seam, [](const SeamFace& f) { return std::int64_t{f.distance}; });
+  d["partner"] = column(seam, [](const SeamFace& f) { return id_or_none(f.partner); });
   d["dual"] = rows_array(seam.size(), 2, [&](std::size_t i, std::int64_t* row) {
     row[0] = seam[i].dual[0], row[1] = seam[i].dual[1];
   });
@@ -263,31 +268,33 @@ py::dict repair_cuts_py(const Int64Array& faces, const Int64Array& corners,
 }
 
 // pair_seams on the concatenated seams of all parts and the cut adjacencies, with the sum of the
-// parts' objective_units: the pairs made across the cuts as (k, 2) rows, the whole pairing's
-// total and (objective quads) the stitched lower bound in degrees, and the figures.
+// parts' objective_units: each seam face's partner after the step (-1 for none), the whole
+// pairing's total and (objective quads) the stitched lower bound in degrees, and the figures.
 py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
-                       const DoubleArray& positions, const Int64Array& paired,
+                       const DoubleArray& positions,
+                       const py::array_t<std::uint8_t, py::array::c_style>& sides,
+                       const Int64Array& distance, const Int64Array& partner,
                        const Int64Array& dual, const Int64Array& adjacencies,
                        std::int64_t parts_units, const std::string& objective, double triangle_cost,
                        std::optional<double> max_corner_deviation,
                        std::optional<double> sharp_angle, std::uint32_t threads) {
-  const std::size_t k = static_cast<std::size_t>(faces.size());
-  const std::int64_t* c = rows_of(corners, 3, "seam corners");
+  const std::vector<BandFace> band = band_from(faces, corners, sides, distance);
+  const std::size_t k = band.size();
   const std::int64_t* y = rows_of(dual, 2, "seam dual");
   const std::vector<std::array<double, 3>> at = corner_positions_of(positions, k);
-  if (static_cast<std::size_t>(corners.shape(0)) != k ||
-      static_cast<std::size_t>(paired.size()) != k ||
+  if (static_cast<std::size_t>(partner.size()) != k ||
       static_cast<std::size_t>(dual.shape(0)) != k) {
-    throw py::value_error("seam: faces, corners, positions, paired and dual of different lengths");
+    throw py::value_error("seam: faces, positions, partner and dual of different lengths");
   }
   std::vector<SeamFace> seam(k);
   for (std::size_t i = 0; i < k; ++i) {
-    seam[i].face = id_of(faces.data()[i], "seam faces");
-    for (int j = 0; j < 3; ++j) {
-      seam[i].corners[j] = id_of(c[3 * i + j], "seam corners");
-      seam[i].positions[j] = at[3 * i + j];
-    }
-    seam[i].paired = paired.data()[i] != 0;
+    seam[i].face = band[i].face;
+    seam[i].corners = band[i].corners;
+    seam[i].sides = band[i].sides;
+    seam[i].distance = band[i].distance;
+    for (int j = 0; j < 3; ++j) seam[i].positions[j] = at[3 * i + j];
+    const std::int64_t p = partner.data()[i];
+    seam[i].partner = p < 0 ? kNoFace : id_of(p, "partner");
     seam[i].dual = {y[2 * i], y[2 * i + 1]};
   }
   const std::vector<CutAdjacency> adjacent = records_of<CutAdjacency>(adjacencies, "adjacencies");
@@ -298,16 +305,15 @@ py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
     r = pair_seams({seam, adjacent}, costs, threads);
   }
   py::dict d;
-  d["pairs"] = rows_array(r.pairs.size(), 2, [&](std::size_t i, std::int64_t* row) {
-    row[0] = r.pairs[i][0], row[1] = r.pairs[i][1];
-  });
-  d["objective_total"] = double(parts_units + r.objective_change) / kDefaultCostScale;
+  d["partner"] = column(r.partner, id_or_none);
+  const Cost total = parts_units + r.objective_change;
+  d["objective_total"] = double(total) / kDefaultCostScale;
   if (costs.objective == Objective::quads) {
     d["triangle_cost"] = costs.triangle_cost;
     d["lower_bound"] = lower_bound_degrees(parts_units, r.dual_lowering);
-    d["optimality_certified"] =
-        r.certified && 4 * (parts_units + r.objective_change) == 4 * parts_units - r.dual_lowering;
+    d["optimality_certified"] = r.certified && 4 * total == 4 * parts_units - r.dual_lowering;
   }
+  d["pairs_across"] = r.pairs_across;
   d["seam_graph_faces"] = r.seam_graph_faces;
   d["seam_graph_edges"] = r.seam_graph_edges;
   d["certified"] = r.certified;
@@ -368,8 +374,9 @@ void add_partition(py::module_& m) {
         py::arg("max_corner_deviation") = py::none(), py::arg("sharp_angle") = py::none(),
         py::arg("positions") = py::none());
   m.def("pair_seams", &pair_seams_py, py::arg("faces"), py::arg("corners"), py::arg("positions"),
-        py::arg("paired"), py::arg("dual"), py::arg("adjacencies"), py::arg("parts_units"),
-        py::arg("objective"), py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("sides"), py::arg("distance"), py::arg("partner"), py::arg("dual"),
+        py::arg("adjacencies"), py::arg("parts_units"), py::arg("objective"),
+        py::arg("triangle_cost") = kDefaultTriangleCost,
         py::arg("max_corner_deviation") = py::none(), py::arg("sharp_angle") = py::none(),
         py::arg("threads") = 1);
   m.def("pair_open_edges", &pair_open_edges_py, py::arg("open_edges"));

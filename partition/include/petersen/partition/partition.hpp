@@ -14,10 +14,9 @@
 //
 // With a cost objective (Objective::quads or quality, as quadrangulate's) the part step pairs
 // each part by the same minimum-cost matching, costs and price as quadrangulate, and reports its
-// seam (its triangles with an open side, their positions and its dual there) instead of a band;
-// step 3 is then pair_seams: the triangles the parts left beside a cut pair across it by a second
-// minimum-cost matching, and the parts' duals, stitched across the cuts, bound the whole mesh's
-// optimum from below.
+// band with the corners' positions and its dual there (SeamFace); step 3 is then pair_seams: the
+// bands of all parts and the cut adjacencies are paired again by the same matching, and the
+// parts' duals, stitched across the cuts, bound the whole mesh's optimum from below.
 //
 // Ids are global: FaceId for faces (a part's triangle i is face first_face + i), VertexId for
 // vertices. Every triangle is a face; polygons are not taken (a part names its triangles only).
@@ -84,16 +83,19 @@ struct BandFace {
   std::uint32_t distance = 0;
 };
 
-/// What the cost objectives need of the cuts (see pair_seams): an own triangle of a part with an
-/// open side, its corners and their positions, whether the part paired it, and, for
-/// Objective::quads, the part's dual at its two nodes of the doubled graph (v and its copy v',
-/// see min_cost_matching), each with the values of the odd sets holding the node: an edge across
-/// a cut from here has reduced cost 2·cost − dual[k] − the other end's dual[k] in copy k.
+/// What the cost objectives need of the cuts (see pair_seams): an own triangle of a part within
+/// the band (PartPairingOptions::band_radius steps of an open side), its corners and their
+/// positions, its sides' states and distance (as BandFace's), its partner after the part step,
+/// and, for Objective::quads, the part's dual at its two nodes of the doubled graph (v and its
+/// copy v', see min_cost_matching), each with the values of the odd sets holding the node: an edge
+/// across a cut from here has reduced cost 2·cost − dual[k] − the other end's dual[k] in copy k.
 struct SeamFace {
   FaceId face = kNoFace;
   std::array<VertexId, 3> corners{};
   std::array<std::array<double, 3>, 3> positions{};
-  bool paired = false;
+  std::array<SideState, 3> sides{};
+  std::uint32_t distance = 0;
+  FaceId partner = kNoFace;
   std::array<std::int64_t, 2> dual{};
 };
 
@@ -134,7 +136,7 @@ struct PartPairing {
   std::vector<FaceId> unpaired;      ///< global ids, ascending
   std::vector<OpenEdge> open_edges;  ///< ascending by (low, high, face)
   std::vector<BandFace> band;        ///< ascending by face (Objective::pairs)
-  std::vector<SeamFace> seam;        ///< ascending by face (the cost objectives)
+  std::vector<SeamFace> seam;        ///< the cost objectives' band, ascending by face
   /// The cost objectives: the part's certified optimum in the solver's units (scale_costs):
   /// quads the matched costs plus the price of every triangle left, quality the matched costs.
   Cost objective_units = 0;
@@ -229,26 +231,31 @@ struct SeamInput {
 };
 
 struct SeamResult {
-  /// The pairs made across the cuts (first < second), ascending.
-  std::vector<std::array<FaceId, 2>> pairs;
-  /// The seam matching's total minus the prices of the triangles it started from, in the
-  /// solver's units: added to the parts' objective_units, the whole pairing's total.
+  /// Each seam face's partner after the seam step (same order as SeamInput::faces).
+  std::vector<FaceId> partner;
+  /// The seam graph's total after the step minus before it, in the solver's units: added to the
+  /// parts' objective_units, the whole pairing's total. Never positive for Objective::quads (the
+  /// parts' pairs in the seam graph are one of its matchings).
   Cost objective_change = 0;
   /// Objective::quads: what stitching the parts' duals across the cuts lost, in the certificate's
   /// units (twice the doubled graph's costs): Σ parts' objective_units − dual_lowering / 4 is a
-  /// lower bound on the whole mesh's optimum (lower_bound_units).
+  /// lower bound on the whole mesh's optimum (lower_bound_degrees).
   std::int64_t dual_lowering = 0;
   std::uint64_t seam_graph_faces = 0, seam_graph_edges = 0;
+  std::uint64_t pairs_across = 0;  ///< pairs of the seam graph across a cut after the step
   /// The seam graph's matching passed its certificate check (of the objective's matching).
   bool certified = false;
   double seconds = 0;
 };
 
-/// Pairs across the cuts with a cost objective: the seam graph holds the seam faces the parts
-/// left unpaired and the cut adjacencies between two of them that are pairable by the options
+/// Pairs across the cuts with a cost objective. The seam graph holds the seam faces whose
+/// partners are seam faces too or none (a face paired outside the seams is held), with their
+/// pairable sides inside a part and the cut adjacencies as edges, where the options allow them
 /// (the sharp angle, the corner threshold), each costing its quad as quadrangulate measures it
-/// (pairable_edge_quality, from the lower face); Objective::quads pairs it by min_cost_matching
-/// at the triangle price, quality by min_cost_maximum_matching; each certificate is checked.
+/// (pairable_edge_quality, from the lower face). Its matching is solved again from scratch:
+/// Objective::quads by min_cost_matching at the triangle price, quality by
+/// min_cost_maximum_matching; each certificate is checked. The parts' pairs there are one of its
+/// matchings, so quads' total never rises and quality's pairs never fall.
 /// For Objective::quads it also stitches the parts' duals: every cut adjacency whose reduced cost
 /// (SeamFace::dual) is negative in a copy lowers its ends' node duals by that much, which keeps
 /// every other constraint of the whole mesh's doubled graph (a node's dual is free, lowering it
