@@ -145,8 +145,8 @@ std::int64_t dual_lowering(const SeamIndex& index,
   return total;
 }
 
-// The seam graph: the seam faces not held (paired outside the seams), the allowed candidate
-// edges between two of them, and each node's current partner node (kAbsent: unpaired).
+// The seam graph: the seam faces near a cut and not held (paired outside the seams), the allowed
+// candidate edges between two of them, and each node's current partner node (kAbsent: unpaired).
 struct SeamGraph {
   std::vector<std::uint32_t> face_of;  // seam face of each node
   std::vector<std::uint32_t> mate;     // current partner node
@@ -155,14 +155,67 @@ struct SeamGraph {
   std::vector<std::uint8_t> across;  // the edge is a cut adjacency
 };
 
+// The seam faces within the bands' depth of a cut adjacency, in steps across the allowed edges
+// (the bands also reach around the true boundary, whose faces no cut concerns), with the partners
+// of those reached, so that a pair is in or out whole: a breadth-first search from the
+// adjacencies' ends. O(s + e).
+std::vector<std::uint8_t> near_cuts(const SeamIndex& index,
+                                    std::span<const std::array<std::uint32_t, 2>> ends,
+                                    std::size_t cross, std::span<const double> degrees) {
+  const std::size_t s = index.faces.size();
+  std::uint32_t depth = 0;
+  for (const SeamFace& f : index.faces) depth = std::max(depth, f.distance);
+  std::vector<std::array<std::uint32_t, 3>> next(s, {kAbsent, kAbsent, kAbsent});
+  auto link = [&](std::uint32_t a, std::uint32_t b) {
+    for (std::uint32_t& slot : next[a]) {
+      if (slot == kAbsent) {
+        slot = b;
+        return;
+      }
+    }
+  };
+  for (std::size_t i = cross; i < ends.size(); ++i) {
+    if (std::isnan(degrees[i])) continue;
+    link(ends[i][0], ends[i][1]);
+    link(ends[i][1], ends[i][0]);
+  }
+  std::vector<std::uint32_t> distance(s, kAbsent), queue;
+  for (std::size_t i = 0; i < cross; ++i) {
+    for (std::uint32_t f : ends[i]) {
+      if (distance[f] == kAbsent) {
+        distance[f] = 0;
+        queue.push_back(f);
+      }
+    }
+  }
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::uint32_t f = queue[head];
+    if (distance[f] == depth) continue;
+    for (std::uint32_t g : next[f]) {
+      if (g == kAbsent || distance[g] != kAbsent) continue;
+      distance[g] = distance[f] + 1;
+      queue.push_back(g);
+    }
+  }
+  std::vector<std::uint8_t> near(s, 0);
+  for (std::uint32_t f : queue) {
+    near[f] = 1;
+    const std::uint32_t p =
+        index.faces[f].partner == kNoFace ? kAbsent : index.find(index.faces[f].partner);
+    if (p != kAbsent) near[p] = 1;
+  }
+  return near;
+}
+
 SeamGraph seam_graph(const SeamIndex& index, std::span<const std::array<std::uint32_t, 2>> ends,
                      std::size_t cross, std::span<const double> degrees,
                      std::span<const Cost> units) {
   SeamGraph g;
+  const std::vector<std::uint8_t> near = near_cuts(index, ends, cross, degrees);
   std::vector<std::uint32_t> node_of(index.faces.size(), kAbsent);
   for (std::uint32_t i = 0; i < index.faces.size(); ++i) {
     const FaceId p = index.faces[i].partner;
-    if (p != kNoFace && index.find(p) == kAbsent) continue;
+    if (!near[i] || (p != kNoFace && index.find(p) == kAbsent)) continue;
     node_of[i] = static_cast<std::uint32_t>(g.face_of.size());
     g.face_of.push_back(i);
   }

@@ -248,8 +248,9 @@ struct SeamResult {
   double seconds = 0;
 };
 
-/// Pairs across the cuts with a cost objective. The seam graph holds the seam faces whose
-/// partners are seam faces too or none (a face paired outside the seams is held), with their
+/// Pairs across the cuts with a cost objective. The seam graph holds the seam faces within the
+/// bands' depth of a cut adjacency (across allowed edges; with their partners) whose partners are
+/// seam faces too or none (a face paired outside the seams is held), with their
 /// pairable sides inside a part and the cut adjacencies as edges, where the options allow them
 /// (the sharp angle, the corner threshold), each costing its quad as quadrangulate measures it
 /// (pairable_edge_quality, from the lower face). Its matching is solved again from scratch:
