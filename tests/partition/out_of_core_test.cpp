@@ -19,6 +19,7 @@
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "quad_mesh_check.hpp"
+#include "shared_meshes.hpp"
 
 namespace petersen {
 namespace {
@@ -245,6 +246,38 @@ TEST(OutOfCore, QualityObjectivePairsEachPartsMaximum) {
       EXPECT_TRUE(stats.perfect_certified);
       EXPECT_LE(memory.stats.objective_total, stats.objective_total + 1e-9);
     }
+  }
+}
+
+// The shared meshes of triangles in five parts or more: a valid pairing whose stitched lower bound
+// is at most the in-memory certified optimum, which is at most its total.
+TEST(OutOfCore, SharedMeshesQuadsObjectiveIsBoundedByTheInMemoryOptimum) {
+  const auto shared = testing::shared_mesh_dir();
+  if (!shared) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  const TempDir dir;
+  for (const char* file : {"bunny.off.gz", "3holes.off.gz", "fandisk.obj.gz", "fertility.off.gz",
+                           "armadillo.obj.gz", "rocker-arm.obj.gz"}) {
+    PolygonMesh source = read_mesh(*shared + "/" + file);
+    if (!source.all_triangles()) continue;
+    source.attributes = {};
+    const PolygonMesh mesh = write_mesh_ply(source, dir / "mesh.ply");
+    QuadOptions options;
+    options.sources = false;
+    const QuadResult memory = quadrangulate(mesh, options);
+    ASSERT_TRUE(memory.stats.optimality_certified) << file;
+    const OutOfCoreStats stats = quad_out_of_core(
+        dir / "mesh.ply", dir / "quads.ply",
+        {.costs = {.objective = Objective::quads}, .part_triangles = mesh.face_count() / 5 + 1});
+    EXPECT_GE(stats.parts, 5u) << file;
+    const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+    const PolygonMesh out = read_mesh(dir / "quads.ply");
+    EXPECT_EQ(checked_quads(corners, out, mesh.positions.size()), stats.pairs) << file;
+    // Each quad's cost is rounded to the solver's units (scale_costs): 2^-17 degrees at most.
+    EXPECT_NEAR(total_of(out, kDefaultTriangleCost), stats.objective_total,
+                1e-5 * double(stats.pairs) + 1e-6)
+        << file;
+    EXPECT_LE(stats.lower_bound, memory.stats.objective_total + 1e-9) << file;
+    EXPECT_LE(memory.stats.objective_total, stats.objective_total + 1e-9) << file;
   }
 }
 
