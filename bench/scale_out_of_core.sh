@@ -7,7 +7,10 @@
 # disk (input, output, the temporary pairing) and the pairing's figures from --stats-json. The big
 # files go to WORK (default /tmp/petersen-scale) and are deleted after each size; keep WORK out
 # of the repository. PARTS_SWEEP=1 also runs 10^8 with 2 to 32 parts (--part-triangles), for
-# how the repair's cost grows with the number of parts.
+# how the repair's cost grows with the number of parts. OBJECTIVES (default pairs) names the
+# objectives run, each in memory and out of core: "quads quality" measures the cost objectives,
+# whose rows add the out-of-core total's gap to the in-memory certified optimum. KIND=open-grid
+# makes an open grid with holes (one per 5,000 triangles) instead of the closed plate.
 # Expects a Release build: scripts/build build/release (or cmake --build build).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,24 +29,45 @@ measure() {  # label, then the command
   sys=$(grep 'System time' "$work/run.time" | awk '{print $NF}')
   rss=$(grep 'Maximum resident' "$work/run.time" | awk '{printf "%.2f", $NF / 1048576}')
   local stats=""
-  [ -f "$work/stats.json" ] && stats=$(tr -d '\n' <"$work/stats.json") && rm -f "$work/stats.json"
+  [ -f "$work/stats.json" ] && stats=$(tr -d '\n' <"$work/stats.json") &&
+    mv "$work/stats.json" "$work/last.json"
   echo "| $label | $wall | $user | $sys | $rss GiB | $stats |"
 }
 
 echo "| run | wall | user s | sys s | peak RSS | stats |"
 echo "|---|---:|---:|---:|---:|---|"
+# A value of the last --stats-json, or nothing.
+value() { sed -n "s/.*\"$1\": \([-0-9.e+]*\).*/\1/p" "$work/last.json"; }
+
 for n in "$@"; do
-  in="$work/plate-$n.ply"
-  "$petersen" generate --kind streamed-plate --triangles "$n" "$in" >/dev/null
+  in="$work/${KIND:-plate}-$n.ply"
+  if [ "${KIND:-plate}" = open-grid ]; then
+    ny=$(awk -v n="$n" 'BEGIN { printf "%d", sqrt(n / 2.5) }')
+    "$petersen" generate --kind open-grid --nx $((ny * 5 / 4)) --ny "$ny" --holes $((n / 5000)) \
+      "$in" >/dev/null
+  else
+    "$petersen" generate --kind streamed-plate --triangles "$n" "$in" >/dev/null
+  fi
   in_bytes=$(stat -c %s "$in")
   limit=${MEMORY_LIMIT:-$([ "$n" -ge 1000000000 ] && echo 10G || echo 3G)}
   available_kib=$(awk '/MemAvailable/ {print $2}' /proc/meminfo)
-  if [ $((n * 60 / 1024)) -lt "$available_kib" ]; then
-    measure "$n in memory" "$petersen" quad "$in" "$work/mem.ply" --stats-json "$work/stats.json"
-    rm -f "$work/mem.ply"
-  fi
-  measure "$n out of core, $limit" "$petersen" quad "$in" "$work/out.ply" --memory-limit "$limit" \
-    --stats-json "$work/stats.json"
+  for objective in ${OBJECTIVES:-pairs}; do
+    optimum=""
+    if [ $((n * 60 / 1024)) -lt "$available_kib" ]; then
+      measure "$n $objective in memory" "$petersen" quad "$in" "$work/mem.ply" \
+        --objective "$objective" --stats-json "$work/stats.json"
+      optimum=$(value objective_total)
+      rm -f "$work/mem.ply"
+    fi
+    measure "$n $objective out of core, $limit" "$petersen" quad "$in" "$work/out.ply" \
+      --memory-limit "$limit" --objective "$objective" --stats-json "$work/stats.json"
+    if [ -n "$optimum" ] && [ "$objective" != pairs ]; then
+      awk -v o="$optimum" -v t="$(value objective_total)" -v l="$(value lower_bound)" 'BEGIN {
+        printf "|   in-memory optimum %.3f; out of core %.3f (%+.4f%%)", o, t, 100 * (t - o) / o
+        if (l != "") printf ", lower bound %.3f (%+.4f%%)", l, 100 * (l - o) / o
+        print " | | | | | |" }'
+    fi
+  done
   echo "|   bytes on disk: input $in_bytes, output $(stat -c %s "$work/out.ply"), pairing $((n * 4)) | | | | | |"
   # The independent check of the output against the input, where both fit in memory (about 160
   # bytes a triangle): CHECK, default the tests' petersen_check_quads beside the tool's build.
@@ -54,6 +78,7 @@ for n in "$@"; do
   if [ "${PARTS_SWEEP:-0}" = 1 ] && [ "$n" -le 100000000 ]; then
     for parts in 2 4 8 16 32; do
       measure "$n in $parts parts" "$petersen" quad "$in" "$work/out.ply" --memory-limit 64G \
+        --objective pairs \
         --part-triangles $(((n + parts - 1) / parts)) --stats-json "$work/stats.json"
       rm -f "$work/out.ply"
     done

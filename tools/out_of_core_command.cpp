@@ -1,6 +1,7 @@
 #include "out_of_core_command.hpp"
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,8 +19,12 @@ namespace petersen::cli {
 
 namespace {
 
-// What `petersen quad` holds per triangle of a closed mesh at its peak (bench/RESULTS.md, "Scale").
-constexpr double kInMemoryBytesPerTriangle = 55;
+// What `petersen quad` holds per triangle at its peak, by objective (bench/RESULTS.md, "Scale", and
+// docs/distributed.md): pairs on a closed mesh; the minimum-cost matching's doubled graph for
+// quads, and for quality on an open mesh also the maximum matching that sizes its price.
+double in_memory_bytes_per_triangle(Objective objective) {
+  return objective == Objective::pairs ? 55 : objective == Objective::quads ? 600 : 800;
+}
 // A binary PLY of a closed triangle mesh: 13 bytes per face and 12 per vertex, half a vertex per
 // face.
 constexpr double kPlyBytesPerTriangle = 19;
@@ -36,28 +41,101 @@ std::optional<std::uint64_t> available_memory() {
   return std::nullopt;
 }
 
-void write_stats_json(const std::string& path, const OutOfCoreStats& s) {
-  cli::write_printed(path, [&](std::FILE* file) {
-    std::fprintf(file,
-                 "{\"mode\": \"out_of_core\", \"vertices\": %llu, \"triangles\": %llu, \"parts\": "
-                 "%llu, \"part_triangles\": %llu, \"pairs\": %llu, \"triangles_left\": %llu, "
-                 "\"unpaired_after_parts\": %llu, \"repaired\": %llu, \"cut_adjacencies\": %llu, "
-                 "\"band_faces\": %llu, \"band_graph_faces\": %llu, \"repair_radius\": %u, "
-                 "\"closed\": %s, \"perfect_certified\": %s, \"parts_certified\": %s, "
-                 "\"temp_bytes\": %llu, \"read_pair_seconds\": %.3f, "
-                 "\"cut_seconds\": %.3f, \"repair_seconds\": %.3f, \"write_seconds\": %.3f, "
-                 "\"total_seconds\": %.3f}\n",
-                 (unsigned long long)s.vertices, (unsigned long long)s.triangles,
-                 (unsigned long long)s.parts, (unsigned long long)s.part_triangles,
-                 (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
-                 (unsigned long long)s.unpaired_after_parts, (unsigned long long)s.repaired,
-                 (unsigned long long)s.cut_adjacencies, (unsigned long long)s.band_faces,
-                 (unsigned long long)s.band_graph_faces, s.repair_radius,
-                 s.closed ? "true" : "false", s.perfect_certified ? "true" : "false",
-                 s.parts_certified ? "true" : "false", (unsigned long long)s.temp_bytes,
-                 s.read_pair_seconds, s.cut_seconds, s.repair_seconds, s.write_seconds,
-                 s.total_seconds);
-  });
+// The gap between the total and the lower bound, absolute and relative to the total (0 when both
+// are 0).
+std::pair<double, double> gap_of(const OutOfCoreStats& s) {
+  const double gap = std::max(0.0, s.objective_total - s.lower_bound);
+  return {gap, s.objective_total > 0 ? gap / s.objective_total : 0.0};
+}
+
+// The figures as one JSON object: the keys of the in-memory --stats-json where the meaning is the
+// same (objective, algorithm, triangle_cost, vertices, triangles, pairs, triangles_left,
+// maximum_certified, objective_total, optimality_certified, total_seconds), and the parts' own.
+void write_stats_json(const std::string& path, const OutOfCoreArgs& args, const OutOfCoreStats& s) {
+  const Objective objective = args.costs.objective;
+  std::string json = "{\"mode\": \"out_of_core\", \"objective\": " +
+                     json_string(std::string(to_string(objective))) + ", \"algorithm\": " +
+                     json_string(objective == Objective::pairs ? "auto" : "min-cost");
+  auto add = [&](const char* key, const std::string& value) {
+    json += std::string(", \"") + key + "\": " + value;
+  };
+  auto u = [&](const char* key, std::uint64_t value) { add(key, std::to_string(value)); };
+  auto b = [&](const char* key, bool value) { add(key, value ? "true" : "false"); };
+  auto d = [&](const char* key, double value, const char* format = "%.3f") {
+    char text[64];
+    std::snprintf(text, sizeof text, format, value);
+    add(key, text);
+  };
+  if (objective == Objective::quads) d("triangle_cost", args.costs.triangle_cost, "%.17g");
+  if (args.costs.max_corner_deviation) {
+    d("max_corner_deviation", *args.costs.max_corner_deviation, "%.17g");
+  }
+  if (args.costs.sharp_angle_degrees) d("sharp_angle", *args.costs.sharp_angle_degrees, "%.17g");
+  u("vertices", s.vertices);
+  u("triangles", s.triangles);
+  u("parts", s.parts);
+  u("part_triangles", s.part_triangles);
+  u("pairs", s.pairs);
+  u("triangles_left", s.triangles_left);
+  u("unpaired_after_parts", s.unpaired_after_parts);
+  u("cut_adjacencies", s.cut_adjacencies);
+  if (objective == Objective::pairs) {
+    u("repaired", s.repaired);
+    u("band_faces", s.band_faces);
+    u("band_graph_faces", s.band_graph_faces);
+    u("repair_radius", s.repair_radius);
+  } else {
+    u("band_faces", s.band_faces);
+    u("seam_pairs", s.seam_pairs);
+    u("seam_graph_faces", s.seam_graph_faces);
+  }
+  b("closed", s.closed);
+  b("perfect_certified", s.perfect_certified);
+  b("maximum_certified", s.perfect_certified);
+  if (objective == Objective::pairs) {
+    b("parts_certified", s.parts_certified);
+  } else {
+    d("objective_total", s.objective_total, "%.17g");
+    b("costs_certified", s.costs_certified);
+    if (s.lower_bound_valid) {
+      const auto [gap, relative] = gap_of(s);
+      d("lower_bound", s.lower_bound, "%.17g");
+      d("gap", gap, "%.17g");
+      d("gap_relative", relative, "%.17g");
+    }
+    b("optimality_certified", s.optimality_certified);
+  }
+  u("temp_bytes", s.temp_bytes);
+  d("read_pair_seconds", s.read_pair_seconds);
+  d("cut_seconds", s.cut_seconds);
+  d(objective == Objective::pairs ? "repair_seconds" : "seam_seconds", s.repair_seconds);
+  d("write_seconds", s.write_seconds);
+  d("total_seconds", s.total_seconds);
+  json += "}\n";
+  cli::write_printed(path, [&](std::FILE* file) { std::fputs(json.c_str(), file); });
+}
+
+// What the cost objectives' summary says they proved.
+void print_costs(const OutOfCoreStats& s, Objective objective) {
+  std::printf(
+      "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across the "
+      "cuts: %llu; seam graph %llu faces)\n",
+      (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
+      (unsigned long long)s.unpaired_after_parts, (unsigned long long)(2 * s.seam_pairs),
+      (unsigned long long)s.seam_graph_faces);
+  if (objective == Objective::quads) {
+    const auto [gap, relative] = gap_of(s);
+    std::printf("objective quads: total %.6f, lower bound %.6f, gap %.6f (%.4f%%): %s\n",
+                s.objective_total, s.lower_bound, gap, 100 * relative,
+                s.optimality_certified ? "optimum certified" : "optimal within gap");
+  } else {
+    std::printf("objective quality: total %.6f; maximum per part, cost not certified\n",
+                s.objective_total);
+  }
+  std::printf("certified: %s\n",
+              s.perfect_certified
+                  ? "perfect (closed mesh, every triangle paired, every pair checked)"
+                  : "every pair checked; each part's and the seams' matching by its certificate");
 }
 
 }  // namespace
@@ -87,7 +165,8 @@ std::uint64_t parse_memory_size(const std::string& text) {
 }
 
 std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
-                                               const std::string& memory_limit) {
+                                               const std::string& memory_limit,
+                                               Objective objective) {
   if (!memory_limit.empty()) {
     if (!ends_with_nocase(input, ".ply")) {
       throw CLI::ValidationError(
@@ -102,13 +181,14 @@ std::optional<std::uint64_t> out_of_core_limit(const std::string& input,
   const std::uintmax_t bytes = std::filesystem::file_size(input, error);
   if (error || !ends_with_nocase(input, ".ply")) return std::nullopt;
   const std::optional<std::uint64_t> available = available_memory();
-  const double needed = double(bytes) / kPlyBytesPerTriangle * kInMemoryBytesPerTriangle;
+  const double needed =
+      double(bytes) / kPlyBytesPerTriangle * in_memory_bytes_per_triangle(objective);
   if (!available || needed <= double(*available)) return std::nullopt;
   std::fprintf(stderr,
-               "petersen: %s needs about %.1f GB in memory, %.1f GB are available: converting out "
-               "of core with --memory-limit %.1fG\n",
-               input.c_str(), needed / 1e9, double(*available) / 1e9,
-               double(*available / 2) / double(1u << 30));
+               "petersen: %s needs about %.1f GB in memory for --objective %s, %.1f GB are "
+               "available: converting out of core with --memory-limit %.1fG\n",
+               input.c_str(), needed / 1e9, std::string(to_string(objective)).c_str(),
+               double(*available) / 1e9, double(*available / 2) / double(1u << 30));
   return *available / 2;
 }
 
@@ -125,31 +205,38 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
   if (pool == nullptr || std::string_view(pool) != "off")
     huge_pages::enable_pool(args.memory_limit);
   const OutOfCoreStats s = quad_out_of_core(args.input, args.output,
-                                            {.memory_limit = args.memory_limit,
+                                            {.costs = args.costs,
+                                             .memory_limit = args.memory_limit,
                                              .part_triangles = args.part_triangles,
                                              .augment = *augment,
                                              .threads = args.threads});
-  std::printf("%s: %llu triangles in %llu part%s of %llu, out of core\n", args.input.c_str(),
-              (unsigned long long)s.triangles, (unsigned long long)s.parts, s.parts == 1 ? "" : "s",
-              (unsigned long long)s.part_triangles);
+  std::printf("%s: %llu triangles in %llu part%s of %llu, out of core, objective %s\n",
+              args.input.c_str(), (unsigned long long)s.triangles, (unsigned long long)s.parts,
+              s.parts == 1 ? "" : "s", (unsigned long long)s.part_triangles,
+              std::string(to_string(args.costs.objective)).c_str());
+  if (args.costs.objective != Objective::pairs) {
+    print_costs(s, args.costs.objective);
+  } else {
+    std::printf(
+        "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "
+        "the cuts: %llu; band graph %llu faces, radius %u)\n",
+        (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
+        (unsigned long long)s.unpaired_after_parts, (unsigned long long)(2 * s.repaired),
+        (unsigned long long)s.band_graph_faces, s.repair_radius);
+    std::printf(
+        "certified: %s\n",
+        s.perfect_certified ? "perfect (closed mesh, every triangle paired, every pair checked)"
+        : s.parts_certified ? "every pair checked; each part's and the band's pairing maximum"
+                            : "every pair checked");
+  }
   std::printf(
-      "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "
-      "the cuts: %llu; band graph %llu faces, radius %u)\n",
-      (unsigned long long)s.pairs, (unsigned long long)s.triangles_left,
-      (unsigned long long)s.unpaired_after_parts, (unsigned long long)(2 * s.repaired),
-      (unsigned long long)s.band_graph_faces, s.repair_radius);
-  std::printf("certified: %s\n",
-              s.perfect_certified
-                  ? "perfect (closed mesh, every triangle paired, every pair checked)"
-              : s.parts_certified ? "every pair checked; each part's and the band's pairing maximum"
-                                  : "every pair checked");
-  std::printf(
-      "time: %.2f s (read and pair %.2f, cut %.2f, repair %.2f, write %.2f); temporary "
-      "files %.2f GB\n",
-      s.total_seconds, s.read_pair_seconds, s.cut_seconds, s.repair_seconds, s.write_seconds,
-      double(s.temp_bytes) / 1e9);
+      "time: %.2f s (read and pair %.2f, cut %.2f, %s %.2f, write %.2f); temporary files "
+      "%.2f GB\n",
+      s.total_seconds, s.read_pair_seconds, s.cut_seconds,
+      args.costs.objective == Objective::pairs ? "repair" : "seams", s.repair_seconds,
+      s.write_seconds, double(s.temp_bytes) / 1e9);
   std::printf("%s written\n", args.output.c_str());
-  if (!args.stats_json.empty()) write_stats_json(args.stats_json, s);
+  if (!args.stats_json.empty()) write_stats_json(args.stats_json, args, s);
   return 0;
 }
 

@@ -122,42 +122,70 @@ std::vector<std::string> given_flags(const CLI::App& command) {
   return names;
 }
 
-// The out-of-core conversion pairs by the default algorithm and writes the mesh and its stats:
-// any other flag would be ignored there, so it is refused.
-// The out-of-core conversion pairs the maximum, part by part (--objective pairs): the cost
-// objectives need the whole pairable graph at once. Without --objective it says so in one line.
-void refuse_out_of_core_flags(const QuadArgs& args) {
-  std::string refused;
-  bool objective_given = false;
+// Why the out-of-core conversion does not take a flag of `petersen quad`: each part is paired
+// from its own faces and positions, so what needs the whole mesh (or its attributes) at once is
+// refused rather than ignored.
+std::string out_of_core_refusal(const std::string& flag, Objective objective) {
+  const bool costs = objective != Objective::pairs;
+  if (flag == "--triangle-cost" && objective != Objective::quads) {
+    return "prices the triangles --objective quads leaves";
+  }
+  if ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && !costs) {
+    return "--objective pairs pairs the maximum out of core without measuring the quads: give "
+           "--objective quads or quality with it";
+  }
+  if (flag == "--augment" && costs) {
+    return "chooses the augmenting paths of --objective pairs; the cost objectives pair by the "
+           "minimum-cost matching";
+  }
+  if (flag == "--algorithm" || flag == "--seed") {
+    return "each part is paired by the maximum matching (--objective pairs) or the minimum-cost "
+           "matching, whatever the algorithm";
+  }
+  if (flag == "--flow-weight") return "the cross field of the edge flow needs the whole mesh";
+  if (flag == "--all-quad" || flag == "--keep-polygons") {
+    return "splitting the triangles left into quads needs the whole mesh in memory";
+  }
+  if (flag == "--keep-edges" || flag == "--cross" || flag == "--strict" ||
+      flag == "--drop-duplicate-faces") {
+    return "the parts are read as a binary PLY of triangles without attributes or edge lists";
+  }
+  if (flag.starts_with("--render") || flag == "--view") return "drawing needs the whole mesh";
+  return "it needs the whole mesh in memory";
+}
+
+// The flags the out-of-core conversion takes for this objective; any other is refused before any
+// work, naming the flag and why.
+void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
+  const bool costs = objective != Objective::pairs;
   for (const std::string& flag : args.given) {
-    if (flag == "--objective" && args.objective == "pairs") objective_given = true;
-    if (flag != "--memory-limit" && flag != "--part-triangles" && flag != "--augment" &&
-        flag != "--threads" && flag != "--stats-json" &&
-        !(flag == "--objective" && objective_given)) {
-      refused += (refused.empty() ? "" : ", ") + flag;
+    const bool taken = flag == "--memory-limit" || flag == "--part-triangles" ||
+                       flag == "--threads" || flag == "--stats-json" || flag == "--objective" ||
+                       (flag == "--augment" && !costs) ||
+                       (flag == "--triangle-cost" && objective == Objective::quads) ||
+                       ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
+    if (!taken) {
+      throw CLI::ValidationError(flag,
+                                 "not taken by the out-of-core conversion (--memory-limit, "
+                                 "or an input too large for memory): " +
+                                     out_of_core_refusal(flag, objective));
     }
-  }
-  if (!refused.empty()) {
-    throw CLI::ValidationError("--memory-limit",
-                               "the out-of-core conversion takes --part-triangles, --augment, "
-                               "--threads, --stats-json and --objective pairs only, not " +
-                                   refused);
-  }
-  if (!objective_given) {
-    std::fputs(
-        "petersen: out of core: pairing the maximum, part by part (--objective pairs); the "
-        "default objective, quads, needs the whole mesh in memory\n",
-        stderr);
   }
 }
 
 int quad(const QuadArgs& args) {
-  if (const auto limit = out_of_core_limit(args.input, args.memory_limit)) {
-    refuse_out_of_core_flags(args);
+  const auto objective = parse_objective(args.objective);
+  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  if (const auto limit = out_of_core_limit(args.input, args.memory_limit, *objective)) {
+    refuse_out_of_core_flags(args, *objective);
     return quad_out_of_core_command({.input = args.input,
                                      .output = args.output,
                                      .augment = args.augment,
                                      .stats_json = args.stats_json,
+                                     .costs = {.objective = *objective,
+                                               .triangle_cost = args.triangle_cost,
+                                               .max_corner_deviation = args.max_corner_deviation,
+                                               .sharp_angle_degrees = args.sharp_angle},
                                      .memory_limit = *limit,
                                      .part_triangles = args.part_triangles,
                                      .threads = args.threads});
@@ -171,8 +199,6 @@ int quad(const QuadArgs& args) {
   if (!algorithm) throw CLI::ValidationError("--algorithm", "unknown algorithm " + args.algorithm);
   const auto augment = parse_augment(args.augment);
   if (!augment) throw CLI::ValidationError("--augment", "unknown augmentation " + args.augment);
-  const auto objective = parse_objective(args.objective);
-  if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
   if (*objective != Objective::pairs && *algorithm != PairingAlgorithm{Algorithm::automatic}) {
     throw CLI::ValidationError(
         "--algorithm", "chooses how --objective pairs pairs, and --objective " + args.objective +

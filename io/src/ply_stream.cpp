@@ -7,7 +7,9 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <bit>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
 #include "petersen/io/file_error.hpp"
@@ -53,6 +55,29 @@ std::size_t check_layout(const ply::Header& header, const std::string& path) {
   return bytes;
 }
 
+// A scalar of the file as a double: every PLY type converts exactly.
+double scalar_at(const char* p, ScalarType type) {
+  switch (type) {
+    case ScalarType::int8:
+      return double(std::int8_t(p[0]));
+    case ScalarType::uint8:
+      return double(std::uint8_t(p[0]));
+    case ScalarType::int16:
+      return double(std::int16_t(read_little(p, 2)));
+    case ScalarType::uint16:
+      return double(read_little(p, 2));
+    case ScalarType::int32:
+      return double(std::int32_t(read_little(p, 4)));
+    case ScalarType::uint32:
+      return double(read_little(p, 4));
+    case ScalarType::float32:
+      return double(std::bit_cast<float>(std::uint32_t(read_little(p, 4))));
+    case ScalarType::float64:
+      return std::bit_cast<double>(read_little(p, 8));
+  }
+  return 0;
+}
+
 std::string declaration_of(const ply::Element& vertex) {
   std::string text = "element vertex " + std::to_string(vertex.count) + "\n";
   for (const ply::Property& p : vertex.properties) {
@@ -91,6 +116,17 @@ PlyTriangleStream::PlyTriangleStream(const std::string& path) : path_(path) {
   vertex_start_ = lines.pos;
   face_start_ = vertex_start_ + vertex_count_ * vertex_bytes_;
   vertex_declaration_ = declaration_of(header.elements[0]);
+  xyz_offset_.fill(SIZE_MAX);
+  std::size_t offset = 0;
+  for (const ply::Property& p : header.elements[0].properties) {
+    for (int k = 0; k < 3; ++k) {
+      if (p.name == std::string(1, char('x' + k))) {
+        xyz_offset_[k] = offset;
+        xyz_type_[k] = static_cast<std::uint8_t>(p.type);
+      }
+    }
+    offset += ply::size_of(p.type);
+  }
   if (face_start_ + face_count_ * face_bytes_ > size_) {
     throw FileError(path, 0,
                     "shorter than its header says (" + std::to_string(size_) + " bytes; " +
@@ -125,6 +161,21 @@ void PlyTriangleStream::read_faces(std::uint64_t first, std::uint64_t count,
                             std::to_string(vertex_count_) + " vertices)");
       }
       corners[3 * i + k] = static_cast<VertexId>(v);
+    }
+  }
+}
+
+void PlyTriangleStream::read_positions(std::span<const VertexId> ids,
+                                       std::span<std::array<double, 3>> positions) const {
+  for (int k = 0; k < 3; ++k) {
+    if (xyz_offset_[k] == SIZE_MAX) {
+      throw FileError(path_, 0, std::string("the vertex element has no property ") + char('x' + k));
+    }
+  }
+  for (std::size_t i = 0; i < ids.size(); ++i) {
+    const char* record = bytes_ + vertex_start_ + std::size_t{ids[i]} * vertex_bytes_;
+    for (int k = 0; k < 3; ++k) {
+      positions[i][k] = scalar_at(record + xyz_offset_[k], ScalarType(xyz_type_[k]));
     }
   }
 }

@@ -24,6 +24,16 @@ using partition_detail::TempFaceArray;
 // included: 125 bytes per triangle of the largest part, measured on the closed 10^8 plate
 // (docs/distributed.md); parts are sized for 1.5 times their size (next_carry), which covers it.
 constexpr std::uint64_t kBytesPerTriangle = 120;
+// The same for the cost objectives (docs/distributed.md), whose part step holds the corners'
+// positions (72 bytes per triangle), the part as a mesh, the edge costs and the minimum-cost
+// matching's doubled graph and search state; quality's also the maximum matching that sizes its
+// price, and a search that leaves more trees open on a part's open border.
+constexpr std::uint64_t kQuadsBytesPerTriangle = 600;
+constexpr std::uint64_t kQualityBytesPerTriangle = 700;
+// The cost objectives' band depth: the seam step pairs again the faces this close to a cut. The
+// bands of all parts are held until then, and a band reaches around the true boundary (holes) as
+// around the cuts, so it is kept narrow.
+constexpr std::uint32_t kCostBandRadius = 4;
 // Kept back from the limit for what does not scale with the part: the bands and open edges of all
 // parts, the buffers and the program itself.
 constexpr std::uint64_t kFixedBytes = std::uint64_t{256} << 20;
@@ -34,8 +44,11 @@ constexpr std::uint64_t kMinPartTriangles = 64;
 std::uint64_t part_size(const OutOfCoreOptions& options, std::uint64_t triangles) {
   std::uint64_t part = options.part_triangles;
   if (part == 0) {
-    const std::uint64_t per =
-        options.bytes_per_triangle > 0 ? options.bytes_per_triangle : kBytesPerTriangle;
+    const Objective objective = options.costs.objective;
+    const std::uint64_t per = options.bytes_per_triangle > 0  ? options.bytes_per_triangle
+                              : objective == Objective::pairs ? kBytesPerTriangle
+                              : objective == Objective::quads ? kQuadsBytesPerTriangle
+                                                              : kQualityBytesPerTriangle;
     const std::uint64_t fixed = std::min(kFixedBytes, options.memory_limit / 2);
     // A part with the end of the previous one it carries holds at most 1.5 parts (next_carry).
     part = std::max(kMinPartTriangles, (options.memory_limit - fixed) / per * 2 / 3);
@@ -95,6 +108,48 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
     out.inner_structural_cuts += part.inner_structural_cuts;
     out.certified = out.certified && part.maximum_certified;
     carry_first = next_carry(part, own_first + own_count, size);
+    ++stats.parts;
+  }
+  return out;
+}
+
+// What the cost objectives' part steps leave for the cut and seam steps.
+struct CostPartsOutcome {
+  std::vector<OpenEdge> open_edges;
+  std::vector<SeamFace> seam;
+  Cost units = 0;  // the sum of the parts' certified optima
+  std::uint64_t inner_structural_cuts = 0;
+  bool certified = true;
+};
+
+// The part step over every part alone, with its corners' positions read from the vertex block.
+CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& partner,
+                                   std::uint64_t size, const OutOfCoreOptions& options,
+                                   OutOfCoreStats& stats) {
+  CostPartsOutcome out;
+  const std::uint64_t n = in.face_count();
+  HugeVector<VertexId> corners;
+  HugeVector<std::array<double, 3>> positions;
+  for (std::uint64_t first = 0; first < n; first += size) {
+    const std::uint64_t count = std::min(size, n - first);
+    corners.resize(3 * count);
+    positions.resize(3 * count);
+    in.read_faces(first, count, corners);
+    in.release_faces(first, count);
+    in.read_positions(corners, positions);
+    in.release_vertices(0, in.vertex_count());
+    const PartPairing part =
+        pair_part({.first_face = static_cast<FaceId>(first),
+                   .corners = corners,
+                   .corner_positions = positions},
+                  {.costs = options.costs, .augment = options.augment, .threads = options.threads});
+    std::copy(part.partner.begin(), part.partner.end(), &partner[first]);
+    partner.release(first, count);
+    out.open_edges.insert(out.open_edges.end(), part.open_edges.begin(), part.open_edges.end());
+    out.seam.insert(out.seam.end(), part.seam.begin(), part.seam.end());
+    out.units += part.objective_units;
+    out.inner_structural_cuts += part.inner_structural_cuts;
+    out.certified = out.certified && part.optimality_certified;
     ++stats.parts;
   }
   return out;
@@ -188,6 +243,57 @@ void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std
   stats.temp_bytes += out.bytes_written();
 }
 
+// Objective::pairs: the sweep over the parts, the cut and the band repair.
+void pair_maximum(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t size,
+                  const OutOfCoreOptions& options, OutOfCoreStats& stats, Stopwatch& clock) {
+  PartsOutcome parts = run_parts(in, partner, size, options, stats);
+  stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
+  stats.read_pair_seconds = clock.lap();
+  const CutPairing cut = pair_open_edges(std::move(parts.open_edges));
+  stats.cut_adjacencies = cut.adjacencies.size();
+  stats.closed = cut.closed() && parts.inner_structural_cuts == 0;
+  stats.cut_seconds = clock.lap();
+  const RepairResult repaired = repair(parts, cut, partner);
+  stats.pairs = count_pairing(partner, stats.triangles).first;
+  stats.repaired = (repaired.unpaired_before - repaired.unpaired_after) / 2;
+  stats.band_faces = parts.band.size();
+  stats.band_graph_faces = repaired.band_graph_faces;
+  stats.repair_radius = repaired.radius;
+  stats.parts_certified =
+      parts.certified && (repaired.unpaired_before == 0 || repaired.maximum_in_band_certified);
+  stats.repair_seconds = clock.lap();
+}
+
+// The cost objectives' parts, cut and seams: the pairing in `partner`, the figures in `stats`.
+void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t size,
+                  const OutOfCoreOptions& options, OutOfCoreStats& stats, Stopwatch& clock) {
+  CostPartsOutcome parts = run_parts_at_cost(in, partner, size, options, stats);
+  stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
+  stats.read_pair_seconds = clock.lap();
+  const CutPairing cut = pair_open_edges(std::move(parts.open_edges));
+  stats.cut_adjacencies = cut.adjacencies.size();
+  stats.closed = cut.closed() && parts.inner_structural_cuts == 0;
+  stats.cut_seconds = clock.lap();
+  const SeamResult seams =
+      pair_seams({parts.seam, cut.adjacencies}, options.costs, options.threads);
+  for (std::size_t i = 0; i < parts.seam.size(); ++i)
+    partner[parts.seam[i].face] = seams.partner[i];
+  stats.pairs = count_pairing(partner, stats.triangles).first;
+  stats.seam_pairs = seams.pairs_across;
+  stats.band_faces = parts.seam.size();
+  stats.seam_graph_faces = seams.seam_graph_faces;
+  const Cost total = parts.units + seams.objective_change;
+  stats.objective_total = double(total) / kDefaultCostScale;
+  stats.costs_certified = parts.certified && seams.certified;
+  if (options.costs.objective == Objective::quads) {
+    stats.lower_bound = lower_bound_degrees(parts.units, seams.dual_lowering);
+    stats.lower_bound_valid = stats.costs_certified;
+    stats.optimality_certified =
+        stats.costs_certified && 4 * total == 4 * parts.units - seams.dual_lowering;
+  }
+  stats.repair_seconds = clock.lap();
+}
+
 }  // namespace
 
 OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& output,
@@ -206,22 +312,11 @@ OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& out
   stats.part_triangles = size;
   TempFaceArray partner(output, stats.triangles);
   stats.temp_bytes = partner.bytes();
-  PartsOutcome parts = run_parts(in, partner, size, options, stats);
-  stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
-  stats.read_pair_seconds = clock.lap();
-  const CutPairing cut = pair_open_edges(std::move(parts.open_edges));
-  stats.cut_adjacencies = cut.adjacencies.size();
-  stats.closed = cut.closed() && parts.inner_structural_cuts == 0;
-  stats.cut_seconds = clock.lap();
-  const RepairResult repaired = repair(parts, cut, partner);
-  stats.pairs = count_pairing(partner, stats.triangles).first;
-  stats.repaired = (repaired.unpaired_before - repaired.unpaired_after) / 2;
-  stats.band_faces = parts.band.size();
-  stats.band_graph_faces = repaired.band_graph_faces;
-  stats.repair_radius = repaired.radius;
-  stats.parts_certified =
-      parts.certified && (repaired.unpaired_before == 0 || repaired.maximum_in_band_certified);
-  stats.repair_seconds = clock.lap();
+  if (options.costs.objective != Objective::pairs) {
+    pair_at_cost(in, partner, size, options, stats, clock);
+  } else {
+    pair_maximum(in, partner, size, options, stats, clock);
+  }
   write_output(in, partner, output, size, stats);
   stats.perfect_certified = stats.closed && stats.triangles_left == 0;
   stats.write_seconds = clock.lap();

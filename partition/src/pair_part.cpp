@@ -2,14 +2,17 @@
 // unpaired triangles moved to the border, its open edges and its band.
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "local_vertices.hpp"
 #include "move_to_border.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/augment.hpp"
 #include "petersen/matching/tutte_berge.hpp"
+#include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/partition/partition.hpp"
 
 namespace petersen {
@@ -242,12 +245,19 @@ HugeVector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& p
   return mate;
 }
 
-PairableGraph graph_of(const PartTriangles& part, const PartPairingOptions& options) {
+// The part as a mesh over its own vertices (with their positions where the part has them; the
+// graph reads only their count otherwise), and its pairable graph under the sharp-angle cut.
+PairableGraph graph_of(const PartTriangles& part, const PartPairingOptions& options,
+                       PolygonMesh& mesh) {
   partition_detail::LocalCorners local = local_corners(part.corners, part.first_face);
-  PolygonMesh mesh;
-  mesh.positions.resize(local.vertex_count);  // the graph reads only their count
+  mesh.positions.resize(local.vertex_count);
+  for (std::size_t c = 0; c < part.corner_positions.size(); ++c) {
+    mesh.positions[local.corners[c]] = part.corner_positions[c];
+  }
   mesh.corners = std::move(local.corners);
-  return build_pairable_graph(mesh, {}, options.threads);
+  CutOptions cuts;
+  cuts.sharp_angle_degrees = options.costs.sharp_angle_degrees;
+  return build_pairable_graph(mesh, cuts, options.threads);
 }
 
 void fill_partners(const PartTriangles& part, std::span<const NodeId> mate,
@@ -267,14 +277,156 @@ void fill_partners(const PartTriangles& part, std::span<const NodeId> mate,
   }
 }
 
+// The value of each odd set of the certificate plus those of the sets holding it, so that a
+// node's part of an edge's constraint is its own value plus its innermost set's sum. O(sets).
+std::vector<std::int64_t> nested_set_sums(const MatchingCertificate& certificate) {
+  const std::size_t sets = certificate.set_count();
+  std::vector<std::int64_t> sum(sets);
+  std::vector<std::uint8_t> done(sets, 0);
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t s = 0; s < sets; ++s) {
+    std::uint32_t t = s;
+    for (; t != kNoSet && !done[t]; t = certificate.set_parent[t]) chain.push_back(t);
+    std::int64_t above = t == kNoSet ? 0 : sum[t];
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+      above = sum[*it] = certificate.set_dual[*it] + above;
+      done[*it] = 1;
+    }
+    chain.clear();
+  }
+  return sum;
+}
+
+// The cost objectives' matching of the part's graph under quadrangulate's costs (the edges the
+// corner threshold refuses left out), its certificate checked; the part's optimum and, for
+// Objective::quads, each seam node's dual in both copies of the doubled graph into `result`.
+HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonMesh& mesh,
+                                      const PartPairingOptions& options, PartPairing& result) {
+  const HugeVector<double> degrees = pairable_edge_quality(graph, mesh, options.threads);
+  std::vector<std::array<NodeId, 2>> edges;
+  std::vector<double> kept;
+  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+    if (options.costs.max_corner_deviation && degrees[e] > *options.costs.max_corner_deviation)
+      continue;
+    edges.push_back({graph.edge_ends[2 * e], graph.edge_ends[2 * e + 1]});
+    kept.push_back(degrees[e]);
+  }
+  const CsrGraph csr = CsrGraph::from_edges(graph.node_count, edges);
+  const HugeVector<Cost> costs = scale_costs(kept);
+  const std::uint32_t n = graph.node_count;
+  Matching matching;
+  if (options.costs.objective == Objective::quads) {
+    const Cost price =
+        static_cast<Cost>(std::llround(options.costs.triangle_cost * kDefaultCostScale));
+    MinCostMatchingResult r =
+        min_cost_matching(csr, costs, {&price, 1}, {.threads = options.threads});
+    if (CertificateCheck check = verify_min_cost_matching(n, csr.edge_ends(), costs, {&price, 1},
+                                                          r.matching, r.total, r.certificate);
+        !check.ok()) {
+      throw std::logic_error("internal error: a part's least-cost pairing fails its certificate: " +
+                             check.problem);
+    }
+    result.objective_units = r.total;
+    result.maximum_certified = 2 * std::uint64_t{r.size} == n;
+    const std::vector<std::int64_t> sums = nested_set_sums(r.certificate);
+    auto dual = [&](NodeId v) {
+      const std::uint32_t s = r.certificate.node_set[v];
+      return r.certificate.node_dual[v] + (s == kNoSet ? 0 : sums[s]);
+    };
+    for (SeamFace& face : result.seam) {
+      const NodeId v = face.face - result.first_face;
+      face.dual = {dual(v), dual(n + v)};
+    }
+    matching = std::move(r.matching);
+  } else {
+    MinCostMaximumResult r = min_cost_maximum_matching(csr, costs, {.threads = options.threads});
+    if (CertificateCheck check = verify_min_cost_maximum_matching(
+            n, csr.edge_ends(), costs, r.matching, r.total_cost, r.unmatched_cost, r.certificate);
+        !check.ok()) {
+      throw std::logic_error(
+          "internal error: a part's cheapest maximum pairing fails its "
+          "certificate: " +
+          check.problem);
+    }
+    result.objective_units = r.total_cost;
+    result.maximum_certified = true;
+    matching = std::move(r.matching);
+  }
+  result.optimality_certified = true;
+  HugeVector<NodeId> mate(n, kNoNode);
+  for (NodeId v = 0; v < n; ++v) {
+    const EdgeId e = matching.mate_edge[v];
+    if (e != kNoEdge) mate[v] = csr.other_end(e, v);
+  }
+  return mate;
+}
+
+// The band (band_of) with the corners' positions; partners and duals come with the matching.
+std::vector<SeamFace> seam_of(const PartTriangles& part, const PairableGraph& graph,
+                              const Borders& borders, std::uint32_t radius) {
+  const std::vector<BandFace> band = band_of(part, graph, borders, radius);
+  std::vector<SeamFace> seam(band.size());
+  for (std::size_t i = 0; i < band.size(); ++i) {
+    const std::size_t v = band[i].face - part.first_face;
+    seam[i].face = band[i].face;
+    seam[i].corners = band[i].corners;
+    seam[i].sides = band[i].sides;
+    seam[i].distance = band[i].distance;
+    for (int k = 0; k < 3; ++k) seam[i].positions[k] = part.corner_positions[3 * v + k];
+  }
+  return seam;
+}
+
+// pair_part with a cost objective: the part alone (no carried triangles), no moves (they would
+// change the cost), its band as seam faces.
+PartPairing pair_part_at_cost(const PartTriangles& part, const PartPairingOptions& options) {
+  const Stopwatch clock;
+  if (part.carried > 0) {
+    throw std::invalid_argument("pair_part: the cost objectives pair each part alone, not " +
+                                std::to_string(part.carried) + " carried triangles");
+  }
+  if (part.corner_positions.size() != part.corners.size()) {
+    throw std::invalid_argument("pair_part: the cost objectives need a position per corner: " +
+                                std::to_string(part.corner_positions.size()) + " for " +
+                                std::to_string(part.corners.size()) + " corners");
+  }
+  PartPairing result;
+  result.first_face = part.first_face;
+  PolygonMesh mesh;
+  const PairableGraph graph = graph_of(part, options, mesh);
+  result.inner_structural_cuts =
+      graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];
+  const Borders borders = find_borders(part, graph, result.open_edges);
+  result.seam = seam_of(part, graph, borders, options.band_radius);
+  const HugeVector<NodeId> mate = match_part_at_cost(graph, mesh, options, result);
+  const std::vector<std::uint8_t> held(graph.node_count, 0);
+  fill_partners(part, mate, held, result);
+  for (SeamFace& face : result.seam) face.partner = result.partner[face.face - part.first_face];
+  result.seconds = clock.seconds();
+  return result;
+}
+
 }  // namespace
 
 PartPairing pair_part(const PartTriangles& part, const PartPairingOptions& options) {
-  const Stopwatch clock;
   check_part(part);
+  if (options.costs.sharp_angle_degrees && part.corner_positions.size() != part.corners.size()) {
+    throw std::invalid_argument("pair_part: the sharp-angle cut needs a position per corner");
+  }
+  if (options.costs.objective != Objective::pairs) return pair_part_at_cost(part, options);
+  if (options.costs.sharp_angle_degrees || options.costs.max_corner_deviation) {
+    // The band repair pairs across the cuts without measuring the quads.
+    throw std::invalid_argument(
+        "pair_part: the sharp angle and the corner threshold go with a cost objective");
+  }
+  const Stopwatch clock;
   PartPairing result;
   result.first_face = part.first_face;
-  const PairableGraph graph = graph_of(part, options);
+  PairableGraph graph;
+  {
+    PolygonMesh mesh;  // freed before the matching: the pairs objective measures nothing
+    graph = graph_of(part, options, mesh);
+  }
   const std::vector<std::uint8_t> held = held_triangles(part, graph.node_count);
   result.inner_structural_cuts =
       graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];

@@ -50,7 +50,32 @@ def render(
     height: int,
 ) -> None: ...
 def pair_part(
-    first_face: int, corners: np.ndarray, augment: str, band_radius: int, threads: int
+    first_face: int,
+    corners: np.ndarray,
+    augment: str,
+    band_radius: int,
+    threads: int,
+    objective: str = "pairs",
+    triangle_cost: float = 90.0,
+    max_corner_deviation: Optional[float] = None,
+    sharp_angle: Optional[float] = None,
+    positions: Optional[np.ndarray] = None,
+) -> Dict[str, Any]: ...
+def pair_seams(
+    faces: np.ndarray,
+    corners: np.ndarray,
+    positions: np.ndarray,
+    sides: np.ndarray,
+    distance: np.ndarray,
+    partner: np.ndarray,
+    dual: np.ndarray,
+    adjacencies: np.ndarray,
+    parts_units: int,
+    objective: str,
+    triangle_cost: float = 90.0,
+    max_corner_deviation: Optional[float] = None,
+    sharp_angle: Optional[float] = None,
+    threads: int = 1,
 ) -> Dict[str, Any]: ...
 def pair_open_edges(open_edges: np.ndarray) -> Dict[str, Any]: ...
 def repair_cuts(

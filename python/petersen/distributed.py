@@ -34,11 +34,11 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
-from typing import Any, Dict, List, Sequence, Tuple, Union
+from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
-from . import _petersen
+from . import _degrees, _number, _petersen
 
 __all__ = ["PlyLayout", "read_layout", "quadrangulate"]
 
@@ -162,6 +162,15 @@ def _read_faces(layout: PlyLayout, lo: int, hi: int) -> np.ndarray:
     return F
 
 
+def _corner_positions(layout: PlyLayout, F: np.ndarray) -> np.ndarray:
+    """The positions of the corners of faces F, (m, 3, 3) float64: the vertex block mapped and
+    only the rows F names read."""
+    vertices = np.memmap(layout.path, dtype=np.dtype(list(layout.vertex_dtype)), mode="r",
+                         offset=layout.vertex_offset, shape=(layout.vertex_count,))
+    rows = vertices[F.ravel()]
+    return np.stack([rows["x"], rows["y"], rows["z"]], axis=1).astype(np.float64).reshape(-1, 3, 3)
+
+
 @dataclass
 class _Part:
     """A part as its worker keeps it between the stages (petersen/partition/partition.hpp)."""
@@ -170,7 +179,9 @@ class _Part:
     F: np.ndarray  # (m, 3) global vertex ids
     partner: np.ndarray  # per triangle, its partner's global face id, -1 when unpaired
     open_edges: np.ndarray  # (r, 4): low, high, face, apex
-    band: Dict[str, np.ndarray]  # faces, corners, sides, distance, partner
+    #: objective pairs: its band (faces, corners, sides, distance, partner); the cost objectives:
+    #: its seam (faces, corners, positions, paired, dual)
+    band: Dict[str, np.ndarray]
     figures: Dict[str, Any]
 
 
@@ -185,6 +196,21 @@ def _pair_part(layout: PlyLayout, lo: int, hi: int, augment: str, band_radius: i
     figures["band_faces"] = len(r["band"]["faces"])
     figures["whole"] = figures["band_faces"] == len(F)
     return _Part(lo, F, r["partner"], r["open_edges"], r["band"], figures)
+
+
+def _pair_part_at_cost(layout: PlyLayout, lo: int, hi: int, band_radius: int,
+                       costs: Dict[str, Any]) -> _Part:
+    """Stage 1 of the cost objectives on a worker: reads faces lo..hi-1 and their corners'
+    positions and pairs them by the minimum-cost matching of quadrangulate (pair_part), its
+    certificate checked; keeps its band (band_radius steps from its open sides) for stage 3."""
+    F = _read_faces(layout, lo, hi)
+    r = _petersen.pair_part(lo, F, "local", band_radius, 1, positions=_corner_positions(layout, F),
+                            **costs)
+    figures = {k: r[k] for k in ("pairs", "maximum_certified", "optimality_certified",
+                                 "objective_units", "inner_structural_cuts", "seconds")}
+    figures["unpaired"] = len(r["unpaired"])
+    figures["band_faces"] = len(r["seam"]["faces"])
+    return _Part(lo, F, r["partner"], r["open_edges"], r["seam"], figures)
 
 
 def _open_edges(part: _Part) -> Dict[str, Any]:
@@ -209,27 +235,47 @@ def _cut_figures(cut: Dict[str, Any]) -> Dict[str, Any]:
     return figures
 
 
-def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]], augment: str,
-            first_radius: int) -> Dict[str, Any]:
-    """Stage 3: augmenting paths in the bands and the cut adjacencies (repair_cuts). Checked
-    here: the new partners name each other back. Returns each band face's new partner and, for a
-    partner in the bands, its corners (the quad across a cut needs them)."""
-    band = {k: np.concatenate([b[k] for b in bands]) for k in bands[0]}
-    r = _petersen.repair_cuts(band["faces"], band["corners"], band["sides"], band["distance"],
-                              band["partner"], cut["adjacencies"], augment, first_radius)
-    faces, partner = band["faces"], r["partner"]
+def _checked_partners(faces: np.ndarray, corners: np.ndarray, partner: np.ndarray,
+                      figures: Dict[str, Any], step: str) -> Dict[str, Any]:
+    """The band faces' new partners, checked to name each other back, with each partner's corners
+    where the partner is a band face (a quad across a cut needs them): what the write stage
+    reads of stage 3."""
     order = np.argsort(faces)
     at = np.searchsorted(faces, partner, sorter=order)
     at = order[np.minimum(at, len(faces) - 1)]
     inside = (partner >= 0) & (faces[at] == partner)
     if (partner[at[inside]] != faces[inside]).any():
         bad = np.flatnonzero(inside & (partner[at] != faces))[0]
-        raise RuntimeError(f"verification failed: the repair paired triangle {faces[bad]} with "
+        raise RuntimeError(f"verification failed: the {step} paired triangle {faces[bad]} with "
                            f"{partner[bad]}, which is paired with {partner[at[bad]]}")
-    partner_corners = np.where(inside[:, None], band["corners"][at], -1)
-    figures = {k: v for k, v in r.items() if k != "partner"}
+    partner_corners = np.where(inside[:, None], corners[at], -1)
     return {"faces": faces, "partner": partner, "partner_corners": partner_corners,
             "figures": figures}
+
+
+def _repair(cut: Dict[str, Any], bands: Sequence[Dict[str, np.ndarray]], augment: str,
+            first_radius: int) -> Dict[str, Any]:
+    """Stage 3: augmenting paths in the bands and the cut adjacencies (repair_cuts), checked by
+    _checked_partners."""
+    band = {k: np.concatenate([b[k] for b in bands]) for k in bands[0]}
+    r = _petersen.repair_cuts(band["faces"], band["corners"], band["sides"], band["distance"],
+                              band["partner"], cut["adjacencies"], augment, first_radius)
+    figures = {k: v for k, v in r.items() if k != "partner"}
+    return _checked_partners(band["faces"], band["corners"], r["partner"], figures, "repair")
+
+
+def _seams(cut: Dict[str, Any], seams: Sequence[Dict[str, np.ndarray]],
+           costs: Dict[str, Any]) -> Dict[str, Any]:
+    """Stage 3 of the cost objectives: the parts' bands and the cut adjacencies paired again by a
+    minimum-cost matching, and the parts' duals stitched into a lower bound (pair_seams); checked
+    by _checked_partners."""
+    seam = {k: np.concatenate([s[k] for s in seams]) for k in seams[0]}
+    units = sum(f["objective_units"] for f in cut["figures"])
+    r = _petersen.pair_seams(seam["faces"], seam["corners"], seam["positions"], seam["sides"],
+                             seam["distance"], seam["partner"], seam["dual"], cut["adjacencies"],
+                             units, **costs)
+    figures = {k: v for k, v in r.items() if k != "partner"}
+    return _checked_partners(seam["faces"], seam["corners"], r["partner"], figures, "seam step")
 
 
 def _repair_for(repair: Dict[str, Any], lo: int, hi: int) -> Dict[str, Any]:
@@ -307,7 +353,33 @@ def _write_part(part: _Part, plan: Dict[str, np.ndarray], out_tmp: str, offset: 
     return len(data)
 
 
-_OPTIONS = ("augment",)
+_OPTIONS = ("augment", "objective", "triangle_cost", "max_corner_deviation", "sharp_angle")
+
+
+def _costs_of(options: Dict[str, Any]) -> Dict[str, Any]:
+    """The objective and its costs, as pair_part and pair_seams take them; TypeError for an option
+    the objective does not use."""
+    objective = options.get("objective", "quads")
+    if objective not in ("quads", "quality", "pairs"):
+        raise ValueError(f"unknown objective '{objective}': quads, quality or pairs")
+    refused = {
+        "triangle_cost": objective != "quads",
+        "max_corner_deviation": objective == "pairs", "sharp_angle": objective == "pairs",
+        "augment": objective != "pairs",
+    }
+    for key, no in refused.items():
+        if no and key in options:
+            raise TypeError(f"petersen.distributed.quadrangulate: option '{key}' does not go with "
+                            f"objective {objective}: the parts pair by "
+                            + ("the maximum matching, measuring no quad" if objective == "pairs"
+                               else "the minimum-cost matching"))
+    costs: Dict[str, Any] = {"objective": objective}
+    if "triangle_cost" in options:
+        costs["triangle_cost"] = _number("triangle_cost", options["triangle_cost"], 10000.0)
+    for key, high in (("max_corner_deviation", 270.0), ("sharp_angle", 180.0)):
+        if key in options:
+            costs[key] = _degrees(key, options[key], high)
+    return costs
 
 
 def _submit(client, fn, *args, retries: int):
@@ -337,6 +409,63 @@ def _pair_and_repair(client, layout, bounds, augment, band_radius, first_radius,
         if not (cut_figures["closed"] and repaired["unpaired_after"] and not whole):
             return parts, cut_figures, repaired, repair
         band_radius *= 4
+
+
+def _pair_and_seam(client, layout, bounds, band_radius, costs, retries):
+    """Stages 1 to 3 of the cost objectives: each part alone, then the seams."""
+    clock = time.perf_counter()
+    parts = [_submit(client, _pair_part_at_cost, layout, int(lo), int(hi), band_radius, costs,
+                     retries=retries) for lo, hi in zip(bounds[:-1], bounds[1:])]
+    cut = _submit(client, _cut, [_submit(client, _open_edges, p, retries=retries)
+                                 for p in parts], retries=retries)
+    cut_figures = _submit(client, _cut_figures, cut, retries=retries).result()
+    parts_seconds = time.perf_counter() - clock
+    clock = time.perf_counter()
+    seams = [_submit(client, _band, p, retries=retries) for p in parts]
+    seam = _submit(client, _seams, cut, seams, costs, retries=retries)
+    figures = _submit(client, _repair_figures, seam, retries=retries).result()
+    figures.update(parts_seconds=parts_seconds, seam_seconds=time.perf_counter() - clock)
+    return parts, cut_figures, figures, seam
+
+
+def _cost_stats(costs, layout, bounds, cut, seamed, quads, left) -> Dict[str, Any]:
+    """The figures of a cost objective's run: petersen.quadrangulate's keys where they mean the
+    same, the lower bound and gap (objective quads), the parts' and the seams' own."""
+    per_part = cut["figures"]
+    objective = costs["objective"]
+    stats: Dict[str, Any] = {"objective": objective, "algorithm": "min-cost"}
+    if objective == "quads":
+        stats["triangle_cost"] = seamed["triangle_cost"]
+    for key in ("max_corner_deviation", "sharp_angle"):
+        if key in costs:
+            stats[key] = costs[key]
+    costs_certified = seamed["certified"] and all(f["optimality_certified"] for f in per_part)
+    stats.update({
+        "vertices": layout.vertex_count, "faces_in": layout.face_count,
+        "triangles": layout.face_count, "polygons_kept": 0, "maximum_certified": left == 0,
+        "pairs": quads, "triangles_left": left, "added_vertices": 0,
+        "objective_total": seamed["objective_total"], "costs_certified": costs_certified,
+    })
+    if objective == "quads":
+        gap = max(0.0, seamed["objective_total"] - seamed["lower_bound"])
+        stats.update({"lower_bound": seamed["lower_bound"], "gap": gap,
+                      "gap_relative": gap / seamed["objective_total"]
+                      if seamed["objective_total"] > 0 else 0.0})
+    stats["optimality_certified"] = bool(costs_certified and objective == "quads"
+                                         and seamed["optimality_certified"])
+    stats.update({
+        "parts": len(bounds) - 1, "part_cut_edges": cut["adjacencies"],
+        "boundary_edges": cut["boundary_edges"], "non_manifold_edges": cut["non_manifold_edges"],
+        "duplicate_edges": cut["duplicate_edges"],
+        "parts_certified": all(f["optimality_certified"] for f in per_part),
+        "unpaired_after_parts": sum(f["unpaired"] for f in per_part),
+        "band_faces": sum(f["band_faces"] for f in per_part),
+        "seam_pairs": seamed["pairs_across"], "seam_graph_faces": seamed["seam_graph_faces"],
+        "part_seconds_max": max(f["seconds"] for f in per_part),
+        "seam_matching_seconds": seamed["seconds"],
+        "parts_seconds": seamed["parts_seconds"], "seam_seconds": seamed["seam_seconds"],
+    })
+    return stats
 
 
 def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> Tuple[int, int]:
@@ -397,8 +526,16 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     the same path on every worker. ``parts`` face ranges of even sizes (default: one per worker),
     or the ranges' boundaries ``[0, b1, ..., face count]``; ``band_radius`` how far from its cut
     a part's band reaches and ``first_radius`` the repair's first band graph (it doubles up to
-    ``band_radius``); ``retries`` Dask's retries of each task; ``options``: ``augment`` ("local"
-    or "faithful"), as ``petersen.quadrangulate``.
+    ``band_radius``); ``retries`` Dask's retries of each task; ``options`` as
+    ``petersen.quadrangulate``'s: ``objective`` ("quads", the default: each part by the same
+    certified minimum-cost matching, then the triangles left beside the cuts across them;
+    "quality": each part's cheapest maximum pairing, its cost not certified for the whole mesh;
+    "pairs": the maximum, fastest, with the band repair), ``triangle_cost`` (quads),
+    ``max_corner_deviation`` and ``sharp_angle`` (quads and quality), ``augment`` (pairs).
+
+    With objective quads the statistics hold ``objective_total``, a ``lower_bound`` on the whole
+    mesh's optimum (the parts' certified duals stitched across the cuts), ``gap`` and
+    ``gap_relative``, and ``optimality_certified`` when the gap is 0.
 
     Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``faces_in``,
     ``vertices``, ``triangles``, ``pairs``, ``triangles_left``, ``maximum_certified``,
@@ -413,11 +550,24 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         if key not in _OPTIONS:
             raise TypeError(f"petersen.distributed.quadrangulate: option '{key}' is not one the "
                             f"parts take ({', '.join(_OPTIONS)})")
+    costs = _costs_of(options)
     clock = time.perf_counter()
     layout = read_layout(in_path)
     if layout.face_count == 0:
         raise ValueError(f"{in_path}: no faces")
     bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
+    if costs["objective"] != "pairs":
+        part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, band_radius,
+                                                         costs, retries)
+        lap = time.perf_counter()
+        quads, left = _write_output(client, layout, part_futures, bounds, seam, out_path, retries)
+        if quads * 2 + left != layout.face_count:
+            raise RuntimeError("verification failed: the parts' faces do not add up to the "
+                               "input's")
+        stats = _cost_stats(costs, layout, bounds, cut, seamed, quads, left)
+        stats.update(write_seconds=time.perf_counter() - lap,
+                     total_seconds=time.perf_counter() - clock)
+        return stats
     part_futures, cut, repaired, repair = _pair_and_repair(
         client, layout, bounds, options.get("augment", "local"), band_radius, first_radius,
         retries)

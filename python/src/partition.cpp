@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -74,22 +75,78 @@ py::dict band_dict(const std::vector<BandFace>& band, const HugeVector<FaceId>& 
   return d;
 }
 
-// pair_part on faces first_face.. with corners (m, 3): the part's partners (per triangle), its
-// open edges as (low, high, face, apex) rows, its band and figures.
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// The objective and its costs as the library takes them; ValueError for an unknown objective.
+PartCosts costs_of(const std::string& objective, double triangle_cost,
+                   std::optional<double> max_corner_deviation, std::optional<double> sharp_angle) {
+  const std::optional<Objective> o = parse_objective(objective);
+  if (!o) throw py::value_error("unknown objective '" + objective + "': quads, quality or pairs");
+  return {*o, triangle_cost, max_corner_deviation, sharp_angle};
+}
+
+// (k, 3, 3) positions of the corners of k triangles, as one array per corner.
+std::vector<std::array<double, 3>> corner_positions_of(const DoubleArray& positions,
+                                                       std::size_t triangles) {
+  if (positions.ndim() != 3 || static_cast<std::size_t>(positions.shape(0)) != triangles ||
+      positions.shape(1) != 3 || positions.shape(2) != 3) {
+    throw py::value_error("positions: a (" + std::to_string(triangles) +
+                          ", 3, 3) array, each triangle's corners' x, y, z");
+  }
+  std::vector<std::array<double, 3>> out(3 * triangles);
+  std::copy_n(positions.data(), 9 * triangles, out.front().data());
+  return out;
+}
+
+py::dict seam_dict(const std::vector<SeamFace>& seam) {
+  py::dict d;
+  d["faces"] = column(seam, [](const SeamFace& f) { return std::int64_t{f.face}; });
+  d["corners"] = rows_array(seam.size(), 3, [&](std::size_t i, std::int64_t* row) {
+    for (int c = 0; c < 3; ++c) row[c] = seam[i].corners[c];
+  });
+  DoubleArray positions({seam.size(), std::size_t{3}, std::size_t{3}});
+  double* p = positions.mutable_data();
+  py::array_t<std::uint8_t> sides({seam.size(), std::size_t{3}});
+  std::uint8_t* s = sides.mutable_data();
+  for (std::size_t i = 0; i < seam.size(); ++i) {
+    for (int c = 0; c < 3; ++c) {
+      for (int k = 0; k < 3; ++k) p[9 * i + 3 * c + k] = seam[i].positions[c][k];
+      s[3 * i + c] = static_cast<std::uint8_t>(seam[i].sides[c]);
+    }
+  }
+  d["positions"] = positions;
+  d["sides"] = sides;
+  d["distance"] = column(seam, [](const SeamFace& f) { return std::int64_t{f.distance}; });
+  d["partner"] = column(seam, [](const SeamFace& f) { return id_or_none(f.partner); });
+  d["dual"] = rows_array(seam.size(), 2, [&](std::size_t i, std::int64_t* row) {
+    row[0] = seam[i].dual[0], row[1] = seam[i].dual[1];
+  });
+  return d;
+}
+
+// pair_part on faces first_face.. with corners (m, 3) (and, for a cost objective, positions
+// (m, 3, 3)): the part's partners (per triangle), its open edges as (low, high, face, apex) rows,
+// its band (objective pairs) or seam (the cost objectives) and figures.
 py::dict pair_part_py(std::int64_t first_face, const Int64Array& corners,
-                      const std::string& augment, std::uint32_t band_radius,
-                      std::uint32_t threads) {
+                      const std::string& augment, std::uint32_t band_radius, std::uint32_t threads,
+                      const std::string& objective, double triangle_cost,
+                      std::optional<double> max_corner_deviation, std::optional<double> sharp_angle,
+                      std::optional<DoubleArray> positions) {
   const std::int64_t* rows = rows_of(corners, 3, "corners");
   const std::size_t m = static_cast<std::size_t>(corners.shape(0));
   std::vector<VertexId> flat(3 * m);
   for (std::size_t i = 0; i < 3 * m; ++i) flat[i] = id_of(rows[i], "corners");
   PartPairingOptions options;
+  options.costs = costs_of(objective, triangle_cost, max_corner_deviation, sharp_angle);
   options.augment = augment_named(augment);
   options.band_radius = band_radius;
   options.threads = threads;
+  const std::vector<std::array<double, 3>> at =
+      positions ? corner_positions_of(*positions, m) : std::vector<std::array<double, 3>>{};
   PartTriangles part;
   part.first_face = id_of(first_face, "first_face");
   part.corners = flat;
+  part.corner_positions = at;
   PartPairing r;
   {
     py::gil_scoped_release release;
@@ -103,6 +160,9 @@ py::dict pair_part_py(std::int64_t first_face, const Int64Array& corners,
     row[0] = e.low, row[1] = e.high, row[2] = e.face, row[3] = e.apex;
   });
   d["band"] = band_dict(r.band, r.partner, r.first_face);
+  d["seam"] = seam_dict(r.seam);
+  d["objective_units"] = r.objective_units;
+  d["optimality_certified"] = r.optimality_certified;
   d["inner_structural_cuts"] = r.inner_structural_cuts;
   d["pairs"] = r.pairs;
   d["moved_to_border"] = r.moved_to_border;
@@ -207,6 +267,60 @@ py::dict repair_cuts_py(const Int64Array& faces, const Int64Array& corners,
   return d;
 }
 
+// pair_seams on the concatenated seams of all parts and the cut adjacencies, with the sum of the
+// parts' objective_units: each seam face's partner after the step (-1 for none), the whole
+// pairing's total and (objective quads) the stitched lower bound in degrees, and the figures.
+py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
+                       const DoubleArray& positions,
+                       const py::array_t<std::uint8_t, py::array::c_style>& sides,
+                       const Int64Array& distance, const Int64Array& partner,
+                       const Int64Array& dual, const Int64Array& adjacencies,
+                       std::int64_t parts_units, const std::string& objective, double triangle_cost,
+                       std::optional<double> max_corner_deviation,
+                       std::optional<double> sharp_angle, std::uint32_t threads) {
+  const std::vector<BandFace> band = band_from(faces, corners, sides, distance);
+  const std::size_t k = band.size();
+  const std::int64_t* y = rows_of(dual, 2, "seam dual");
+  const std::vector<std::array<double, 3>> at = corner_positions_of(positions, k);
+  if (static_cast<std::size_t>(partner.size()) != k ||
+      static_cast<std::size_t>(dual.shape(0)) != k) {
+    throw py::value_error("seam: faces, positions, partner and dual of different lengths");
+  }
+  std::vector<SeamFace> seam(k);
+  for (std::size_t i = 0; i < k; ++i) {
+    seam[i].face = band[i].face;
+    seam[i].corners = band[i].corners;
+    seam[i].sides = band[i].sides;
+    seam[i].distance = band[i].distance;
+    for (int j = 0; j < 3; ++j) seam[i].positions[j] = at[3 * i + j];
+    const std::int64_t p = partner.data()[i];
+    seam[i].partner = p < 0 ? kNoFace : id_of(p, "partner");
+    seam[i].dual = {y[2 * i], y[2 * i + 1]};
+  }
+  const std::vector<CutAdjacency> adjacent = records_of<CutAdjacency>(adjacencies, "adjacencies");
+  const PartCosts costs = costs_of(objective, triangle_cost, max_corner_deviation, sharp_angle);
+  SeamResult r;
+  {
+    py::gil_scoped_release release;
+    r = pair_seams({seam, adjacent}, costs, threads);
+  }
+  py::dict d;
+  d["partner"] = column(r.partner, id_or_none);
+  const Cost total = parts_units + r.objective_change;
+  d["objective_total"] = double(total) / kDefaultCostScale;
+  if (costs.objective == Objective::quads) {
+    d["triangle_cost"] = costs.triangle_cost;
+    d["lower_bound"] = lower_bound_degrees(parts_units, r.dual_lowering);
+    d["optimality_certified"] = r.certified && 4 * total == 4 * parts_units - r.dual_lowering;
+  }
+  d["pairs_across"] = r.pairs_across;
+  d["seam_graph_faces"] = r.seam_graph_faces;
+  d["seam_graph_edges"] = r.seam_graph_edges;
+  d["certified"] = r.certified;
+  d["seconds"] = r.seconds;
+  return d;
+}
+
 // quad_of on each row of two (k, 3) arrays of paired triangles: the (k, 4) quads, in the first's
 // orientation. RuntimeError naming the first pair whose triangles do not share exactly two
 // corners. O(k), the GIL released.
@@ -255,7 +369,16 @@ py::array_t<std::int64_t> quads_of_pairs_py(const Int64Array& first, const Int64
 
 void add_partition(py::module_& m) {
   m.def("pair_part", &pair_part_py, py::arg("first_face"), py::arg("corners"), py::arg("augment"),
-        py::arg("band_radius"), py::arg("threads"));
+        py::arg("band_radius"), py::arg("threads"), py::arg("objective") = "pairs",
+        py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("max_corner_deviation") = py::none(), py::arg("sharp_angle") = py::none(),
+        py::arg("positions") = py::none());
+  m.def("pair_seams", &pair_seams_py, py::arg("faces"), py::arg("corners"), py::arg("positions"),
+        py::arg("sides"), py::arg("distance"), py::arg("partner"), py::arg("dual"),
+        py::arg("adjacencies"), py::arg("parts_units"), py::arg("objective"),
+        py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("max_corner_deviation") = py::none(), py::arg("sharp_angle") = py::none(),
+        py::arg("threads") = 1);
   m.def("pair_open_edges", &pair_open_edges_py, py::arg("open_edges"));
   m.def("repair_cuts", &repair_cuts_py, py::arg("faces"), py::arg("corners"), py::arg("sides"),
         py::arg("distance"), py::arg("partner"), py::arg("adjacencies"), py::arg("augment"),

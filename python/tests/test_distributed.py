@@ -163,7 +163,8 @@ def check_run(stats, out, mesh, in_memory):
 
 def test_closed_mesh_of_a_million_triangles(mesh, client, in_memory, tmp_path):
     out = tmp_path / "quads.ply"
-    stats = finish(*run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=3))
+    stats = finish(*run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=3,
+                        objective="pairs"))
     check_run(stats, out, mesh, in_memory)
     assert stats["triangles_left"] == 0
     assert stats["parts"] == 3 and stats["part_cut_edges"] > 0
@@ -175,7 +176,8 @@ def test_parts_left_unpaired_are_paired_across_the_cuts(small_mesh, client, tmp_
     out = tmp_path / "quads.ply"
     m = len(small_mesh[2])
     bounds = [0, m // 4 + 1, m // 2, 3 * m // 4 + 1, m]
-    stats = finish(*run(pd.quadrangulate, str(small_mesh[0]), str(out), client, parts=bounds))
+    stats = finish(*run(pd.quadrangulate, str(small_mesh[0]), str(out), client, parts=bounds,
+                        objective="pairs"))
     check_run(stats, out, small_mesh, petersen.quadrangulate(small_mesh[1], small_mesh[2]))
     assert stats["unpaired_after_parts"] >= 4 and stats["parts_certified"] is True
     assert stats["repair_unpaired_before"] == stats["unpaired_after_parts"]
@@ -190,15 +192,60 @@ def test_an_open_mesh_keeps_the_triangles_no_pairing_takes(client, tmp_path):
     F = np.delete(F, [5, 700, 1333], axis=0)
     path, out = tmp_path / "grid.ply", tmp_path / "quads.ply"
     petersen.write_mesh(str(path), V, F)
-    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=3))
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=3,
+                        objective="pairs"))
     check_run(stats, out, (path, V, F), petersen.quadrangulate(V, F, objective="pairs"))
     assert stats["triangles_left"] > 0 and stats["boundary_edges"] > 0
+
+
+@pytest.fixture(scope="module")
+def jittered_open_grid(tmp_path_factory):
+    """An open grid whose points are moved at random in its plane, with faces cut out: quads of
+    many shapes, a boundary and holes."""
+    V, F = open_grid(60, 40)
+    rng = np.random.default_rng(5)
+    V = V + rng.uniform(-0.2, 0.2, V.shape) * [1, 1, 0]
+    F = np.delete(F, rng.choice(len(F), 40, replace=False), axis=0)
+    path = tmp_path_factory.mktemp("dask") / "jittered.ply"
+    petersen.write_mesh(str(path), V, F)
+    return path, V, F
+
+
+@pytest.mark.parametrize("which", ["jittered_open_grid", "small_mesh"])
+def test_the_default_objective_is_bounded_by_the_in_memory_optimum(which, request, client,
+                                                                    tmp_path):
+    # Each part by its certified least-cost pairing, then the seams: the stitched lower bound is
+    # at most the in-memory optimum, which is at most the total found.
+    mesh = request.getfixturevalue(which)
+    path, V, F = mesh
+    out = tmp_path / "quads.ply"
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=4))
+    vertex_bytes, quads, triangles = read_ply_faces(out)
+    assert np.array_equal(vertex_bytes, input_vertex_bytes(path, len(V))), "vertices unchanged"
+    check_faces(quads, triangles, F)
+    assert len(quads) == stats["pairs"] and len(triangles) == stats["triangles_left"]
+    assert stats["objective"] == "quads" and stats["costs_certified"] is True
+    memory = petersen.quadrangulate(V, F)
+    assert memory.stats["optimality_certified"]
+    optimum = memory.stats["objective_total"]
+    assert stats["lower_bound"] <= optimum + 1e-6
+    assert optimum <= stats["objective_total"] + 1e-6
+    assert stats["gap"] == pytest.approx(stats["objective_total"] - stats["lower_bound"])
+    assert stats["optimality_certified"] is (stats["gap"] == 0)
+    assert stats["parts"] == 4 and stats["part_cut_edges"] > 0
+    quality = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=4,
+                          objective="quality", max_corner_deviation=40.0))
+    _, quads, triangles = read_ply_faces(out)
+    check_faces(quads, triangles, F)
+    assert quality["objective"] == "quality" and quality["optimality_certified"] is False
+    assert "lower_bound" not in quality and len(quads) == quality["pairs"]
 
 
 def test_a_worker_killed_mid_run_costs_a_retry(mesh, client, in_memory, tmp_path):
     pids = client.run(os.getpid)
     out = tmp_path / "quads.ply"
-    thread, box = run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=6)
+    thread, box = run(pd.quadrangulate, str(mesh[0]), str(out), client, parts=6,
+                      objective="pairs")
     victim = None
     deadline = time.monotonic() + RUN_TIMEOUT
     while victim is None and thread.is_alive() and time.monotonic() < deadline:
@@ -225,8 +272,14 @@ def test_bad_input_is_named(client, tmp_path):
     petersen.write_mesh(str(text), np.eye(3), np.array([[0, 1, 2]]))
     with pytest.raises(ValueError, match="not a PLY"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client)
-    with pytest.raises(TypeError, match="sharp_angle.*augment"):
-        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, sharp_angle=30)
+    with pytest.raises(TypeError, match="all_quad.*augment, objective"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, all_quad=True)
+    with pytest.raises(TypeError, match="sharp_angle.*objective pairs"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, objective="pairs",
+                         sharp_angle=30)
+    with pytest.raises(TypeError, match="triangle_cost.*objective quality"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, objective="quality",
+                         triangle_cost=30)
     assert not (tmp_path / "out.ply").exists()
 
 

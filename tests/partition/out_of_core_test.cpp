@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/streamed_plate.hpp"
 #include "petersen/io/file_error.hpp"
@@ -18,6 +19,7 @@
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "quad_mesh_check.hpp"
+#include "shared_meshes.hpp"
 
 namespace petersen {
 namespace {
@@ -128,6 +130,183 @@ TEST(OutOfCore, OpenMeshMatchesTheInMemoryMaximum) {
   options.objective = Objective::pairs;  // the maximum, which the parts are compared with
   options.sources = false;
   EXPECT_EQ(stats.pairs, quadrangulate(mesh, options).stats.pairs);
+}
+
+// `mesh` (triangles) written as binary PLY with its positions as floats; returns the mesh as the
+// file holds it, read back by the ordinary reader: the in-memory run it is compared with.
+PolygonMesh write_mesh_ply(const PolygonMesh& mesh, const std::string& path) {
+  PlyStreamWriter out(path,
+                      "element vertex " + std::to_string(mesh.positions.size()) +
+                          "\nproperty float x\nproperty float y\nproperty float z\n",
+                      mesh.face_count());
+  for (const auto& p : mesh.positions) {
+    const float xyz[3] = {float(p[0]), float(p[1]), float(p[2])};
+    out.write_vertex_records({reinterpret_cast<const char*>(xyz), sizeof xyz});
+  }
+  for (std::size_t i = 0; i < mesh.corners.size(); i += 3) {
+    out.write_triangle(mesh.corners[i], mesh.corners[i + 1], mesh.corners[i + 2]);
+  }
+  out.commit();
+  return read_mesh(path);
+}
+
+// The total of a pairing as Objective::quads counts it, from the output file alone: each quad's
+// worst corner plus the price of each triangle left.
+double total_of(const PolygonMesh& output, double triangle_cost) {
+  double total = 0;
+  for (double cost : quad_costs(output)) total += cost;
+  for (FaceId f = 0; f < output.face_count(); ++f)
+    total += output.arity(f) == 3 ? triangle_cost : 0;
+  return total;
+}
+
+// The meshes the cost objectives are checked on: an open jittered grid with holes and a closed
+// jittered torus, as their PLY files hold them.
+std::vector<std::pair<std::string, PolygonMesh>> cost_meshes(const TempDir& dir) {
+  std::vector<std::pair<std::string, PolygonMesh>> meshes;
+  const PolygonMesh open = punch_holes(jittered_grid({.nx = 60, .ny = 40, .jitter = 0.2}), 25, 3);
+  meshes.emplace_back(dir / "open.ply", write_mesh_ply(open, dir / "open.ply"));
+  const PolygonMesh torus = jittered_grid({.nx = 90, .ny = 24, .jitter = 0.2, .torus = true});
+  meshes.emplace_back(dir / "torus.ply", write_mesh_ply(torus, dir / "torus.ply"));
+  return meshes;
+}
+
+// The default objective out of core: a valid pairing whose total is at least the in-memory
+// certified optimum, which is at least the stitched lower bound; one part gives the optimum.
+TEST(OutOfCore, QuadsObjectiveIsBoundedByTheInMemoryOptimum) {
+  const TempDir dir;
+  for (const auto& [path, mesh] : cost_meshes(dir)) {
+    QuadOptions options;
+    options.sources = false;
+    const QuadResult memory = quadrangulate(mesh, options);
+    ASSERT_TRUE(memory.stats.optimality_certified);
+    const double optimum = memory.stats.objective_total;
+    const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+    for (std::uint64_t part : {1000u, 2999u, 100000u}) {
+      const OutOfCoreStats stats =
+          quad_out_of_core(path, dir / "quads.ply",
+                           {.costs = {.objective = Objective::quads}, .part_triangles = part});
+      const PolygonMesh out = read_mesh(dir / "quads.ply");
+      EXPECT_EQ(checked_quads(corners, out, mesh.positions.size()), stats.pairs);
+      EXPECT_TRUE(stats.costs_certified && stats.lower_bound_valid);
+      EXPECT_NEAR(total_of(out, kDefaultTriangleCost), stats.objective_total, 1e-3);
+      EXPECT_LE(stats.lower_bound, optimum + 1e-9) << path << " parts of " << part;
+      EXPECT_LE(optimum, stats.objective_total + 1e-9) << path << " parts of " << part;
+      if (stats.parts == 1) {
+        EXPECT_TRUE(stats.optimality_certified);
+        EXPECT_DOUBLE_EQ(stats.objective_total, optimum);
+        EXPECT_EQ(stats.pairs, memory.stats.pairs);
+      } else {
+        EXPECT_GE(stats.parts, 2u);
+        EXPECT_GT(stats.cut_adjacencies, 0u);
+      }
+    }
+  }
+}
+
+// The cost objectives' output does not depend on the threads: the same bytes from one and two.
+TEST(OutOfCore, CostObjectivesDoNotDependOnThreads) {
+  const TempDir dir;
+  const auto meshes = cost_meshes(dir);
+  const std::string& path = meshes.front().first;
+  for (Objective objective : {Objective::quads, Objective::quality}) {
+    std::string bytes[2];
+    for (std::uint32_t threads : {1u, 2u}) {
+      quad_out_of_core(
+          path, dir / "quads.ply",
+          {.costs = {.objective = objective}, .part_triangles = 1000, .threads = threads});
+      std::ifstream in(dir / "quads.ply", std::ios::binary);
+      bytes[threads - 1].assign(std::istreambuf_iterator<char>(in), {});
+    }
+    EXPECT_FALSE(bytes[0].empty());
+    EXPECT_EQ(bytes[0], bytes[1]) << to_string(objective);
+  }
+}
+
+// --objective quality out of core: each part's cheapest maximum and the seams'; on the closed
+// torus every triangle is paired, and the cost is never below the in-memory optimum.
+TEST(OutOfCore, QualityObjectivePairsEachPartsMaximum) {
+  const TempDir dir;
+  for (const auto& [path, mesh] : cost_meshes(dir)) {
+    QuadOptions options;
+    options.objective = Objective::quality;
+    options.sources = false;
+    const QuadResult memory = quadrangulate(mesh, options);
+    const OutOfCoreStats stats =
+        quad_out_of_core(path, dir / "quads.ply",
+                         {.costs = {.objective = Objective::quality}, .part_triangles = 1500});
+    const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+    const PolygonMesh out = read_mesh(dir / "quads.ply");
+    EXPECT_EQ(checked_quads(corners, out, mesh.positions.size()), stats.pairs);
+    EXPECT_FALSE(stats.lower_bound_valid);
+    EXPECT_FALSE(stats.optimality_certified);
+    EXPECT_LE(stats.pairs, memory.stats.pairs);
+    if (stats.closed) {
+      EXPECT_EQ(stats.triangles_left, 0u);
+      EXPECT_TRUE(stats.perfect_certified);
+      EXPECT_LE(memory.stats.objective_total, stats.objective_total + 1e-9);
+    }
+  }
+}
+
+// The shared meshes of triangles in five parts or more: a valid pairing whose stitched lower bound
+// is at most the in-memory certified optimum, which is at most its total.
+TEST(OutOfCore, SharedMeshesQuadsObjectiveIsBoundedByTheInMemoryOptimum) {
+  const auto shared = testing::shared_mesh_dir();
+  if (!shared) GTEST_SKIP() << "no ../shared/meshes (set PETERSEN_SHARED_MESHES)";
+  const TempDir dir;
+  for (const char* file : {"bunny.off.gz", "3holes.off.gz", "fandisk.obj.gz", "fertility.off.gz",
+                           "armadillo.obj.gz", "rocker-arm.obj.gz"}) {
+    PolygonMesh source = read_mesh(*shared + "/" + file);
+    if (!source.all_triangles()) continue;
+    source.attributes = {};
+    const PolygonMesh mesh = write_mesh_ply(source, dir / "mesh.ply");
+    QuadOptions options;
+    options.sources = false;
+    const QuadResult memory = quadrangulate(mesh, options);
+    ASSERT_TRUE(memory.stats.optimality_certified) << file;
+    const OutOfCoreStats stats = quad_out_of_core(
+        dir / "mesh.ply", dir / "quads.ply",
+        {.costs = {.objective = Objective::quads}, .part_triangles = mesh.face_count() / 5 + 1});
+    EXPECT_GE(stats.parts, 5u) << file;
+    const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+    const PolygonMesh out = read_mesh(dir / "quads.ply");
+    EXPECT_EQ(checked_quads(corners, out, mesh.positions.size()), stats.pairs) << file;
+    // Each quad's cost is rounded to the solver's units (scale_costs): 2^-17 degrees at most.
+    EXPECT_NEAR(total_of(out, kDefaultTriangleCost), stats.objective_total,
+                1e-5 * double(stats.pairs) + 1e-6)
+        << file;
+    EXPECT_LE(stats.lower_bound, memory.stats.objective_total + 1e-9) << file;
+    EXPECT_LE(memory.stats.objective_total, stats.objective_total + 1e-9) << file;
+  }
+}
+
+// The threshold and the sharp angle are honoured inside the parts and across the cuts: no quad
+// of the output is above the threshold, and the sharp angle gives what it gives in memory.
+TEST(OutOfCore, ThresholdAndSharpAngleAreHonoured) {
+  const TempDir dir;
+  for (const auto& [path, mesh] : cost_meshes(dir)) {
+    const OutOfCoreStats stats =
+        quad_out_of_core(path, dir / "quads.ply",
+                         {.costs = {.objective = Objective::quads, .max_corner_deviation = 10.0},
+                          .part_triangles = 1000});
+    const PolygonMesh out = read_mesh(dir / "quads.ply");
+    for (double cost : quad_costs(out)) EXPECT_LE(cost, 10.0 + 1e-9);
+    EXPECT_GT(stats.pairs, 0u);
+    QuadOptions options;
+    options.sources = false;
+    options.triangle_cost = 20.0;
+    options.cuts.sharp_angle_degrees = 5.0;
+    const QuadResult memory = quadrangulate(mesh, options);
+    const OutOfCoreStats sharp = quad_out_of_core(path, dir / "quads.ply",
+                                                  {.costs = {.objective = Objective::quads,
+                                                             .triangle_cost = 20.0,
+                                                             .sharp_angle_degrees = 5.0},
+                                                   .part_triangles = 1000});
+    EXPECT_LE(sharp.lower_bound, memory.stats.objective_total + 1e-9);
+    EXPECT_LE(memory.stats.objective_total, sharp.objective_total + 1e-9);
+    EXPECT_NEAR(total_of(read_mesh(dir / "quads.ply"), 20.0), sharp.objective_total, 1e-3);
+  }
 }
 
 TEST(OutOfCore, RefusesWhatItCannotStreamNamingTheFileAndFace) {

@@ -284,7 +284,7 @@ for command in "render $example" "generate" "match $work/g.txt" "quad $example";
 done
 refuses "--memory-limit on an OFF" "out-of-core conversion reads a binary PLY" \
   "$petersen" quad "$example" "$work/x.ply" --memory-limit 1G
-refuses "--memory-limit with a flag out of core cannot honour" "not --objective, --all-quad" \
+refuses "--memory-limit with a flag out of core cannot honour" "--all-quad: not taken by the out-of-core" \
   "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --all-quad
 refuses "--part-triangles alone" "give --memory-limit" \
   "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000

@@ -2,6 +2,7 @@
 // Binary PLY triangle meshes larger than memory: read by ranges of faces and vertices from a
 // mapped file, written as a stream. The header is read by the one PLY header reader.
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -38,6 +39,11 @@ class PlyTriangleStream {
   /// naming the file, the face and its byte for a face that is not a triangle or names a vertex
   /// out of range. O(count).
   void read_faces(std::uint64_t first, std::uint64_t count, std::span<VertexId> corners) const;
+  /// The positions (properties x, y and z, of any scalar type, as doubles: the values the
+  /// in-memory reader gives) of the vertices `ids`, into `positions` (one per id). Throws
+  /// FileError naming the file when the vertex element has no x, y or z. O(ids), random reads.
+  void read_positions(std::span<const VertexId> ids,
+                      std::span<std::array<double, 3>> positions) const;
   /// The records of vertices first..first+count-1, as they are in the file.
   std::string_view vertex_records(std::uint64_t first, std::uint64_t count) const;
   /// Gives the pages of those faces' or vertices' records back (they stay in the page cache).
@@ -53,6 +59,9 @@ class PlyTriangleStream {
   std::uint64_t vertex_count_ = 0, face_count_ = 0;
   std::size_t vertex_bytes_ = 0, vertex_start_ = 0, face_start_ = 0;
   std::size_t count_bytes_ = 1, face_bytes_ = 13;
+  // Where x, y and z lie in a vertex record and their types; offset SIZE_MAX when absent.
+  std::array<std::size_t, 3> xyz_offset_{};
+  std::array<std::uint8_t, 3> xyz_type_{};
   std::string vertex_declaration_;
 };
 

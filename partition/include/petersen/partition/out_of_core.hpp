@@ -6,14 +6,19 @@
 #include <string>
 
 #include "petersen/matching/options.hpp"
+#include "petersen/partition/partition.hpp"
 
 namespace petersen {
 
 struct OutOfCoreOptions {
+  /// The objective and its costs. Objective::pairs (the default here: the fastest, to 10^9
+  /// triangles) pairs the maximum by the sweep and the band repair; quads and quality pair each
+  /// part by quadrangulate's minimum-cost matching and then the seams (pair_seams).
+  PartCosts costs = {};
   /// The bytes the run may hold; the parts are sized from it (bytes_per_triangle).
   std::uint64_t memory_limit = std::uint64_t{3} << 30;
-  /// Memory one triangle of a part costs at the part step's peak (measured; see
-  /// docs/distributed.md). Zero: the measured default.
+  /// Memory one triangle of a part costs at the part step's peak (measured for each objective;
+  /// see docs/distributed.md). Zero: the measured default.
   std::uint64_t bytes_per_triangle = 0;
   /// Triangles per part; zero: from memory_limit. Tests set it to force many parts.
   std::uint64_t part_triangles = 0;
@@ -35,6 +40,18 @@ struct OutOfCoreStats {
   /// Each part's pairing was maximum for the part (its Tutte–Berge witness), and the repair's
   /// was maximum in its band graph; whole-mesh maximality is proved only by perfect_certified.
   bool parts_certified = false;
+  /// The cost objectives: the pairing's total in degrees (its quads' costs, plus for quads the
+  /// price of every triangle left), the parts' and the seams' matchings having passed their
+  /// certificates (costs_certified).
+  double objective_total = 0;
+  bool costs_certified = false;
+  /// Objective::quads: a lower bound on the whole mesh's optimum, from the parts' duals stitched
+  /// across the cuts (pair_seams), and optimality_certified when it meets objective_total.
+  double lower_bound = 0;
+  bool lower_bound_valid = false;
+  bool optimality_certified = false;
+  /// The cost objectives: pairs made across the cuts, and the seam graph they were chosen in.
+  std::uint64_t seam_pairs = 0, seam_graph_faces = 0;
   std::uint64_t temp_bytes = 0;  ///< the temporary files' size at their largest
   double read_pair_seconds = 0, cut_seconds = 0, repair_seconds = 0, write_seconds = 0;
   double total_seconds = 0;

@@ -12,17 +12,26 @@
 // 3. repair_cuts: the bands of all parts with the cut adjacencies form the band graph; augmenting
 //    paths in it (from the current pairing) pair the triangles the cuts left unpaired.
 //
+// With a cost objective (Objective::quads or quality, as quadrangulate's) the part step pairs
+// each part by the same minimum-cost matching, costs and price as quadrangulate, and reports its
+// band with the corners' positions and its dual there (SeamFace); step 3 is then pair_seams: the
+// bands of all parts and the cut adjacencies are paired again by the same matching, and the
+// parts' duals, stitched across the cuts, bound the whole mesh's optimum from below.
+//
 // Ids are global: FaceId for faces (a part's triangle i is face first_face + i), VertexId for
 // vertices. Every triangle is a face; polygons are not taken (a part names its triangles only).
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/matching/options.hpp"
 #include "petersen/mesh/mesh.hpp"
+#include "petersen/quadrangulate/quadrangulate.hpp"
 
 namespace petersen {
 
@@ -42,6 +51,9 @@ struct PartTriangles {
   std::span<const VertexId> corners = {};
   std::uint32_t carried = 0;
   std::span<const FaceId> carried_partner = {};
+  /// The position of each corner (one per entry of `corners`): read by the cost objectives and
+  /// the sharp-angle cut only, which measure the quads.
+  std::span<const std::array<double, 3>> corner_positions = {};
   std::uint32_t triangle_count() const { return static_cast<std::uint32_t>(corners.size() / 3); }
 };
 
@@ -71,7 +83,37 @@ struct BandFace {
   std::uint32_t distance = 0;
 };
 
+/// What the cost objectives need of the cuts (see pair_seams): an own triangle of a part within
+/// the band (PartPairingOptions::band_radius steps of an open side), its corners and their
+/// positions, its sides' states and distance (as BandFace's), its partner after the part step,
+/// and, for Objective::quads, the part's dual at its two nodes of the doubled graph (v and its
+/// copy v', see min_cost_matching), each with the values of the odd sets holding the node: an edge
+/// across a cut from here has reduced cost 2·cost − dual[k] − the other end's dual[k] in copy k.
+struct SeamFace {
+  FaceId face = kNoFace;
+  std::array<VertexId, 3> corners{};
+  std::array<std::array<double, 3>, 3> positions{};
+  std::array<SideState, 3> sides{};
+  std::uint32_t distance = 0;
+  FaceId partner = kNoFace;
+  std::array<std::int64_t, 2> dual{};
+};
+
+/// The costs of quadrangulate's cost objectives, for the parts and the seams alike.
+struct PartCosts {
+  /// Objective::pairs: the part's maximum matching, moved to the border (the sweep and the band
+  /// repair); quads or quality: the minimum-cost matching of quadrangulate, no carried triangles.
+  Objective objective = Objective::pairs;
+  /// Objective::quads: a triangle left unpaired, in degrees (QuadOptions::triangle_cost).
+  double triangle_cost = kDefaultTriangleCost;
+  /// Pairs whose quad costs more are refused (QuadOptions::max_corner_deviation).
+  std::optional<double> max_corner_deviation = {};
+  /// Edges whose triangles fold by more are cut (CutOptions::sharp_angle_degrees).
+  std::optional<double> sharp_angle_degrees = {};
+};
+
 struct PartPairingOptions {
+  PartCosts costs = {};
   Augment augment = Augment::local;
   /// The band holds the triangles at most this many steps from the open edges: repair_cuts can
   /// grow its band graph up to here. O(band_radius · open edges) band faces on a regular surface.
@@ -93,7 +135,13 @@ struct PartPairing {
   HugeVector<FaceId> partner;
   std::vector<FaceId> unpaired;      ///< global ids, ascending
   std::vector<OpenEdge> open_edges;  ///< ascending by (low, high, face)
-  std::vector<BandFace> band;        ///< ascending by face
+  std::vector<BandFace> band;        ///< ascending by face (Objective::pairs)
+  std::vector<SeamFace> seam;        ///< the cost objectives' band, ascending by face
+  /// The cost objectives: the part's certified optimum in the solver's units (scale_costs):
+  /// quads the matched costs plus the price of every triangle left, quality the matched costs.
+  Cost objective_units = 0;
+  /// The cost objectives: the part's minimum-cost matching passed its certificate check.
+  bool optimality_certified = false;
   /// The part's structural cuts that are no open edge (non-manifold, degenerate, duplicate,
   /// polygon): any of them makes the whole mesh not closed.
   std::uint64_t inner_structural_cuts = 0;
@@ -108,10 +156,13 @@ struct PartPairing {
 
 /// Pairs the triangles of one part (see the top of this file). Throws std::invalid_argument when
 /// carried_partner does not have `carried` entries or names a partner that does not name it back
-/// (both inside the part). Throws MeshError naming the
+/// (both inside the part), and with a cost objective when triangles are carried or the corner
+/// positions are missing (and for a sharp angle without them). Throws MeshError naming the
 /// global face for a corner equal to 2^32 - 1 or a part past 2^32 - 1 faces; throws
 /// std::logic_error if the pairing fails its verifier. O(m log m) for m triangles (the vertex
-/// renumbering), plus the pairable graph and the matching (maximum_matching, augment.hpp).
+/// renumbering), plus the pairable graph and the matching (maximum_matching, augment.hpp; with a
+/// cost objective min_cost_matching or min_cost_maximum_matching, twice the work of a perfect
+/// matching's on the part).
 PartPairing pair_part(const PartTriangles& part, const PartPairingOptions& options = {});
 
 /// Two triangles of different parts across a cut edge {low, high} that they alone share, with
@@ -172,5 +223,50 @@ struct RepairResult {
 /// if a matching fails its verifier, std::invalid_argument when partner and band differ in size.
 /// O(b log b) for b band faces, plus the augmentation.
 RepairResult repair_cuts(const RepairInput& input, const RepairOptions& options = {});
+
+/// The seams of all parts (SeamFace, any order, each face once) and the cut adjacencies.
+struct SeamInput {
+  std::span<const SeamFace> faces;
+  std::span<const CutAdjacency> adjacencies;
+};
+
+struct SeamResult {
+  /// Each seam face's partner after the seam step (same order as SeamInput::faces).
+  std::vector<FaceId> partner;
+  /// The seam graph's total after the step minus before it, in the solver's units: added to the
+  /// parts' objective_units, the whole pairing's total. Never positive for Objective::quads (the
+  /// parts' pairs in the seam graph are one of its matchings).
+  Cost objective_change = 0;
+  /// Objective::quads: what stitching the parts' duals across the cuts lost, in the certificate's
+  /// units (twice the doubled graph's costs): Σ parts' objective_units − dual_lowering / 4 is a
+  /// lower bound on the whole mesh's optimum (lower_bound_degrees).
+  std::int64_t dual_lowering = 0;
+  std::uint64_t seam_graph_faces = 0, seam_graph_edges = 0;
+  std::uint64_t pairs_across = 0;  ///< pairs of the seam graph across a cut after the step
+  /// The seam graph's matching passed its certificate check (of the objective's matching).
+  bool certified = false;
+  double seconds = 0;
+};
+
+/// Pairs across the cuts with a cost objective. The seam graph holds the seam faces within the
+/// bands' depth of a cut adjacency (across allowed edges; with their partners) whose partners are
+/// seam faces too or none (a face paired outside the seams is held), with their
+/// pairable sides inside a part and the cut adjacencies as edges, where the options allow them
+/// (the sharp angle, the corner threshold), each costing its quad as quadrangulate measures it
+/// (pairable_edge_quality, from the lower face). Its matching is solved again from scratch:
+/// Objective::quads by min_cost_matching at the triangle price, quality by
+/// min_cost_maximum_matching; each certificate is checked. The parts' pairs there are one of its
+/// matchings, so quads' total never rises and quality's pairs never fall.
+/// For Objective::quads it also stitches the parts' duals: every cut adjacency whose reduced cost
+/// (SeamFace::dual) is negative in a copy lowers its ends' node duals by that much, which keeps
+/// every other constraint of the whole mesh's doubled graph (a node's dual is free, lowering it
+/// only raises the reduced costs at it), so the stitched duals are feasible for the whole mesh.
+/// Throws std::invalid_argument naming a face given twice or an adjacency whose face is no seam
+/// face, std::logic_error if a certificate fails. O(s log s) for s seam faces plus the matching.
+SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint32_t threads = 1);
+
+/// The lower bound on the whole mesh's Objective::quads optimum, in degrees, from the parts'
+/// certified optima (the sum of their objective_units) and the seam step's dual_lowering.
+double lower_bound_degrees(Cost parts_units, std::int64_t dual_lowering);
 
 }  // namespace petersen
