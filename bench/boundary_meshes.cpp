@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "memory_pool.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
 #include "petersen/generators/polygon_generators.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 
@@ -60,7 +60,7 @@ void run(const std::string& name, const PolygonMesh& mesh) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   std::printf(
       "| mesh | triangles | polygons | cut edges | greedy left | pairs | left (maximum) | "
       "certified | all-quad added vertices | time s | all-quad time s |\n"

@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "memory_pool.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
 
@@ -54,7 +54,7 @@ double gzip_seconds(const std::string& path) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   std::vector<std::string> files(argv + 1, argv + argc);
   const std::string shared = PETERSEN_SHARED_MESHES;
   if (files.empty()) {

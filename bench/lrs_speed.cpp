@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "memory_pool.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -68,7 +68,7 @@ void compare_with_ps(const std::string& name, const PolygonMesh& mesh) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   print_header();
   if (argc > 1) {
     for (int i = 1; i < argc; ++i) compare_with_ps(argv[i], read_mesh(argv[i]));

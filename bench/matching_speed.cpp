@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "bfs_floor.hpp"
+#include "memory_pool.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/generators/graph_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/perfect_matching.hpp"
@@ -132,7 +132,7 @@ void measure(const std::string& name, const CubicGraph& g) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   std::vector<std::string> files(argv + 1, argv + argc);
   const bool defaults = files.empty();
   if (defaults) {

@@ -87,8 +87,8 @@ Row by_petersen(const PolygonMesh& mesh, std::string method, const QuadOptions& 
 Row by_lemon(const PolygonMesh& mesh) {
   const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
-  const HugeVector<double> degrees = bench::dual_edge_costs(mesh, dual);
-  const HugeVector<Cost> costs = scale_costs(degrees);
+  const std::pmr::vector<double> degrees = bench::dual_edge_costs(mesh, dual);
+  const std::pmr::vector<Cost> costs = scale_costs(degrees);
   std::vector<std::uint32_t> mate(g.node_count());
   std::int64_t total = 0;
   bool perfect = false;

@@ -14,10 +14,10 @@
 #include <string_view>
 #include <vector>
 
+#include "memory_pool.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/generators/graph_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/matching/avoiding.hpp"
 
@@ -54,7 +54,7 @@ CubicGraph plate_dual_near(std::uint32_t n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   std::vector<ReductionChooser> choosers = {ReductionChooser::ds, ReductionChooser::gw};
   std::uint32_t ds_max = 1u << 21;
   bool random = false;

@@ -25,9 +25,10 @@
 #include <vector>
 
 #include "dual_costs.hpp"
+#include "memory_pool.hpp"
 #include "petersen/dualize/dual.hpp"
 #include "petersen/dualize/quad_quality.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/lemon_peer/lemon_peer.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
@@ -66,8 +67,8 @@ void measure(const std::string& name, const PolygonMesh& mesh, bool with_lemon, 
              std::uint32_t threads) {
   const Dual dual = build_dual(mesh);
   const CubicGraph& g = dual.graph;
-  const HugeVector<double> degrees = bench::dual_edge_costs(mesh, dual);
-  const HugeVector<Cost> costs = scale_costs(degrees);
+  const std::pmr::vector<double> degrees = bench::dual_edge_costs(mesh, dual);
+  const std::pmr::vector<Cost> costs = scale_costs(degrees);
   std::vector<double> ours, ours_cpu, ps, ps_cpu;
   MinCostResult result;
   for (int round = 0; round < rounds; ++round) {
@@ -131,7 +132,7 @@ void measure(const std::string& name, const PolygonMesh& mesh, bool with_lemon, 
 
 int main(int argc, char** argv) {
   // As the CLI does: the rounds after the first reuse the memory the first one released.
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   std::vector<std::string> files;
   bool with_lemon = true;
   int rounds = 3;

@@ -7,10 +7,14 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory_resource>
+#include <optional>
 
 #include "json_text.hpp"
+#include "memory_pool.hpp"
 #include "petersen/generators/streamed_plate.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/huge_page_pool.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/partition/out_of_core.hpp"
@@ -198,18 +202,25 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
   if (!ends_with_nocase(args.output, ".ply")) {
     throw CLI::ValidationError("OUT", "the out-of-core conversion writes binary PLY (.ply)");
   }
-  // Each part's arrays are the next part's: kept in the pool up to the limit, they are not
-  // faulted in afresh for every part (fresh pages are the slow ones on a virtual machine,
-  // huge_pages.hpp). The pool stays off where the environment switches it off.
-  const char* pool = std::getenv("PETERSEN_HUGE_PAGE_POOL");
-  if (pool == nullptr || std::string_view(pool) != "off")
-    huge_pages::enable_pool(args.memory_limit);
+  // Each part's arrays are the next part's: kept in a pool up to the memory limit, they are not
+  // faulted in afresh for every part (memory_pool.hpp). It is the default resource for the run,
+  // in place of the program's, so that the run keeps no more than the limit.
+  std::optional<HugePagePool> pool;
+  if (huge_page_pool_wanted()) pool.emplace(args.memory_limit);
+  std::pmr::memory_resource* const before = std::pmr::get_default_resource();
+  if (pool) std::pmr::set_default_resource(&*pool);
+  std::pmr::memory_resource* const memory = pool ? &*pool : before;
+  struct Restore {
+    std::pmr::memory_resource* before;
+    ~Restore() { std::pmr::set_default_resource(before); }
+  } restore{before};
   const OutOfCoreStats s = quad_out_of_core(args.input, args.output,
                                             {.costs = args.costs,
                                              .memory_limit = args.memory_limit,
                                              .part_triangles = args.part_triangles,
                                              .augment = *augment,
-                                             .threads = args.threads});
+                                             .threads = args.threads,
+                                             .memory = memory});
   std::printf("%s: %llu triangles in %llu part%s of %llu, out of core, objective %s\n",
               args.input.c_str(), (unsigned long long)s.triangles, (unsigned long long)s.parts,
               s.parts == 1 ? "" : "s", (unsigned long long)s.part_triangles,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory_resource>
 #include <optional>
 #include <vector>
 
@@ -11,13 +12,15 @@
 #include "json_text.hpp"
 #include "keep_edges.hpp"
 #include "match_command.hpp"
+#include "memory_pool.hpp"
 #include "option_checks.hpp"
 #include "out_of_core_command.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/knot_tube.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/huge_page_pool.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
@@ -41,7 +44,7 @@ void warn_dropped(const std::string& path, const std::vector<std::string>& dropp
 
 PolygonMesh read_mesh_warning(const std::string& path, bool strict = false) {
   std::vector<std::string> dropped;
-  PolygonMesh mesh = read_mesh(path, &dropped, {.strict = strict});
+  PolygonMesh mesh = read_mesh(path, &dropped, {.strict = strict, .memory = program_memory()});
   warn_dropped(path, dropped);
   return mesh;
 }
@@ -228,6 +231,7 @@ int quad(const QuadArgs& args) {
   // The tool writes the mesh and the stats, never the quads' sources: not asking for them lets
   // lrs free the input's corners early (12 bytes per triangle at its peak).
   report.options.sources = false;
+  report.options.memory = program_memory();
   Stopwatch total, clock;
   PolygonMesh mesh = read_mesh_warning(args.input, args.strict);
   if (args.drop_duplicate_faces) {
@@ -247,17 +251,18 @@ int quad(const QuadArgs& args) {
   report.options.cuts.user_edges = keep_edges;
   report.load_seconds = clock.lap();
   const auto input_vertices = static_cast<VertexId>(mesh.positions.size());
-  QuadResult result;
-  try {
-    // Consumed: its positions become the output's, not a copy of them.
-    result = quadrangulate(std::move(mesh), report.options);
-  } catch (const MeshError& e) {
-    throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
-  }
+  QuadResult result = [&] {
+    try {
+      // Consumed: its positions become the output's, not a copy of them.
+      return quadrangulate(std::move(mesh), report.options);
+    } catch (const MeshError& e) {
+      throw MeshError(args.input + ": " + e.what());  // the reader's own errors name it already
+    }
+  }();
   report.quad = result.stats;
   // The rest of the input is not needed past this point: freed before the output's bytes are
   // built beside the output mesh, where the peak would otherwise be.
-  mesh = {};
+  mesh = PolygonMesh(mesh.memory());  // on its resource: `= {}` from another would keep them
   clock.lap();
   warn_dropped(args.output, write_mesh(args.output, result.mesh));
   report.write_seconds = clock.lap();
@@ -610,7 +615,12 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
 
 int main(int argc, char** argv) {
   using namespace petersen::cli;
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  // The program's pool (memory_pool.hpp), handed to the library in the options and the default
+  // resource of this process.
+  if (huge_page_pool_wanted()) {
+    program_pool = new petersen::HugePagePool;
+    std::pmr::set_default_resource(program_pool);
+  }
   CLI::App app{
       "petersen: perfect matchings of cubic bridgeless graphs, and quad meshes from closed "
       "triangle meshes"};

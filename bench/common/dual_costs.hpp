@@ -11,10 +11,10 @@ namespace petersen::bench {
 /// For each edge e of `dual` (build_dual of the all-triangle `mesh`), the worst-corner cost of the
 /// quad its two triangles make, in the orientation of its first end: quad_across at the side e
 /// crosses, with the other triangle's corner off that side. O(F).
-inline HugeVector<double> dual_edge_costs(const PolygonMesh& mesh, const Dual& dual) {
+inline std::pmr::vector<double> dual_edge_costs(const PolygonMesh& mesh, const Dual& dual) {
   const CubicGraph& graph = dual.graph;
   const auto& p = mesh.positions;
-  HugeVector<double> cost(graph.edge_count());
+  std::pmr::vector<double> cost(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     // Halfedge 3t + k runs from corner k to corner k + 1 of triangle t; its twin runs back, so
     // the other triangle's corner off the edge is the one after the twin's end.

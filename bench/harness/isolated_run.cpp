@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "memory_pool.hpp"
 #include "verification_error.hpp"
 
 namespace petersen::bench {
@@ -72,6 +73,7 @@ RunRecord run_isolated(const std::function<Measures()>& body, double cap_seconds
   if (pid < 0) throw std::runtime_error("fork failed");
   if (pid == 0) {
     close(fds[0]);
+    bench::drop_inherited_pool();
     child(body, fds[1]);
   }
   close(fds[1]);

@@ -9,7 +9,7 @@
 #include <iostream>
 #include <sstream>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "memory_pool.hpp"
 #include "plots.hpp"
 #include "report.hpp"
 
@@ -26,7 +26,7 @@ std::vector<std::string> split(const std::string& list) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  petersen::huge_pages::enable_pool_unless_switched_off();
+  petersen::bench::install_memory_pool();
   using namespace petersen::bench;
   CLI::App app{"petersen_bench: the paper's §4 experiment, our figures beside the paper's"};
   bool full = false, no_meshes = false;

@@ -3,13 +3,14 @@
 #include <map>
 #include <memory>
 
+#include "memory_pool.hpp"
 #include "petersen/generators/surface_generators.hpp"
 
 namespace petersen::micro {
 
-// benchmark_main owns main(): the pool (huge_pages.hpp) is turned on before it runs, as the CLI
-// and the other benchmarks turn it on first thing.
-[[maybe_unused]] const bool kPoolOn = (huge_pages::enable_pool_unless_switched_off(), true);
+// benchmark_main owns main(): the pool (memory_pool.hpp) is installed before it runs, as the
+// other benchmarks install it first thing.
+[[maybe_unused]] const bool kPoolOn = (bench::install_memory_pool(), true);
 
 const MicroInput& plate_input(std::uint64_t triangles) {
   static std::map<std::uint64_t, std::unique_ptr<MicroInput>> cache;

@@ -136,9 +136,9 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
   return field;
 }
 
-HugeVector<double> side_alignment(const CrossField& field) {
+std::pmr::vector<double> side_alignment(const CrossField& field) {
   const std::size_t n = field.cross.size();
-  HugeVector<double> alignment(3 * n, 0.0);
+  std::pmr::vector<double> alignment(3 * n, 0.0);
   for (std::size_t t = 0; t < n; ++t) {
     const Complex u = field.cross[t];
     const double confidence = std::min(1.0, std::abs(u));
@@ -155,9 +155,9 @@ HugeVector<double> side_alignment(const CrossField& field) {
   return alignment;
 }
 
-HugeVector<double> pairable_edge_flow(const PairableGraph& graph,
-                                      std::span<const double> alignment) {
-  HugeVector<double> flow(graph.edge_count());
+std::pmr::vector<double> pairable_edge_flow(const PairableGraph& graph,
+                                            std::span<const double> alignment) {
+  std::pmr::vector<double> flow(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId s = graph.edge_ends[2 * std::size_t{e}],
                  t = graph.edge_ends[2 * std::size_t{e} + 1];

@@ -78,7 +78,7 @@ Dual dual_of(std::size_t face_count_in, std::size_t vertex_count, Corner corner)
   // Dual edge e is written over bucket[e]: by then the 2e + 2 entries its edges consumed lie
   // behind the read position, so the bucket's memory doubles as the edge list.
   // node_edges[3t + k], the dual edge across edge k of triangle t, keeps the triangle's order.
-  HugeVector<EdgeId> node_edges(halfedge_count);
+  std::pmr::vector<EdgeId> node_edges(halfedge_count);
   auto& edges = bucket;
   EdgeId edge_count = 0;
   for (std::size_t v = 0; v < vertex_count; ++v) {
@@ -93,7 +93,7 @@ Dual dual_of(std::size_t face_count_in, std::size_t vertex_count, Corner corner)
       group = end;
     }
   }
-  HugeVector<NodeId> edge_ends(2 * std::size_t{edge_count});
+  std::pmr::vector<NodeId> edge_ends(2 * std::size_t{edge_count});
   for (EdgeId e = 0; e < edge_count; ++e) {
     edge_ends[2 * e] = edges[e][0];
     edge_ends[2 * e + 1] = edges[e][1];

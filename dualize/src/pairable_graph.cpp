@@ -367,7 +367,7 @@ class PairableGraphBuilder {
   const bool triangles_only_;
   const PolygonHalfedges half_;
   std::vector<std::uint8_t> degenerate_face_;  // per polygon face; empty for a triangle mesh
-  HugeVector<NodeId> face_node_;               // per face; empty for a triangle mesh
+  std::pmr::vector<NodeId> face_node_;         // per face; empty for a triangle mesh
 };
 
 // The vertices cut into slices of about kSliceEntries halfedges, at least one per thread: each
@@ -418,13 +418,17 @@ std::vector<EdgeId> add_wave(PairableGraph& graph, std::span<const Slice> slices
 }  // namespace
 
 PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts,
-                                   std::uint32_t threads_wanted) {
+                                   std::uint32_t threads_wanted,
+                                   std::pmr::memory_resource* memory) {
   check_faces(mesh);
   check_sizes(mesh, cuts);
-  PairableGraph graph;
+  PairableGraph graph{.node_face = std::pmr::vector<FaceId>(memory),
+                      .node_edges = std::pmr::vector<EdgeId>(memory),
+                      .edge_ends = std::pmr::vector<NodeId>(memory),
+                      .chosen_cut_ends = std::pmr::vector<NodeId>(memory)};
   const PairableGraphBuilder builder(mesh, cuts, graph);
   const auto halfedges = [&](auto visit) { builder.halfedges().for_each(visit); };
-  const HugeVector<std::uint32_t> starts = bucket_starts(mesh.positions.size(), halfedges);
+  const std::pmr::vector<std::uint32_t> starts = bucket_starts(mesh.positions.size(), halfedges);
   const std::uint32_t threads = resolve_threads(threads_wanted);
   const std::vector<std::size_t> slice_start = slice_starts(starts, mesh.positions.size(), threads);
   const std::uint64_t slices = slice_start.size() - 1;

@@ -77,9 +77,10 @@ double quad_corner_deviation(const Vec& a, const Vec& b, const Vec& c, const Vec
   return deviation_max;
 }
 
-HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh,
-                                         std::uint32_t threads) {
-  HugeVector<double> degrees(graph.edge_count());
+std::pmr::vector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh,
+                                               std::uint32_t threads,
+                                               std::pmr::memory_resource* memory) {
+  std::pmr::vector<double> degrees(graph.edge_count(), memory);
   const auto& p = mesh.positions;
   auto other_end = [&](EdgeId e, NodeId v) {
     const std::size_t at = 2 * std::size_t{e};

@@ -143,8 +143,8 @@ void split_triangles(PolygonMesh& mesh, std::uint32_t splits, SeededRandom& rng)
 // twin[h]: the halfedge running back along halfedge h's edge (halfedge 3t + k runs from corner k
 // of triangle t to corner k + 1). 4 bytes per halfedge, where a map of directed edges costs ten
 // times that and a hash per step. Throws MeshError unless every edge has two halfedges.
-HugeVector<std::uint32_t> twins(const PolygonMesh& mesh) {
-  HugeVector<std::uint32_t> twin(mesh.corners.size());
+std::pmr::vector<std::uint32_t> twins(const PolygonMesh& mesh) {
+  std::pmr::vector<std::uint32_t> twin(mesh.corners.size());
   const EdgeGroups groups = PolygonHalfedges(mesh).group();
   for_each_edge_group(groups, [&](std::uint32_t first, std::uint32_t end) {
     if (end - first != 2) throw MeshError("randomize_triangulation: the mesh is not closed");
@@ -158,7 +158,7 @@ HugeVector<std::uint32_t> twins(const PolygonMesh& mesh) {
 // the triangulation stays simplicial.
 void flip_edges(PolygonMesh& mesh, std::uint32_t flips, SeededRandom& rng) {
   auto& corners = mesh.corners;
-  HugeVector<std::uint32_t> twin = twins(mesh);
+  std::pmr::vector<std::uint32_t> twin = twins(mesh);
   auto from = [&](std::uint32_t h) { return corners[h]; };
   auto to = [&](std::uint32_t h) { return corners[h - h % 3 + (h % 3 + 1) % 3]; };
   auto next = [](std::uint32_t h) { return h - h % 3 + (h % 3 + 1) % 3; };
@@ -252,7 +252,7 @@ PolygonMesh spatially_ordered(const PolygonMesh& mesh) {
     return x;
   };
   const std::size_t face_count = mesh.face_count();
-  HugeVector<std::array<std::uint64_t, 2>> order(face_count);
+  std::pmr::vector<std::array<std::uint64_t, 2>> order(face_count);
   for (std::size_t t = 0; t < face_count; ++t) {
     std::uint64_t key = 0;
     for (int d = 0; d < 3; ++d) {
@@ -267,7 +267,7 @@ PolygonMesh spatially_ordered(const PolygonMesh& mesh) {
   std::sort(order.begin(), order.end());
   PolygonMesh out;
   out.corners.resize(mesh.corners.size());
-  HugeVector<VertexId> renamed(mesh.positions.size(), 0xFFFFFFFFu);
+  std::pmr::vector<VertexId> renamed(mesh.positions.size(), 0xFFFFFFFFu);
   out.positions.reserve(mesh.positions.size());
   for (std::size_t i = 0; i < order.size(); ++i) {
     const std::size_t t = order[i][1];

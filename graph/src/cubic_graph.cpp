@@ -35,7 +35,8 @@ CubicGraph CubicGraph::from_edges(std::uint32_t node_count,
   return g;
 }
 
-CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends) {
+CubicGraph CubicGraph::from_incidence(std::pmr::vector<EdgeId> node_edges,
+                                      std::pmr::vector<NodeId> edge_ends) {
   if (node_edges.size() % 3 != 0 || edge_ends.size() != node_edges.size()) {
     throw GraphError(
         "a cubic graph has 3 edge slots per node and as many edge ends (3n/2 edges); got " +
@@ -64,10 +65,7 @@ CubicGraph CubicGraph::from_incidence(HugeVector<EdgeId> node_edges, HugeVector<
   }
   // Every slot matched a distinct edge end and there are exactly 2·edge_count slots, so every
   // end of every edge is listed once.
-  CubicGraph g;
-  g.node_edges_ = std::move(node_edges);
-  g.edge_ends_ = std::move(edge_ends);
-  return g;
+  return CubicGraph(std::move(node_edges), std::move(edge_ends));
 }
 
 void CubicGraph::write_neighbour_rows(NodeId* rows) const {
@@ -90,13 +88,13 @@ void CubicGraph::write_neighbour_rows(NodeId* rows) const {
   }
 }
 
-HugeVector<NodeId> CubicGraph::into_neighbour_rows() && {
+std::pmr::vector<NodeId> CubicGraph::into_neighbour_rows() && {
   write_neighbour_rows(node_edges_.data());
-  edge_ends_ = HugeVector<NodeId>();  // `= {}` would keep the capacity
+  free_storage(edge_ends_);  // `= {}` would keep the capacity
   return std::move(node_edges_);
 }
 
-HugeVector<NodeId> CubicGraph::into_neighbour_rows(
+std::pmr::vector<NodeId> CubicGraph::into_neighbour_rows(
     std::uint32_t threads, const std::function<void(std::span<const NodeId>)>& beside) && {
   // The rows only read edge_ends_ and write node_edges_, so `beside` may read the edges meanwhile.
   run_parallel(threads, 2, [&](std::uint32_t task) {
@@ -106,7 +104,7 @@ HugeVector<NodeId> CubicGraph::into_neighbour_rows(
       beside(edge_ends_);
     }
   });
-  edge_ends_ = HugeVector<NodeId>();
+  free_storage(edge_ends_);
   return std::move(node_edges_);
 }
 

@@ -36,9 +36,9 @@ struct Descriptor {
   }
 };
 
-FileBytes allocate(const std::string& path, std::size_t size) {
+FileBytes allocate(const std::string& path, std::size_t size, std::pmr::memory_resource* memory) {
   try {
-    return {make_huge_array<char>(size), 0, {}};
+    return {make_raw_array<char>(size, memory), 0, {}};
   } catch (const std::bad_alloc&) {
     throw FileError(path, 0, "cannot allocate " + std::to_string(size) + " bytes to read it");
   }
@@ -46,7 +46,8 @@ FileBytes allocate(const std::string& path, std::size_t size) {
 
 // A copy of the first `bytes.size` bytes in a buffer of `capacity` bytes.
 FileBytes grown(const std::string& path, const FileBytes& bytes, std::size_t capacity) {
-  FileBytes larger = allocate(path, capacity);
+  std::pmr::memory_resource* const memory = bytes.data.get_deleter().memory;
+  FileBytes larger = allocate(path, capacity, memory);
   std::memcpy(larger.data.get(), bytes.data.get(), bytes.size);
   larger.size = bytes.size;
   return larger;
@@ -57,7 +58,7 @@ FileBytes grown(const std::string& path, const FileBytes& bytes, std::size_t cap
 // fresh memory slowly (a virtual machine with free page reporting: 0.2-0.3 GB/s) reading a
 // 2.5 GB file into one takes several times as long as mapping and scanning it. Read ahead in
 // full (MAP_POPULATE): the parsers read every byte once, in order.
-FileBytes read_raw(const std::string& path) {
+FileBytes read_raw(const std::string& path, std::pmr::memory_resource* memory) {
   Descriptor file(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
   if (file.fd < 0) fail(path, "cannot open for reading", errno);
   struct stat status;
@@ -73,7 +74,7 @@ FileBytes read_raw(const std::string& path) {
   // that sees the end need no growth).
   std::size_t capacity =
       (S_ISREG(status.st_mode) ? static_cast<std::size_t>(status.st_size) : 1 << 20) + 1;
-  FileBytes bytes = allocate(path, capacity);
+  FileBytes bytes = allocate(path, capacity, memory);
   for (;;) {
     if (bytes.size == capacity) {
       capacity *= 2;
@@ -112,7 +113,7 @@ constexpr std::size_t kDeflateMaxRatio = 1032;
 
 // libdeflate decompresses whole members into a buffer of known size, in about half the time of
 // zlib's gzread (armadillo-sub2: 20 MB gzip, 26 MB PLY).
-FileBytes gunzip(const std::string& path, std::string_view in) {
+FileBytes gunzip(const std::string& path, std::string_view in, std::pmr::memory_resource* memory) {
   const std::size_t limit = std::min(in.size() * kDeflateMaxRatio, physical_memory());
   // The last member's trailer holds its size mod 2^32 (exact for the usual single member); below
   // the compressed size it has wrapped, or the file has several members.
@@ -126,7 +127,7 @@ FileBytes gunzip(const std::string& path, std::string_view in) {
     capacity += std::size_t{1} << 32;
   }
   capacity = std::min(capacity, limit);
-  FileBytes out = allocate(path, capacity);
+  FileBytes out = allocate(path, capacity, memory);
   std::unique_ptr<libdeflate_decompressor, DecompressorFree> decompressor(
       libdeflate_alloc_decompressor());
   if (!decompressor) throw FileError(path, 0, "cannot allocate a gzip decompressor");
@@ -180,7 +181,7 @@ void write_gzip(TemporaryFile& file, const std::string& path, std::string_view b
   if (!compressor) throw FileError(path, 0, "cannot allocate a gzip compressor");
   const std::size_t chunk = std::min(bytes.size(), kGzipMemberBytes);
   const std::size_t bound = libdeflate_gzip_compress_bound(compressor.get(), chunk);
-  const HugeArray<char> out = make_huge_array<char>(bound);
+  const RawArray<char> out = make_raw_array<char>(bound);
   do {
     const std::string_view member = bytes.substr(0, chunk);
     const std::size_t size =
@@ -207,10 +208,10 @@ bool ends_with_nocase(std::string_view path, std::string_view suffix) {
   return true;
 }
 
-FileBytes read_file_bytes(const std::string& path) {
-  FileBytes raw = read_raw(path);
+FileBytes read_file_bytes(const std::string& path, std::pmr::memory_resource* memory) {
+  FileBytes raw = read_raw(path, memory);
   if (!is_gzip(raw.view())) return raw;
-  return gunzip(path, raw.view());
+  return gunzip(path, raw.view(), memory);
 }
 
 void write_file_bytes(const std::string& path, std::string_view bytes) {

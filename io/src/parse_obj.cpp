@@ -56,6 +56,7 @@ class ObjReader {
         lines_{bytes},
         at_{source, lines_},
         source_(source),
+        mesh_(options.memory),
         attributes_(mesh_.attributes),
         materials_{attributes_.material_names},
         groups_{attributes_.group_names},

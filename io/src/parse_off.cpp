@@ -85,7 +85,8 @@ struct Declared {
 
 class OffReader {
  public:
-  OffReader(std::string_view bytes) : lines_{bytes} {}
+  OffReader(std::string_view bytes, std::pmr::memory_resource* memory)
+      : lines_{bytes}, mesh_(memory) {}
 
   PolygonMesh read(const std::string& source, std::vector<std::string>& dropped) {
     const text::Located at{source, lines_};
@@ -293,8 +294,8 @@ class OffReader {
 }  // namespace
 
 PolygonMesh parse_off(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped) {
-  return OffReader(bytes).read(source, dropped);
+                      std::vector<std::string>& dropped, std::pmr::memory_resource* memory) {
+  return OffReader(bytes, memory).read(source, dropped);
 }
 
 }  // namespace petersen

@@ -27,8 +27,9 @@ using ply::Use;
 
 class PlyReader {
  public:
-  PlyReader(std::string_view bytes, const std::string& source, std::vector<std::string>& dropped)
-      : bytes_(bytes), source_(source), dropped_(dropped), lines_{bytes} {}
+  PlyReader(std::string_view bytes, const std::string& source, std::vector<std::string>& dropped,
+            std::pmr::memory_resource* memory)
+      : bytes_(bytes), source_(source), dropped_(dropped), lines_{bytes}, mesh_(memory) {}
 
   PolygonMesh read() {
     ply::Header header = ply::read_header(lines_, source_, dropped_);
@@ -388,8 +389,8 @@ class PlyReader {
 }  // namespace
 
 PolygonMesh parse_ply(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped) {
-  return PlyReader(bytes, source, dropped).read();
+                      std::vector<std::string>& dropped, std::pmr::memory_resource* memory) {
+  return PlyReader(bytes, source, dropped, memory).read();
 }
 
 }  // namespace petersen

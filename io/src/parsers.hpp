@@ -12,12 +12,13 @@
 namespace petersen {
 
 /// Each parser appends to `dropped` one line per kind of thing it read past (see read_mesh).
+/// The mesh's arrays are on `memory` (ReadMeshOptions::memory).
 PolygonMesh parse_off(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped);
+                      std::vector<std::string>& dropped, std::pmr::memory_resource* memory);
 PolygonMesh parse_obj(std::string_view bytes, const std::string& source,
                       const ReadMeshOptions& options, std::vector<std::string>& dropped);
 PolygonMesh parse_ply(std::string_view bytes, const std::string& source,
-                      std::vector<std::string>& dropped);
+                      std::vector<std::string>& dropped, std::pmr::memory_resource* memory);
 
 /// Counts what a text reader reads past, per kind, remembering the first line of each; the
 /// dropped list gets one line per kind ("3 'l' lines (polylines), the first at line 12") rather
@@ -52,7 +53,7 @@ class DroppedTally {
 /// Appends `value` for the next element (corner or face) to a per-element attribute array that
 /// stays empty while every value is `none`: at the first other value it is filled with `none` for
 /// the `before` elements already read.
-inline void push_attribute(HugeVector<std::uint32_t>& values, std::uint32_t value,
+inline void push_attribute(std::pmr::vector<std::uint32_t>& values, std::uint32_t value,
                            std::uint32_t none, std::size_t before) {
   if (values.empty()) {
     if (value == none) return;

@@ -212,7 +212,7 @@ PlyStreamWriter::PlyStreamWriter(const std::string& path, const std::string& ver
                                  std::uint64_t face_count)
     : file_(new File{io_detail::TemporaryFile(path)}),
       path_(path),
-      buffer_(make_huge_array<char>(kWriteBuffer)),
+      buffer_(make_raw_array<char>(kWriteBuffer)),
       faces_expected_(face_count) {
   put("ply\nformat binary_little_endian 1.0\ncomment petersen quads\n" + vertex_declaration +
       "element face " + std::to_string(face_count) +

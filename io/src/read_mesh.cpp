@@ -12,18 +12,10 @@ PolygonMesh parse(std::string_view bytes, MeshFormat format, const std::string& 
   if (bytes.empty()) throw FileError(source, 0, "empty file");
   std::vector<std::string> ignored;
   std::vector<std::string>& out = dropped ? *dropped : ignored;
-  PolygonMesh mesh;
-  switch (format) {
-    case MeshFormat::off:
-      mesh = parse_off(bytes, source, out);
-      break;
-    case MeshFormat::obj:
-      mesh = parse_obj(bytes, source, options, out);
-      break;
-    case MeshFormat::ply:
-      mesh = parse_ply(bytes, source, out);
-      break;
-  }
+  // Made on options.memory and moved, never assigned: an assignment across resources copies.
+  PolygonMesh mesh = format == MeshFormat::off   ? parse_off(bytes, source, out, options.memory)
+                     : format == MeshFormat::obj ? parse_obj(bytes, source, options, out)
+                                                 : parse_ply(bytes, source, out, options.memory);
   // A file with no faces is not a mesh the library can do anything with; say so here rather
   // than let an empty surface pass as closed.
   if (mesh.face_count() == 0) throw FileError(source, 0, "no faces");
@@ -49,7 +41,7 @@ PolygonMesh parse_mesh(std::string_view bytes, MeshFormat format, const std::str
 PolygonMesh read_mesh(const std::string& path, std::vector<std::string>* dropped,
                       const ReadMeshOptions& options) {
   const MeshFormat format = mesh_format_of(path);
-  return parse(read_file_bytes(path).view(), format, path, dropped, options);
+  return parse(read_file_bytes(path, options.memory).view(), format, path, dropped, options);
 }
 
 }  // namespace petersen

@@ -85,8 +85,8 @@ void drop_obj_attributes(const MeshAttributes& a, const char* format, bool keeps
 // and the mesh has no columns of those names; else none. A vertex no corner uses gets zeros.
 // float32 when every value is one exactly (as OBJ text written from floats is), else float64.
 std::vector<PropertyColumn> vertex_columns_of(const PolygonMesh& mesh,
-                                              const HugeVector<std::uint32_t>& corner_index,
-                                              const HugeVector<std::array<double, 3>>& values,
+                                              const std::pmr::vector<std::uint32_t>& corner_index,
+                                              const std::pmr::vector<std::array<double, 3>>& values,
                                               std::initializer_list<const char*> names) {
   const std::vector<PropertyColumn>& existing = mesh.attributes.vertex_properties;
   const std::size_t count = names.size();
@@ -335,7 +335,7 @@ void put_obj_texcoords_and_normals(Buffer& out, const std::string& path, const P
 // A statement that sets a face attribute (o, g, usemtl, s), written where the value changes from
 // the face before (none before the first face); a bare statement goes back to none.
 struct FaceStatement {
-  const HugeVector<std::uint32_t>* values;
+  const std::pmr::vector<std::uint32_t>* values;
   const std::vector<std::string>* names;  // null: a number (smoothing groups)
   const char* keyword;
   std::uint32_t none, current;

@@ -9,7 +9,7 @@
 #include <string_view>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/io/file_error.hpp"
 #include "petersen/mesh/mesh.hpp"
 
@@ -17,11 +17,12 @@ namespace petersen {
 
 // The file's bytes, built in memory and written at once. The plain writers size it from an upper
 // bound of the output (every number at its longest), so it never grows and is never filled
-// first; on huge pages and recycled like the meshes' arrays (huge_pages.hpp).
+// first; on the default memory resource, where a program's pool recycles the meshes' arrays
+// (petersen/graph/memory.hpp).
 class Buffer {
  public:
   explicit Buffer(std::size_t bound)
-      : data_(make_huge_array<char>(bound)), end_(data_.get()), capacity_(bound) {}
+      : data_(make_raw_array<char>(bound)), end_(data_.get()), capacity_(bound) {}
 
   /// Makes room for `more` bytes, for writers that cannot bound their output up front (names of
   /// any length): doubles the buffer when it must grow.
@@ -29,7 +30,7 @@ class Buffer {
     const std::size_t used = static_cast<std::size_t>(end_ - data_.get());
     if (capacity_ - used >= more) return;
     const std::size_t capacity = std::max(2 * capacity_, used + more);
-    HugeArray<char> grown = make_huge_array<char>(capacity);
+    RawArray<char> grown = make_raw_array<char>(capacity);
     std::memcpy(grown.get(), data_.get(), used);
     data_ = std::move(grown);
     end_ = data_.get() + used;
@@ -69,7 +70,7 @@ class Buffer {
   static constexpr std::size_t kLongestNumber = 24;
 
  private:
-  HugeArray<char> data_;
+  RawArray<char> data_;
   char* end_;
   std::size_t capacity_;
 };

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <span>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "write_buffer.hpp"

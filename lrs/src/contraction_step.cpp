@@ -11,7 +11,7 @@ enum VertexFlag : std::uint8_t { kProcessed = 1, kNeighbour = 2 };
 // 3: a third already fails the link condition, so the walk round w stops there. It starts at
 // `first`, whose cache line the caller just read, rather than at out(w), a random read.
 std::uint32_t marked_neighbours(const Triangulation& tri, Halfedge first,
-                                const HugeVector<std::uint8_t>& flags) {
+                                const std::pmr::vector<std::uint8_t>& flags) {
   std::uint32_t count = 0;
   Halfedge g = first;
   do {
@@ -27,7 +27,7 @@ ContractionResult contract_to_irreducible(Triangulation& tri) {
   ContractionResult result;
   result.stack.reserve(tri.live_vertices());
   result.processed.reserve(tri.live_vertices());
-  HugeVector<std::uint8_t> flags(tri.vertex_capacity(), 0);
+  std::pmr::vector<std::uint8_t> flags(tri.vertex_capacity(), 0);
   // Edges [u, w] whose contractibility may have changed, last in first out, pushed so that they
   // come out in counter-clockwise order round u: u sweeps round and round, as a walk round its
   // rotation would, which keeps the expansion's flips few.

@@ -5,15 +5,15 @@
 #include <vector>
 
 #include "edge_contraction.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen::lrs {
 
 struct ContractionResult {
   /// Every contraction in the order done; the expansion step undoes them from the back.
-  HugeVector<ContractionRecord> stack;
+  std::pmr::vector<ContractionRecord> stack;
   /// The vertices of T′ in the order they were processed (the paper's u_m, ..., u_1).
-  HugeVector<VertexId> processed;
+  std::pmr::vector<VertexId> processed;
 };
 
 /// Processes the live vertices in id order: contracts contractible edges incident on the vertex,

@@ -14,9 +14,9 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   // Faces numbered in order of their smallest halfedge (no per-halfedge face array and no first
   // halfedge per face: 16 bytes per face off the peak). The vertex and edge arrays go first
   // (`= {}` would keep the buffers).
-  tri.out_ = HugeVector<Halfedge>();
-  tri.degree_ = HugeVector<std::uint32_t>();
-  tri.edge_alive_ = HugeVector<std::uint8_t>();
+  free_storage(tri.out_);
+  free_storage(tri.degree_);
+  free_storage(tri.edge_alive_);
 
   // The triangles with the input's vertex ids and M as the side of each face it crosses (1 byte;
   // 3: none); in the same pass each halfedge's slot in the rows (3f + side) is written over its
@@ -25,7 +25,7 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
   constexpr std::uint8_t kNoSide = 3;
   DualRows k;
   k.triangles.resize(faces);
-  HugeVector<std::uint8_t> matched_side(faces, kNoSide);
+  std::pmr::vector<std::uint8_t> matched_side(faces, kNoSide);
   FaceId f = 0;
   for (Halfedge first = 0; first < halfedges; ++first) {
     if (!tri.smallest_of_face(first)) continue;
@@ -44,8 +44,8 @@ DualRows into_dual_rows(Triangulation&& tri, ExpansionResult&& expansion) {
     ++f;
   }
   if (f != faces) throw std::logic_error("lrs::into_dual_rows: fewer next cycles than faces");
-  tri.input_vertex_ = HugeVector<VertexId>();
-  expansion.edge_state = HugeVector<std::uint8_t>();
+  free_storage(tri.input_vertex_);
+  free_storage(expansion.edge_state);
 
   // Only the slots are read from here on: each edge's two (its halfedges') are gathered into the
   // links' first half in place (link e is written after links 2e and 2e + 1 >= e are read), and

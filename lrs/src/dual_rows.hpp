@@ -12,13 +12,13 @@ namespace petersen::lrs {
 struct DualRows {
   /// K's dual as neighbour rows (perfect_partners' form): rows[3f + k] is the face across edge k
   /// of triangles[f].
-  HugeVector<NodeId> rows;
+  std::pmr::vector<NodeId> rows;
   /// M: partner[f] is the face paired with f across an edge of M, kNoNode for the ℓ faces left.
-  HugeVector<NodeId> partner;
+  std::pmr::vector<NodeId> partner;
   /// K's face f with the input's vertex ids, counter-clockwise from its smallest halfedge: edge k
   /// joins corners k and (k + 1) % 3. Faces are numbered in order of their smallest halfedge, as
   /// to_mesh numbers them.
-  HugeVector<std::array<VertexId, 3>> triangles;
+  std::pmr::vector<std::array<VertexId, 3>> triangles;
   std::uint32_t unpaired = 0;  ///< ℓ: faces with no partner
 };
 

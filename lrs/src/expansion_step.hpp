@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "edge_contraction.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/matching.hpp"
 
 namespace petersen::lrs {
@@ -19,10 +19,10 @@ enum EdgeState : std::uint8_t {
 };
 
 struct ExpansionResult {
-  HugeVector<std::uint8_t> edge_state;  ///< EdgeState bits per edge id
-  std::uint32_t flipped_edges = 0;      ///< edges flipped in K at the end
-  std::uint32_t matched_edges = 0;      ///< |M|
-  std::uint64_t unflips = 0;            ///< Algorithm 3.2's unflips of [x, y]
+  std::pmr::vector<std::uint8_t> edge_state;  ///< EdgeState bits per edge id
+  std::uint32_t flipped_edges = 0;            ///< edges flipped in K at the end
+  std::uint32_t matched_edges = 0;            ///< |M|
+  std::uint64_t unflips = 0;                  ///< Algorithm 3.2's unflips of [x, y]
   /// How often each branch ran: Algorithm 3.1 line 7 (neither split edge in M), then Algorithms
   /// 3.2, 3.3 and 3.4.
   std::uint64_t cases[4] = {0, 0, 0, 0};

@@ -66,10 +66,10 @@ void augment_and_verify(lrs::DualRows& k, Augment augment, LrsStats& stats) {
 // One quad per pair of K's triangles, by quad_of: K is simplicial, so two of its triangles share
 // at most one side, the one the pair is across. K's rows are freed before the list is made beside
 // its triangles, and K once it is made.
-HugeVector<LrsQuad> quads_of(lrs::DualRows&& k) {
-  k.rows = HugeVector<NodeId>();  // `= {}` would keep the buffer
+std::pmr::vector<LrsQuad> quads_of(lrs::DualRows&& k, std::pmr::memory_resource* memory) {
+  free_storage(k.rows);  // `= {}` would keep the buffer
   const auto faces = static_cast<FaceId>(k.triangles.size());
-  HugeVector<LrsQuad> quads;
+  std::pmr::vector<LrsQuad> quads(memory);
   quads.reserve(faces / 2);
   for (FaceId f = 0; f < faces; ++f) {
     const NodeId g = k.partner[f];
@@ -86,7 +86,7 @@ HugeVector<LrsQuad> quads_of(lrs::DualRows&& k) {
 // corners. Reading ahead cuts the sweep by a fifth on the 16M plate against probing in the quads'
 // loop.
 void find_sources(std::span<const VertexId> corners, std::size_t vertex_count,
-                  HugeVector<LrsQuad>& quads) {
+                  std::pmr::vector<LrsQuad>& quads) {
   const lrs::TrianglesByCorner input(corners, vertex_count);
   const std::size_t count = quads.size();
   const auto lows = [&](std::size_t i) {
@@ -110,13 +110,14 @@ void find_sources(std::span<const VertexId> corners, std::size_t vertex_count,
 
 // Everything after the triangulation, for both inputs: `corners` are the input's triangles, read
 // again for the sources only.
-HugeVector<LrsQuad> pair_triangulation(lrs::Triangulation tri, std::span<const VertexId> corners,
-                                       std::size_t vertex_count, const LrsOptions& options,
-                                       LrsStats& stats) {
+std::pmr::vector<LrsQuad> pair_triangulation(lrs::Triangulation tri,
+                                             std::span<const VertexId> corners,
+                                             std::size_t vertex_count, const LrsOptions& options,
+                                             LrsStats& stats) {
   lrs::DualRows k = contract_and_expand(std::move(tri), stats);
   augment_and_verify(k, options.augment, stats);
   const auto start = Stopwatch();
-  HugeVector<LrsQuad> quads = quads_of(std::move(k));
+  std::pmr::vector<LrsQuad> quads = quads_of(std::move(k), options.memory);
   if (options.sources) find_sources(corners, vertex_count, quads);
   stats.quads_seconds = start.seconds();
   return quads;
@@ -126,7 +127,7 @@ HugeVector<LrsQuad> pair_triangulation(lrs::Triangulation tri, std::span<const V
 
 LrsPairing pair_closed_component_by_lrs(const PolygonMesh& component, const LrsOptions& options) {
   const auto begin = Stopwatch();
-  LrsPairing pairing;
+  LrsPairing pairing{.quads = std::pmr::vector<LrsQuad>(options.memory)};
   lrs::Triangulation tri =
       lrs::Triangulation::from_mesh(component, lrs::Triangulation::Numbering::spatial);
   pairing.stats.setup_seconds = begin.seconds();
@@ -138,7 +139,7 @@ LrsPairing pair_closed_component_by_lrs(const PolygonMesh& component, const LrsO
 
 LrsPairing pair_closed_component_by_lrs(LrsDualInput input, const LrsOptions& options) {
   const auto begin = Stopwatch();
-  LrsPairing pairing;
+  LrsPairing pairing{.quads = std::pmr::vector<LrsQuad>(options.memory)};
   lrs::Triangulation tri = lrs::Triangulation::from_dual(
       input.positions, input.corners, std::move(input.node_edges), std::move(input.edge_ends),
       input.connected ? lrs::Triangulation::Connectivity::connected

@@ -28,7 +28,7 @@ std::uint32_t spread(std::uint32_t x, int bits) {
 }
 
 // Per vertex, its cell's index along the Morton curve.
-HugeVector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
+std::pmr::vector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
   std::array<double, 3> low, high;
   low.fill(std::numeric_limits<double>::max());
   high.fill(std::numeric_limits<double>::lowest());
@@ -46,7 +46,7 @@ HugeVector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
         extent > 0 && extent < std::numeric_limits<double>::infinity() ? (1u << bits) / extent : 0;
   }
   const double last = (1u << bits) - 1;
-  HugeVector<std::uint32_t> cell(positions.size());
+  std::pmr::vector<std::uint32_t> cell(positions.size());
   for (std::size_t v = 0; v < positions.size(); ++v) {
     std::uint32_t code = 0;
     for (int a = 0; a < 3; ++a) {
@@ -60,19 +60,20 @@ HugeVector<std::uint32_t> vertex_cells(const Positions& positions, int bits) {
 }
 
 // A stable counting sort of the items 0..key.size()-1 by key < cells: the items in order.
-HugeVector<std::uint32_t> sorted_by_cell(const HugeVector<std::uint32_t>& key,
-                                         std::uint32_t cells) {
+std::pmr::vector<std::uint32_t> sorted_by_cell(const std::pmr::vector<std::uint32_t>& key,
+                                               std::uint32_t cells) {
   std::vector<std::uint32_t> start(cells + 1, 0);
   for (std::uint32_t k : key) ++start[k + 1];
   for (std::uint32_t c = 0; c < cells; ++c) start[c + 1] += start[c];
-  HugeVector<std::uint32_t> order(key.size());
+  std::pmr::vector<std::uint32_t> order(key.size());
   for (std::uint32_t i = 0; i < key.size(); ++i) order[start[key[i]]++] = i;
   return order;
 }
 
 }  // namespace
 
-HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count) {
+std::pmr::vector<VertexId> spatial_vertex_order(const Positions& positions,
+                                                std::size_t face_count) {
   const int bits = bits_per_axis(face_count);
   return sorted_by_cell(vertex_cells(positions, bits), 1u << (3 * bits));
 }
@@ -82,7 +83,7 @@ SpatialMesh spatially_ordered(const PolygonMesh& mesh) {
   const std::size_t triangles = mesh.face_count();
   const int bits = bits_per_axis(triangles);
   const std::uint32_t cells = 1u << (3 * bits);
-  const HugeVector<std::uint32_t> cell = vertex_cells(mesh.positions, bits);
+  const std::pmr::vector<std::uint32_t> cell = vertex_cells(mesh.positions, bits);
   out.input_vertex = sorted_by_cell(cell, cells);
   std::vector<VertexId> new_id(mesh.positions.size());
   out.mesh.positions.resize(mesh.positions.size());
@@ -90,9 +91,9 @@ SpatialMesh spatially_ordered(const PolygonMesh& mesh) {
     new_id[out.input_vertex[v]] = v;
     out.mesh.positions[v] = mesh.positions[out.input_vertex[v]];
   }
-  HugeVector<std::uint32_t> face_cell(triangles);
+  std::pmr::vector<std::uint32_t> face_cell(triangles);
   for (std::size_t t = 0; t < triangles; ++t) face_cell[t] = cell[mesh.corners[3 * t]];
-  const HugeVector<std::uint32_t> faces = sorted_by_cell(face_cell, cells);
+  const std::pmr::vector<std::uint32_t> faces = sorted_by_cell(face_cell, cells);
   out.mesh.corners.resize(3 * triangles);
   for (std::size_t t = 0; t < faces.size(); ++t) {
     for (std::size_t k = 0; k < 3; ++k) {

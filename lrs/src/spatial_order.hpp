@@ -17,15 +17,15 @@
 namespace petersen::lrs {
 
 struct SpatialMesh {
-  PolygonMesh mesh;                   ///< the input renumbered: same surface, same orientation
-  HugeVector<VertexId> input_vertex;  ///< vertex v of `mesh` is vertex input_vertex[v] of the input
+  PolygonMesh mesh;  ///< the input renumbered: same surface, same orientation
+  std::pmr::vector<VertexId>
+      input_vertex;  ///< vertex v of `mesh` is vertex input_vertex[v] of the input
 };
 
 /// The vertices ordered by Morton cell of their position, for a surface of `face_count` faces (a
-/// few hundred faces per cell; ties in input order): new vertex v is input vertex order[v]. On
-/// huge pages, as its scratch, so that they come from the huge-page pool's kept ranges rather
-/// than from fresh memory.
-HugeVector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count);
+/// few hundred faces per cell; ties in input order): new vertex v is input vertex order[v]. On the
+/// default memory resource, as its scratch.
+std::pmr::vector<VertexId> spatial_vertex_order(const Positions& positions, std::size_t face_count);
 
 /// `mesh` (every face a triangle) with its vertices ordered by Morton cell (a few hundred faces per
 /// cell; ties in input order) and its triangles by the cell of their first corner; each triangle

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <span>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/lrs/lrs.hpp"
 #include "petersen/mesh/mesh.hpp"
 
@@ -60,8 +60,8 @@ class TrianglesByCorner {
 
   static VertexId smallest(std::span<const VertexId> t) { return std::min({t[0], t[1], t[2]}); }
 
-  HugeVector<std::uint32_t> start_;
-  HugeVector<Entry> entry_;
+  std::pmr::vector<std::uint32_t> start_;
+  std::pmr::vector<Entry> entry_;
 };
 
 }  // namespace petersen::lrs

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen::lrs {
@@ -86,7 +86,8 @@ class Triangulation {
   /// their nexts (12) without the corners if the caller has freed them, where from_mesh holds two
   /// copies of the mesh, its own dual and the surface check's scratch. O(V + F).
   static Triangulation from_dual(const Positions& positions, std::span<const VertexId> corners,
-                                 HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
+                                 std::pmr::vector<EdgeId> node_edges,
+                                 std::pmr::vector<NodeId> edge_ends,
                                  Connectivity connectivity = Connectivity::unknown,
                                  const std::function<void()>& corners_read = {},
                                  std::uint32_t threads = 1);
@@ -158,7 +159,8 @@ class Triangulation {
 
   // from_dual's last two steps: the links from each corner's halfedge (the slots, taken over) with
   // `out`, then the vertices renumbered in the links with their degrees, and the live counts.
-  void link_halfedges(std::span<const VertexId> corners, HugeVector<Halfedge> halfedge_of_corner,
+  void link_halfedges(std::span<const VertexId> corners,
+                      std::pmr::vector<Halfedge> halfedge_of_corner,
                       const std::function<void()>& corners_read);
   void count_from_links(std::uint32_t edges, std::uint32_t faces);
   // from_mesh after the surface check.
@@ -175,7 +177,7 @@ class Triangulation {
   class Links {
    public:
     Links() = default;
-    explicit Links(std::size_t size) : data_(make_huge_array<Link>(size)), size_(size) {}
+    explicit Links(std::size_t size) : data_(make_raw_array<Link>(size)), size_(size) {}
     Links(const Links& other) : Links(other.size_) {
       std::copy_n(other.data_.get(), size_, data_.get());
     }
@@ -191,19 +193,19 @@ class Triangulation {
     std::size_t size() const { return size_; }
     /// Keeps the first `size` links (shrink_huge_array).
     void shrink(std::size_t size) {
-      shrink_huge_array(data_, size);
+      shrink_raw_array(data_, size);
       size_ = size;
     }
 
    private:
-    HugeArray<Link> data_;
+    RawArray<Link> data_;
     std::size_t size_ = 0;
   };
   Links links_;
-  HugeVector<std::uint8_t> edge_alive_;
-  HugeVector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
-  HugeVector<std::uint32_t> degree_;
-  HugeVector<VertexId> input_vertex_;  // empty when the numbering is the input's
+  std::pmr::vector<std::uint8_t> edge_alive_;
+  std::pmr::vector<Halfedge> out_;  // per vertex, kNoHalfedge when dead
+  std::pmr::vector<std::uint32_t> degree_;
+  std::pmr::vector<VertexId> input_vertex_;  // empty when the numbering is the input's
   std::uint32_t face_capacity_ = 0;
   std::uint32_t live_vertices_ = 0, live_edges_ = 0, live_faces_ = 0;
 };

@@ -172,7 +172,7 @@ void renumber_edges(std::span<const VertexId> corners, std::span<const EdgeId> n
   if (connectivity == Triangulation::Connectivity::unknown) {
     forest.emplace(faces, std::span<const NodeId>());
   }
-  HugeVector<std::uint32_t> start(std::size_t{vertices} + 1, 0);
+  std::pmr::vector<std::uint32_t> start(std::size_t{vertices} + 1, 0);
   const auto names = [&](NodeId t, EdgeId e) {
     const std::size_t c = 3 * std::size_t{t};
     return node_edges[c] == e || node_edges[c + 1] == e || node_edges[c + 2] == e;
@@ -222,12 +222,10 @@ void halfedges_over_slots(std::span<EdgeId> node_edges, std::span<const NodeId> 
 
 }  // namespace
 
-Triangulation Triangulation::from_dual(const Positions& positions,
-                                       std::span<const VertexId> corners,
-                                       HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
-                                       Connectivity connectivity,
-                                       const std::function<void()>& corners_read,
-                                       std::uint32_t threads) {
+Triangulation Triangulation::from_dual(
+    const Positions& positions, std::span<const VertexId> corners,
+    std::pmr::vector<EdgeId> node_edges, std::pmr::vector<NodeId> edge_ends,
+    Connectivity connectivity, const std::function<void()>& corners_read, std::uint32_t threads) {
   const auto faces = static_cast<std::uint32_t>(corners.size() / 3);
   const auto edges = static_cast<std::uint32_t>(edge_ends.size() / 2);
   const auto vertices = static_cast<std::uint32_t>(positions.size());
@@ -242,19 +240,19 @@ Triangulation Triangulation::from_dual(const Positions& positions,
   Triangulation tri;
   tri.input_vertex_ = spatial_vertex_order(positions, faces);
   {
-    HugeVector<VertexId> new_id(vertices);
+    std::pmr::vector<VertexId> new_id(vertices);
     for (VertexId v = 0; v < vertices; ++v) new_id[tri.input_vertex_[v]] = v;
     renumber_edges(corners, node_edges, edge_ends, new_id, connectivity);
   }
   halfedges_over_slots(node_edges, edge_ends);
-  edge_ends = HugeVector<NodeId>();
+  free_storage(edge_ends);
   tri.link_halfedges(corners, std::move(node_edges), corners_read);
   tri.count_from_links(edges, faces);
   return tri;
 }
 
 void Triangulation::link_halfedges(std::span<const VertexId> corners,
-                                   HugeVector<Halfedge> halfedge_of_corner,
+                                   std::pmr::vector<Halfedge> halfedge_of_corner,
                                    const std::function<void()>& corners_read) {
   // The links with the input's vertex ids, and each input vertex's halfedge in the last triangle
   // that has it (so that the contraction walks from the same halfedge as on from_mesh's input
@@ -274,7 +272,7 @@ void Triangulation::link_halfedges(std::span<const VertexId> corners,
     Link& link = links_[h / 2];
     return h % 2 == 0 ? link.origin : link.next;
   };
-  HugeVector<Halfedge> last_out(vertices, kNoHalfedge);
+  std::pmr::vector<Halfedge> last_out(vertices, kNoHalfedge);
   for (std::size_t c = 0; c < corners.size(); ++c) {
     const VertexId v = corners[c];
     half_word(halfedge_of_corner[c]) = v;
@@ -282,12 +280,12 @@ void Triangulation::link_halfedges(std::span<const VertexId> corners,
   }
   if (corners_read) corners_read();
   {
-    const HugeArray<Halfedge> next = make_huge_array<Halfedge>(halfedges);
+    const RawArray<Halfedge> next = make_raw_array<Halfedge>(halfedges);
     for (FaceId t = 0; t < faces; ++t) {
       const Halfedge* h = halfedge_of_corner.data() + 3 * std::size_t{t};
       for (std::size_t k = 0; k < 3; ++k) next[h[k]] = h[(k + 1) % 3];
     }
-    halfedge_of_corner = HugeVector<Halfedge>();  // `= {}` would keep the buffer
+    free_storage(halfedge_of_corner);  // `= {}` would keep the buffer
     for (std::size_t h = halfedges; h-- > 0;) links_[h] = {half_word(h), next[h]};
   }
   out_.resize(vertices);
@@ -296,7 +294,7 @@ void Triangulation::link_halfedges(std::span<const VertexId> corners,
 
 void Triangulation::count_from_links(std::uint32_t edges, std::uint32_t faces) {
   const auto vertices = static_cast<std::uint32_t>(input_vertex_.size());
-  HugeVector<VertexId> new_id(vertices);
+  std::pmr::vector<VertexId> new_id(vertices);
   for (VertexId v = 0; v < vertices; ++v) new_id[input_vertex_[v]] = v;
   degree_.assign(vertices, 0);
   for (std::size_t h = 0; h < links_.size(); ++h) {

@@ -183,7 +183,7 @@ AnyGraphCheapestMatching cheapest_matching_any_graph(
   } else {
     AnyGraphMatching maximum = match_any_graph(node_count, edges);  // verified by its witness
     if (!maximum.perfect) {
-      maximum.mate_edge.swap(result.mate_edge);
+      result.mate_edge = std::move(maximum.mate_edge);
       result.size = maximum.size;
       result.tutte_set = std::move(maximum.tutte_set);
       return result;

@@ -30,7 +30,7 @@
 
 #include "augment/search_slot.hpp"
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
@@ -38,12 +38,14 @@ class NeighbourTable {
  public:
   /// With `mate` (a mate edge per node, kNoEdge when free), the search state starts from that
   /// matching; without it, it is left for start_search() to write, node by node.
-  explicit NeighbourTable(const CubicGraph& graph, const HugeVector<EdgeId>* mate = nullptr)
+  /// The table's arrays are allocated from `memory`.
+  explicit NeighbourTable(const CubicGraph& graph, const std::pmr::vector<EdgeId>* mate = nullptr,
+                          std::pmr::memory_resource* memory = std::pmr::get_default_resource())
       : graph_(&graph),
         node_count_(graph.node_count()),
-        own_rows_(make_huge_array<NodeId>(3 * std::size_t{graph.node_count()})),
+        own_rows_(make_raw_array<NodeId>(3 * std::size_t{graph.node_count()}, memory)),
         next_(own_rows_.get()),
-        slots_(make_huge_array<augment_detail::Slot>(graph.node_count())) {
+        slots_(make_raw_array<augment_detail::Slot>(graph.node_count(), memory)) {
     check_size(graph.node_count());
     graph.write_neighbour_rows(own_rows_.get());
     if (mate == nullptr) return;
@@ -55,10 +57,11 @@ class NeighbourTable {
 
   /// Over neighbour rows (CubicGraph::into_neighbour_rows) that the caller keeps alive and
   /// unchanged while the table lives; the search state is left for start_search() to write.
-  explicit NeighbourTable(std::span<const NodeId> rows)
+  explicit NeighbourTable(std::span<const NodeId> rows,
+                          std::pmr::memory_resource* memory = std::pmr::get_default_resource())
       : node_count_(static_cast<std::uint32_t>(check_size(rows.size() / 3))),
         next_(rows.data()),
-        slots_(make_huge_array<augment_detail::Slot>(node_count_)) {}
+        slots_(make_raw_array<augment_detail::Slot>(node_count_, memory)) {}
 
   /// The graph behind the table; nullptr for a table over rows.
   const CubicGraph* graph() const { return graph_; }
@@ -85,7 +88,7 @@ class NeighbourTable {
   /// (looked up at pairing time, v's incidence list would be a cache miss of its own on every
   /// pairing). Returns the number of nodes left free.
   template <class PairedIndex>
-  std::uint32_t start_searches(PairedIndex paired_index, HugeVector<EdgeId>* mate) {
+  std::uint32_t start_searches(PairedIndex paired_index, std::pmr::vector<EdgeId>* mate) {
     std::uint32_t unpaired = 0;
     for (NodeId v = 0; v < node_count_; ++v) {
       const int i = paired_index(v);
@@ -123,9 +126,9 @@ class NeighbourTable {
 
   const CubicGraph* graph_ = nullptr;
   std::uint32_t node_count_;
-  HugeArray<NodeId> own_rows_;  // the rows, when built from a graph
+  RawArray<NodeId> own_rows_;  // the rows, when built from a graph
   const NodeId* next_;
-  HugeArray<augment_detail::Slot> slots_;
+  RawArray<augment_detail::Slot> slots_;
 };
 
 }  // namespace petersen

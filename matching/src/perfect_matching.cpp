@@ -94,7 +94,7 @@ std::optional<Augment> parse_augment(std::string_view name) {
 
 PerfectMatchingResult perfect_matching(const CubicGraph& graph,
                                        const PerfectMatchingOptions& options) {
-  PerfectMatchingResult result{Matching(graph.node_count()), {}};
+  PerfectMatchingResult result{Matching(graph.node_count(), options.memory), {}};
   if (options.validate) {
     Stopwatch clock;
     validate_bridgeless(graph);

@@ -14,8 +14,8 @@ PartnerResult perfect_partners(std::span<const NodeId> rows, const PartnerOption
     throw std::invalid_argument("perfect_partners: runs auto or ps, not " +
                                 std::string(to_string(options.algorithm)));
   }
-  PartnerResult result;
-  NeighbourTable table(rows);
+  PartnerResult result{.partner = std::pmr::vector<NodeId>(options.memory)};
+  NeighbourTable table(rows, options.memory);
   Stopwatch initial;
   // In PS's place as in perfect_matching (pair_in_ps_place says what and why).
   const PsPlace made =

@@ -30,7 +30,8 @@ void check_size(const std::string& what, std::size_t size, std::size_t expected,
   }
 }
 
-void check_indices(const char* what, const HugeVector<std::uint32_t>& indices, std::size_t bound) {
+void check_indices(const char* what, const std::pmr::vector<std::uint32_t>& indices,
+                   std::size_t bound) {
   for (std::size_t i = 0; i < indices.size(); ++i) {
     if (indices[i] != kNoAttribute && indices[i] >= bound) {
       throw MeshError(std::string{"attribute "} + what + "[" + std::to_string(i) +

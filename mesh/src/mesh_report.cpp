@@ -62,7 +62,7 @@ EdgeGroups group_usable(const PolygonMesh& mesh, const PolygonHalfedges& half,
       if (usable[half.face(h)]) visit(h, a, b);
     });
   };
-  const HugeVector<std::uint32_t> start = bucket_starts(mesh.positions.size(), halfedges);
+  const std::pmr::vector<std::uint32_t> start = bucket_starts(mesh.positions.size(), halfedges);
   return group_halfedges_in(start, 0, mesh.positions.size(), halfedges);
 }
 

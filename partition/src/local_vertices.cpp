@@ -10,7 +10,7 @@ namespace {
 constexpr VertexId kNoVertex = 0xFFFFFFFFu;
 
 LocalCorners by_table(std::span<const VertexId> corners, VertexId low, VertexId high) {
-  HugeVector<VertexId> local_of(std::size_t{high} - low + 1, kNoVertex);
+  std::pmr::vector<VertexId> local_of(std::size_t{high} - low + 1, kNoVertex);
   for (VertexId v : corners) local_of[v - low] = 0;
   VertexId next = 0;
   for (VertexId& slot : local_of) {
@@ -24,7 +24,7 @@ LocalCorners by_table(std::span<const VertexId> corners, VertexId low, VertexId 
 }
 
 LocalCorners by_sorting(std::span<const VertexId> corners) {
-  HugeVector<VertexId> ids(corners.begin(), corners.end());
+  std::pmr::vector<VertexId> ids(corners.begin(), corners.end());
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
   LocalCorners local;

@@ -11,7 +11,7 @@ namespace petersen::partition_detail {
 /// corners[i] renumbered: the part's distinct vertices get ids 0..vertex_count-1 in ascending
 /// order of their global ids.
 struct LocalCorners {
-  HugeVector<VertexId> corners;
+  std::pmr::vector<VertexId> corners;
   std::uint32_t vertex_count = 0;
 };
 

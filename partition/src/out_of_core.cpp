@@ -84,7 +84,7 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
                        const OutOfCoreOptions& options, OutOfCoreStats& stats) {
   PartsOutcome out;
   const std::uint64_t n = in.face_count();
-  HugeVector<VertexId> corners;
+  std::pmr::vector<VertexId> corners(options.memory);
   std::vector<FaceId> carried_partner;
   std::uint64_t carry_first = 0;
   for (std::uint64_t own_first = 0; own_first < n; own_first += size) {
@@ -100,7 +100,8 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
                    static_cast<std::uint32_t>(own_first - first), carried_partner},
                   {.augment = options.augment,
                    .band_radius = options.band_radius,
-                   .threads = options.threads});
+                   .threads = options.threads,
+                   .memory = options.memory});
     std::copy(part.partner.begin(), part.partner.end(), &partner[first]);
     partner.release(first, count);
     out.open_edges.insert(out.open_edges.end(), part.open_edges.begin(), part.open_edges.end());
@@ -128,8 +129,8 @@ CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& p
                                    OutOfCoreStats& stats) {
   CostPartsOutcome out;
   const std::uint64_t n = in.face_count();
-  HugeVector<VertexId> corners;
-  HugeVector<std::array<double, 3>> positions;
+  std::pmr::vector<VertexId> corners(options.memory);
+  std::pmr::vector<std::array<double, 3>> positions(options.memory);
   for (std::uint64_t first = 0; first < n; first += size) {
     const std::uint64_t count = std::min(size, n - first);
     corners.resize(3 * count);
@@ -138,11 +139,13 @@ CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& p
     in.release_faces(first, count);
     in.read_positions(corners, positions);
     in.release_vertices(0, in.vertex_count());
-    const PartPairing part =
-        pair_part({.first_face = static_cast<FaceId>(first),
-                   .corners = corners,
-                   .corner_positions = positions},
-                  {.costs = options.costs, .augment = options.augment, .threads = options.threads});
+    const PartPairing part = pair_part({.first_face = static_cast<FaceId>(first),
+                                        .corners = corners,
+                                        .corner_positions = positions},
+                                       {.costs = options.costs,
+                                        .augment = options.augment,
+                                        .threads = options.threads,
+                                        .memory = options.memory});
     std::copy(part.partner.begin(), part.partner.end(), &partner[first]);
     partner.release(first, count);
     out.open_edges.insert(out.open_edges.end(), part.open_edges.begin(), part.open_edges.end());
@@ -202,7 +205,7 @@ void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, Fa
 
 // The faces of one part, written and checked: every pair from both of its sides.
 void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
-                std::uint64_t count, HugeVector<VertexId>& corners, PlyStreamWriter& out,
+                std::uint64_t count, std::pmr::vector<VertexId>& corners, PlyStreamWriter& out,
                 OutOfCoreStats& stats) {
   corners.resize(3 * count);
   in.read_faces(first, count, corners);
@@ -235,7 +238,7 @@ void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std
     out.write_vertex_records(in.vertex_records(first, count));
     in.release_vertices(first, count);
   }
-  HugeVector<VertexId> corners;
+  std::pmr::vector<VertexId> corners;
   for (std::uint64_t first = 0; first < in.face_count(); first += size) {
     write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out, stats);
   }

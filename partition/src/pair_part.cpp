@@ -148,7 +148,7 @@ std::vector<BandFace> band_of(const PartTriangles& part, const PairableGraph& gr
 
 // The pairable graph without the edges of the held triangles (carried ones paired outside).
 CsrGraph csr_of(const PairableGraph& graph, std::span<const std::uint8_t> held) {
-  HugeVector<std::array<NodeId, 2>> edges;
+  std::pmr::vector<std::array<NodeId, 2>> edges;
   edges.reserve(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     const NodeId a = graph.edge_ends[2 * e], b = graph.edge_ends[2 * e + 1];
@@ -212,9 +212,9 @@ Matching initial_matching(const CsrGraph& csr, const PartTriangles& part) {
 
 // The certified maximum matching of the part's graph, its free nodes moved to the own
 // triangles' open sides (held and carried triangles are no destination).
-HugeVector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& part,
-                              const Borders& borders, std::span<const std::uint8_t> held,
-                              const PartPairingOptions& options, PartPairing& result) {
+std::pmr::vector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& part,
+                                    const Borders& borders, std::span<const std::uint8_t> held,
+                                    const PartPairingOptions& options, PartPairing& result) {
   const CsrGraph csr = csr_of(graph, held);
   MaximumMatchingResult maximum =
       part.carried == 0 ? maximum_matching(csr, options.augment)
@@ -237,7 +237,7 @@ HugeVector<NodeId> match_part(const PairableGraph& graph, const PartTriangles& p
   }
   result.moved_to_border = moves.moved;
   result.stranded = moves.stranded;
-  HugeVector<NodeId> mate(graph.node_count, kNoNode);
+  std::pmr::vector<NodeId> mate(graph.node_count, kNoNode, options.memory);
   for (NodeId v = 0; v < graph.node_count; ++v) {
     const EdgeId e = maximum.matching.mate_edge[v];
     if (e != kNoEdge) mate[v] = csr.other_end(e, v);
@@ -257,7 +257,7 @@ PairableGraph graph_of(const PartTriangles& part, const PartPairingOptions& opti
   mesh.corners = std::move(local.corners);
   CutOptions cuts;
   cuts.sharp_angle_degrees = options.costs.sharp_angle_degrees;
-  return build_pairable_graph(mesh, cuts, options.threads);
+  return build_pairable_graph(mesh, cuts, options.threads, options.memory);
 }
 
 void fill_partners(const PartTriangles& part, std::span<const NodeId> mate,
@@ -300,9 +300,11 @@ std::vector<std::int64_t> nested_set_sums(const MatchingCertificate& certificate
 // The cost objectives' matching of the part's graph under quadrangulate's costs (the edges the
 // corner threshold refuses left out), its certificate checked; the part's optimum and, for
 // Objective::quads, each seam node's dual in both copies of the doubled graph into `result`.
-HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonMesh& mesh,
-                                      const PartPairingOptions& options, PartPairing& result) {
-  const HugeVector<double> degrees = pairable_edge_quality(graph, mesh, options.threads);
+std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonMesh& mesh,
+                                            const PartPairingOptions& options,
+                                            PartPairing& result) {
+  const std::pmr::vector<double> degrees =
+      pairable_edge_quality(graph, mesh, options.threads, options.memory);
   std::vector<std::array<NodeId, 2>> edges;
   std::vector<double> kept;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
@@ -311,15 +313,15 @@ HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonM
     edges.push_back({graph.edge_ends[2 * e], graph.edge_ends[2 * e + 1]});
     kept.push_back(degrees[e]);
   }
-  const CsrGraph csr = CsrGraph::from_edges(graph.node_count, edges);
-  const HugeVector<Cost> costs = scale_costs(kept);
+  const CsrGraph csr = CsrGraph::from_edges(graph.node_count, edges, options.memory);
+  const std::pmr::vector<Cost> costs = scale_costs(kept, kDefaultCostScale, options.memory);
   const std::uint32_t n = graph.node_count;
-  Matching matching;
+  Matching matching(0, options.memory);  // the results' are moved in, on the same resource
   if (options.costs.objective == Objective::quads) {
     const Cost price =
         static_cast<Cost>(std::llround(options.costs.triangle_cost * kDefaultCostScale));
-    MinCostMatchingResult r =
-        min_cost_matching(csr, costs, {&price, 1}, {.threads = options.threads});
+    MinCostMatchingResult r = min_cost_matching(
+        csr, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
     if (CertificateCheck check = verify_min_cost_matching(n, csr.edge_ends(), costs, {&price, 1},
                                                           r.matching, r.total, r.certificate);
         !check.ok()) {
@@ -339,7 +341,8 @@ HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonM
     }
     matching = std::move(r.matching);
   } else {
-    MinCostMaximumResult r = min_cost_maximum_matching(csr, costs, {.threads = options.threads});
+    MinCostMaximumResult r = min_cost_maximum_matching(
+        csr, costs, {.threads = options.threads, .memory = options.memory});
     if (CertificateCheck check = verify_min_cost_maximum_matching(
             n, csr.edge_ends(), costs, r.matching, r.total_cost, r.unmatched_cost, r.certificate);
         !check.ok()) {
@@ -353,7 +356,7 @@ HugeVector<NodeId> match_part_at_cost(const PairableGraph& graph, const PolygonM
     matching = std::move(r.matching);
   }
   result.optimality_certified = true;
-  HugeVector<NodeId> mate(n, kNoNode);
+  std::pmr::vector<NodeId> mate(n, kNoNode, options.memory);
   for (NodeId v = 0; v < n; ++v) {
     const EdgeId e = matching.mate_edge[v];
     if (e != kNoEdge) mate[v] = csr.other_end(e, v);
@@ -390,15 +393,15 @@ PartPairing pair_part_at_cost(const PartTriangles& part, const PartPairingOption
                                 std::to_string(part.corner_positions.size()) + " for " +
                                 std::to_string(part.corners.size()) + " corners");
   }
-  PartPairing result;
-  result.first_face = part.first_face;
-  PolygonMesh mesh;
+  PartPairing result{.first_face = part.first_face,
+                     .partner = std::pmr::vector<FaceId>(options.memory)};
+  PolygonMesh mesh(options.memory);
   const PairableGraph graph = graph_of(part, options, mesh);
   result.inner_structural_cuts =
       graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];
   const Borders borders = find_borders(part, graph, result.open_edges);
   result.seam = seam_of(part, graph, borders, options.band_radius);
-  const HugeVector<NodeId> mate = match_part_at_cost(graph, mesh, options, result);
+  const std::pmr::vector<NodeId> mate = match_part_at_cost(graph, mesh, options, result);
   const std::vector<std::uint8_t> held(graph.node_count, 0);
   fill_partners(part, mate, held, result);
   for (SeamFace& face : result.seam) face.partner = result.partner[face.face - part.first_face];
@@ -420,18 +423,19 @@ PartPairing pair_part(const PartTriangles& part, const PartPairingOptions& optio
         "pair_part: the sharp angle and the corner threshold go with a cost objective");
   }
   const Stopwatch clock;
-  PartPairing result;
-  result.first_face = part.first_face;
-  PairableGraph graph;
-  {
-    PolygonMesh mesh;  // freed before the matching: the pairs objective measures nothing
-    graph = graph_of(part, options, mesh);
-  }
+  PartPairing result{.first_face = part.first_face,
+                     .partner = std::pmr::vector<FaceId>(options.memory)};
+  // The mesh is freed before the matching: the pairs objective measures nothing. The graph is
+  // made on options.memory and moved out, not assigned (which would copy it).
+  const PairableGraph graph = [&] {
+    PolygonMesh mesh(options.memory);
+    return graph_of(part, options, mesh);
+  }();
   const std::vector<std::uint8_t> held = held_triangles(part, graph.node_count);
   result.inner_structural_cuts =
       graph.cuts.structural() - graph.cuts.by_cause[static_cast<int>(CutCause::boundary)];
   const Borders borders = find_borders(part, graph, result.open_edges);
-  const HugeVector<NodeId> mate = match_part(graph, part, borders, held, options, result);
+  const std::pmr::vector<NodeId> mate = match_part(graph, part, borders, held, options, result);
   fill_partners(part, mate, held, result);
   result.band = band_of(part, graph, borders, options.band_radius);
   result.seconds = clock.seconds();

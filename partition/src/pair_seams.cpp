@@ -113,7 +113,7 @@ std::vector<double> measure(const SeamIndex& index,
   CutOptions cuts;
   cuts.sharp_angle_degrees = costs.sharp_angle_degrees;
   const PairableGraph graph = build_pairable_graph(mesh, cuts, threads);
-  const HugeVector<double> measured = pairable_edge_quality(graph, mesh, threads);
+  const std::pmr::vector<double> measured = pairable_edge_quality(graph, mesh, threads);
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     if (!costs.max_corner_deviation || measured[e] <= *costs.max_corner_deviation) {
       degrees[graph.edge_ends[2 * e] / 2] = measured[e];
@@ -273,7 +273,7 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
   std::vector<double> finite(degrees.size(), 0.0);
   for (std::size_t i = 0; i < degrees.size(); ++i)
     if (!std::isnan(degrees[i])) finite[i] = degrees[i];
-  const HugeVector<Cost> units = scale_costs(finite);
+  const std::pmr::vector<Cost> units = scale_costs(finite);
   const std::size_t cross = input.adjacencies.size();
   SeamResult result;
   if (costs.objective == Objective::quads) {

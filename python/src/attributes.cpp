@@ -18,7 +18,7 @@ constexpr const char* kDtypeNames[] = {"int8",  "uint8",  "int16",   "uint16",
                                        "int32", "uint32", "float32", "float64"};
 
 template <class Index>
-py::array_t<std::int64_t> index_array(const HugeVector<Index>& values) {
+py::array_t<std::int64_t> index_array(const std::pmr::vector<Index>& values) {
   py::array_t<std::int64_t> out(values.size());
   std::int64_t* data = out.mutable_data();
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -27,7 +27,7 @@ py::array_t<std::int64_t> index_array(const HugeVector<Index>& values) {
   return out;
 }
 
-py::array_t<double> rows_of(const HugeVector<std::array<double, 3>>& values, std::size_t k) {
+py::array_t<double> rows_of(const std::pmr::vector<std::array<double, 3>>& values, std::size_t k) {
   py::array_t<double> out({values.size(), k});
   double* data = out.mutable_data();
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -37,7 +37,7 @@ py::array_t<double> rows_of(const HugeVector<std::array<double, 3>>& values, std
 }
 
 template <class T>
-py::array column_as(const HugeVector<double>& values) {
+py::array column_as(const std::pmr::vector<double>& values) {
   py::array_t<T> out(values.size());
   T* data = out.mutable_data();
   for (std::size_t i = 0; i < values.size(); ++i) data[i] = static_cast<T>(values[i]);
@@ -123,10 +123,10 @@ std::vector<std::string> names_from(const py::handle& obj, const std::string& wh
   return names;
 }
 
-HugeVector<std::uint32_t> indices_from(const py::handle& obj, const std::string& what) {
+std::pmr::vector<std::uint32_t> indices_from(const py::handle& obj, const std::string& what) {
   auto array = integer_array(obj, what.c_str());
   if (array.ndim() != 1) throw py::value_error(what + " must be one-dimensional");
-  HugeVector<std::uint32_t> out(static_cast<std::size_t>(array.size()));
+  std::pmr::vector<std::uint32_t> out(static_cast<std::size_t>(array.size()));
   for (std::size_t i = 0; i < out.size(); ++i) {
     const std::int64_t v = array.data()[i];
     if (v < -1 || v >= std::int64_t{kNoAttribute}) {
@@ -138,8 +138,8 @@ HugeVector<std::uint32_t> indices_from(const py::handle& obj, const std::string&
   return out;
 }
 
-HugeVector<std::array<double, 3>> rows_from(const py::handle& obj, const std::string& what,
-                                            std::size_t min_k, std::size_t max_k) {
+std::pmr::vector<std::array<double, 3>> rows_from(const py::handle& obj, const std::string& what,
+                                                  std::size_t min_k, std::size_t max_k) {
   auto array = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
   if (!array) throw py::type_error(what + " is not an array of numbers");
   const std::size_t k = array.ndim() == 2 ? array.shape(1) : 0;
@@ -147,7 +147,7 @@ HugeVector<std::array<double, 3>> rows_from(const py::handle& obj, const std::st
     throw py::value_error(what + " must have shape (n, " + std::to_string(min_k) +
                           (min_k == max_k ? "" : " or " + std::to_string(max_k)) + ")");
   }
-  HugeVector<std::array<double, 3>> out(static_cast<std::size_t>(array.shape(0)), {0, 0, 0});
+  std::pmr::vector<std::array<double, 3>> out(static_cast<std::size_t>(array.shape(0)), {0, 0, 0});
   for (std::size_t i = 0; i < out.size(); ++i) {
     for (std::size_t c = 0; c < k; ++c) out[i][c] = array.data()[i * k + c];
   }
@@ -231,7 +231,8 @@ void attributes_from(const py::handle& obj, PolygonMesh& mesh) {
 
 MeshAttributes attributes_in_order(const PolygonMesh& mesh, std::span<const FaceId> order) {
   MeshAttributes a = mesh.attributes;
-  auto per_corner = [&](HugeVector<std::uint32_t>& values, const HugeVector<std::uint32_t>& in) {
+  auto per_corner = [&](std::pmr::vector<std::uint32_t>& values,
+                        const std::pmr::vector<std::uint32_t>& in) {
     if (in.empty()) return;
     values.clear();
     for (FaceId f : order) {

@@ -19,6 +19,7 @@
 #include "graph_functions.hpp"
 #include "partition.hpp"
 #include "petersen/dualize/pairable_graph.hpp"
+#include "petersen/graph/huge_page_pool.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/io/write_mesh.hpp"
 #include "petersen/matching/any_graph.hpp"
@@ -164,11 +165,15 @@ py::dict quadrangulate_py(const py::handle& V, const py::handle& F, const std::s
     throw py::value_error("quadrangulate: the mesh has no faces (" +
                           std::to_string(mesh.positions.size()) + " vertices): nothing to pair");
   }
-  QuadResult result;
-  {
+  // The call's own pool: the stages reuse the memory the ones before them freed, and it is all
+  // given back when the call returns (the result is copied into numpy arrays before). Nothing is
+  // kept between calls, so a process that forks (Dask, multiprocessing) shares no kept pages.
+  HugePagePool pool;
+  options.memory = &pool;
+  QuadResult result = [&] {
     py::gil_scoped_release release;
-    result = quadrangulate(mesh, options);
-  }
+    return quadrangulate(mesh, options);
+  }();
   // Output faces in three groups, each in output order: quads, left triangles, kept polygons (a
   // face whose only source is an input face that is not a triangle).
   const PolygonMesh& out = result.mesh;

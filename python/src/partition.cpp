@@ -56,7 +56,7 @@ py::array_t<std::int64_t> column(const Values& values, Get get) {
   return out;
 }
 
-py::dict band_dict(const std::vector<BandFace>& band, const HugeVector<FaceId>& partner,
+py::dict band_dict(const std::vector<BandFace>& band, const std::pmr::vector<FaceId>& partner,
                    FaceId first_face) {
   py::dict d;
   d["faces"] = column(band, [](const BandFace& b) { return std::int64_t{b.face}; });

@@ -91,7 +91,7 @@ void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
   PolygonMesh& out = cut.mesh;
   if (carry) {
     out.attributes = derived_attributes(mesh.attributes, input_vertices, cut.face_of,
-                                        cut.corner_from, new_vertices);
+                                        cut.corner_from, new_vertices, out.memory());
   }
   out.attributes.position_type = mesh.attributes.position_type;
   // A float PLY is written back as float: the new vertices are held as floats, so that the result

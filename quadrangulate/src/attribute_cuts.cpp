@@ -37,7 +37,7 @@ std::vector<std::uint32_t> first_of_equal(std::size_t n, Less less, Equal equal)
   return id;
 }
 
-std::vector<std::uint32_t> ids_of_points(const HugeVector<std::array<double, 3>>& points) {
+std::vector<std::uint32_t> ids_of_points(const std::pmr::vector<std::array<double, 3>>& points) {
   auto key = [&](std::uint32_t i) {
     const auto& p = points[i];
     return std::array<std::uint64_t, 3>{key_of(p[0]), key_of(p[1]), key_of(p[2])};
@@ -55,9 +55,9 @@ std::vector<std::uint32_t> ids_of_names(const std::vector<std::string>& names) {
 
 // `indices` (into a table whose equal entries have the ids `id_of`) as ids: the indices
 // themselves when the table has no repeated value, else a renumbered copy in `storage`.
-std::span<const std::uint32_t> by_value(const HugeVector<std::uint32_t>& indices,
+std::span<const std::uint32_t> by_value(const std::pmr::vector<std::uint32_t>& indices,
                                         const std::vector<std::uint32_t>& id_of,
-                                        HugeVector<std::uint32_t>& storage) {
+                                        std::pmr::vector<std::uint32_t>& storage) {
   if (id_of.empty()) return indices;
   storage.resize(indices.size());
   for (std::size_t i = 0; i < indices.size(); ++i) {
@@ -67,8 +67,8 @@ std::span<const std::uint32_t> by_value(const HugeVector<std::uint32_t>& indices
 }
 
 // One id per face for its row of property values: faces with equal rows share the id.
-HugeVector<std::uint32_t> face_property_ids(const std::vector<PropertyColumn>& columns,
-                                            std::size_t faces) {
+std::pmr::vector<std::uint32_t> face_property_ids(const std::vector<PropertyColumn>& columns,
+                                                  std::size_t faces) {
   auto less = [&](std::uint32_t a, std::uint32_t b) {
     for (const PropertyColumn& c : columns) {
       const std::uint64_t x = key_of(c.values[a]), y = key_of(c.values[b]);
@@ -78,7 +78,7 @@ HugeVector<std::uint32_t> face_property_ids(const std::vector<PropertyColumn>& c
   };
   auto equal = [&](std::uint32_t a, std::uint32_t b) { return !less(a, b) && !less(b, a); };
   const std::vector<std::uint32_t> id = first_of_equal(faces, less, equal);
-  HugeVector<std::uint32_t> ids(faces);
+  std::pmr::vector<std::uint32_t> ids(faces);
   for (std::uint32_t f = 0; f < faces; ++f) ids[f] = id.empty() ? f : id[f];
   return ids;
 }

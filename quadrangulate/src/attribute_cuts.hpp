@@ -11,7 +11,7 @@ namespace petersen::quad_detail {
 
 /// The ids made for the cuts, owned here; the CutOptions returned points into them.
 struct AttributeCutIds {
-  HugeVector<std::uint32_t> corner_uv, corner_normal, face_material, face_group, face_object,
+  std::pmr::vector<std::uint32_t> corner_uv, corner_normal, face_material, face_group, face_object,
       face_property;
   std::vector<std::uint8_t> face_flat;
 };

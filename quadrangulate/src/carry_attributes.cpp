@@ -24,8 +24,8 @@ int blend_size(const Blend& blend) {
 // appended before).
 class CornerValues {
  public:
-  CornerValues(const HugeVector<std::uint32_t>& index, HugeVector<std::array<double, 3>>& values,
-               bool unit)
+  CornerValues(const std::pmr::vector<std::uint32_t>& index,
+               std::pmr::vector<std::array<double, 3>>& values, bool unit)
       : index_(index), values_(values), unit_(unit) {}
 
   std::uint32_t blended(const Blend& blend) {
@@ -55,8 +55,8 @@ class CornerValues {
   }
 
  private:
-  const HugeVector<std::uint32_t>& index_;
-  HugeVector<std::array<double, 3>>& values_;
+  const std::pmr::vector<std::uint32_t>& index_;
+  std::pmr::vector<std::array<double, 3>>& values_;
   bool unit_;
   std::map<std::array<std::uint64_t, 3>, std::uint32_t> appended_;
 };
@@ -78,8 +78,8 @@ namespace {
 
 // A derived mesh's attributes before any per-element value: the tables its indices point into,
 // those of the mesh before (blends append to the value tables).
-MeshAttributes shared_tables(const MeshAttributes& before) {
-  MeshAttributes after;
+MeshAttributes shared_tables(const MeshAttributes& before, std::pmr::memory_resource* memory) {
+  MeshAttributes after(memory);
   after.texcoords = before.texcoords;
   after.texcoord_components = before.texcoord_components;
   after.normals = before.normals;
@@ -93,8 +93,9 @@ MeshAttributes shared_tables(const MeshAttributes& before) {
 // Texture coordinates, then normals (renormalised): corner c blended by corner_from[c].
 void blend_corners(const MeshAttributes& before, std::span<const Blend> corner_from,
                    MeshAttributes& after) {
-  auto corners = [&](const HugeVector<std::uint32_t>& index, HugeVector<std::uint32_t>& out,
-                     HugeVector<std::array<double, 3>>& values, bool unit) {
+  auto corners = [&](const std::pmr::vector<std::uint32_t>& index,
+                     std::pmr::vector<std::uint32_t>& out,
+                     std::pmr::vector<std::array<double, 3>>& values, bool unit) {
     if (index.empty()) return;
     CornerValues blend(index, values, unit);
     out.resize(corner_from.size());
@@ -107,7 +108,8 @@ void blend_corners(const MeshAttributes& before, std::span<const Blend> corner_f
 // Face f takes every face value of before's face face_of[f].
 void copy_face_values(const MeshAttributes& before, std::span<const FaceId> face_of,
                       MeshAttributes& after) {
-  auto per_face = [&](const HugeVector<std::uint32_t>& in, HugeVector<std::uint32_t>& out) {
+  auto per_face = [&](const std::pmr::vector<std::uint32_t>& in,
+                      std::pmr::vector<std::uint32_t>& out) {
     if (in.empty()) return;
     out.resize(face_of.size());
     for (std::size_t f = 0; f < face_of.size(); ++f) out[f] = in[face_of[f]];
@@ -146,8 +148,9 @@ void blend_vertex_properties(const MeshAttributes& before, std::size_t vertices_
 MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vertices_before,
                                   std::span<const FaceId> face_of,
                                   std::span<const Blend> corner_from,
-                                  std::span<const Blend> new_vertices) {
-  MeshAttributes after = shared_tables(before);
+                                  std::span<const Blend> new_vertices,
+                                  std::pmr::memory_resource* memory) {
+  MeshAttributes after = shared_tables(before, memory);
   blend_corners(before, corner_from, after);
   copy_face_values(before, face_of, after);
   blend_vertex_properties(before, vertices_before, new_vertices, after);
@@ -163,7 +166,7 @@ MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& 
   using quad_detail::Blend, quad_detail::derived_attributes;
   const MeshAttributes& a = input.attributes;
   std::vector<FaceId> face_of;
-  HugeVector<Blend> corner_from;
+  std::pmr::vector<Blend> corner_from;
   if (a.has_face_attributes() || a.has_corner_attributes()) {
     face_of.resize(out.face_count());
     for (FaceId o = 0; o < out.face_count(); ++o) {
@@ -203,7 +206,7 @@ MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& 
     }
   }
   // The output's vertices are the input's so far (the input's positions may have moved there).
-  return derived_attributes(a, out.positions.size(), face_of, corner_from, {});
+  return derived_attributes(a, out.positions.size(), face_of, corner_from, {}, out.memory());
 }
 
 }  // namespace petersen

@@ -27,10 +27,11 @@ double held_as(ScalarType type, double value);
 /// corner_from may be empty where `before` has no face or no corner attributes. Blended texture
 /// coordinates and normals (renormalised) are appended, one entry per distinct new value; a
 /// blend of corners one of which has no value has none; vertex properties are held_as their type.
-/// O(C + F + V) plus O(n log n) for n new values.
+/// The arrays are allocated from `memory`. O(C + F + V) plus O(n log n) for n new values.
 MeshAttributes derived_attributes(const MeshAttributes& before, std::size_t vertices_before,
                                   std::span<const FaceId> face_of,
                                   std::span<const Blend> corner_from,
-                                  std::span<const Blend> new_vertices);
+                                  std::span<const Blend> new_vertices,
+                                  std::pmr::memory_resource* memory);
 
 }  // namespace petersen::quad_detail

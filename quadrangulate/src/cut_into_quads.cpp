@@ -49,7 +49,9 @@ class FaceCutter {
         midpoint_(midpoint),
         sources_(sources),
         new_vertices_(new_vertices),
-        options_(options) {}
+        options_(options),
+        out_{.mesh = PolygonMesh(mesh.memory()),
+             .sources = std::pmr::vector<std::array<FaceId, 2>>(mesh.memory())} {}
 
   QuadPieces cut_all(std::span<const std::uint8_t> kept) && {
     out_.mesh.corners.reserve(mesh_.corners.size() + 2 * midpoint_.size() / 3);

@@ -20,12 +20,14 @@ struct CutIntoQuadsOptions {
 
 /// The faces after the cuts, in the order of the faces they come from.
 struct QuadPieces {
-  PolygonMesh mesh;  ///< faces only: the positions stay (and grow) in the mesh cut
-  HugeVector<std::array<FaceId, 2>> sources;
-  std::vector<FaceId> face_of;     ///< with attributes: the face each output face comes from
-  std::vector<Blend> corner_from;  ///< with attributes: each corner's blend of that face's corners
-  std::vector<FaceId> pieces;      ///< the output faces the cuts made
-  std::uint64_t centres = 0;       ///< centre vertices added
+  PolygonMesh
+      mesh;  ///< faces only (on the cut mesh's resource): the positions stay in the mesh cut
+  std::pmr::vector<std::array<FaceId, 2>> sources;
+  std::vector<FaceId> face_of = {};  ///< with attributes: the face each output face comes from
+  std::vector<Blend> corner_from =
+      {};                           ///< with attributes: each corner's blend of its face's corners
+  std::vector<FaceId> pieces = {};  ///< the output faces the cuts made
+  std::uint64_t centres = 0;        ///< centre vertices added
 };
 
 /// Cuts every face of `mesh` with an even side count once the midpoints are in (midpoint[h]:

@@ -12,8 +12,8 @@ namespace {
 
 // Per face, its node (kNoNode for a polygon); empty when node v is face v. Decided by the mesh:
 // node_face is empty both when every face is a triangle and when none is.
-HugeVector<NodeId> node_of_faces(const PolygonMesh& mesh, const PairableGraph& graph) {
-  HugeVector<NodeId> face_node;
+std::pmr::vector<NodeId> node_of_faces(const PolygonMesh& mesh, const PairableGraph& graph) {
+  std::pmr::vector<NodeId> face_node;
   if (!mesh.all_triangles()) {
     face_node.assign(mesh.face_count(), kNoNode);
     for (NodeId v = 0; v < graph.node_count; ++v) face_node[graph.node_face[v]] = v;
@@ -50,7 +50,7 @@ class FaceWriter {
 void add_faces_in_input_order(const PolygonMesh& mesh, FaceId face_count,
                               const PairableGraph& graph, std::span<const NodeId> partner_of,
                               FaceWriter& writer, QuadStats& stats) {
-  const HugeVector<NodeId> face_node = node_of_faces(mesh, graph);
+  const std::pmr::vector<NodeId> face_node = node_of_faces(mesh, graph);
   for (FaceId f = 0; f < face_count; ++f) {
     // A pair's second triangle is anywhere in the mesh: fetching its corners a few faces ahead
     // takes a quarter off this loop's time on armadillo-sub2.
@@ -82,7 +82,10 @@ OutputFaces output_faces(const PolygonMesh& mesh, const PairableGraph& graph,
       mesh.all_triangles() ? graph.node_count : static_cast<FaceId>(mesh.face_count());
   const std::size_t corners_in =
       mesh.all_triangles() ? 3 * std::size_t{graph.node_count} : mesh.corners.size();
-  OutputFaces out;
+  // The result is on the positions' resource (QuadOptions::memory), made there, not assigned.
+  std::pmr::memory_resource* const memory = positions.get_allocator().resource();
+  OutputFaces out{.result = {.mesh = PolygonMesh(memory),
+                             .sources = std::pmr::vector<std::array<FaceId, 2>>(memory)}};
   out.result.mesh.positions = std::move(positions);
   std::size_t paired_nodes = 0;
   for (NodeId partner : pairing.partner) paired_nodes += partner != kNoNode;
@@ -100,9 +103,10 @@ OutputFaces output_faces(const PolygonMesh& mesh, const PairableGraph& graph,
 QualityFigures measure_quads(const PolygonMesh& out, std::span<const FaceKind> kinds,
                              std::uint32_t threads) {
   // Each face's quad_corner_deviation, −1 for a face that is not a pair's quad; measured in
-  // blocks on the threads, written in full (from the huge-page pool, not fresh pages).
+  // blocks on the threads, written in full (on the mesh's resource, which may reuse memory the
+  // stages before freed).
   const FaceId out_faces = static_cast<FaceId>(out.face_count());
-  HugeArray<double> costs = make_huge_array<double>(out_faces);
+  RawArray<double> costs = make_raw_array<double>(out_faces, out.memory());
   constexpr FaceId kBlock = 1 << 16;
   run_parallel(threads, (out_faces + kBlock - 1) / kBlock, [&](std::uint32_t block) {
     const auto& p = out.positions;

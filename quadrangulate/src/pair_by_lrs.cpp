@@ -52,7 +52,7 @@ void refuse(QuadStats& stats, const char* reason) {
 // of this path). Without sources, the consuming door's corners are freed as soon as the
 // triangulation has read them, 12 bytes per triangle off the rest of lrs.
 std::optional<LrsPairing> pair_whole_graph(PairableGraph& graph, const PolygonMesh& mesh,
-                                           HugeVector<VertexId>* releasable_corners,
+                                           std::pmr::vector<VertexId>* releasable_corners,
                                            const QuadOptions& options, QuadStats& stats) {
   LrsDualInput input{.positions = mesh.positions,
                      .corners = mesh.corners,
@@ -61,19 +61,20 @@ std::optional<LrsPairing> pair_whole_graph(PairableGraph& graph, const PolygonMe
                      .connected = true};
   if (!options.sources && releasable_corners != nullptr) {
     input.corners_read = [releasable_corners] {
-      *releasable_corners = HugeVector<VertexId>();  // `= {}` would keep the buffer
+      free_storage(*releasable_corners);  // `= {}` would keep the buffer
     };
   }
   try {
-    return pair_closed_component_by_lrs(
-        std::move(input),
-        {.augment = options.augment, .sources = options.sources, .threads = options.threads});
+    return pair_closed_component_by_lrs(std::move(input), {.augment = options.augment,
+                                                           .sources = options.sources,
+                                                           .threads = options.threads,
+                                                           .memory = options.memory});
   } catch (const MeshError& e) {
     // A pinched vertex: the default algorithm pairs the mesh instead, on the graph made again. No
     // cut touched this mesh (every side of every triangle is pairable), so it is the graph built
     // before.
     refuse(stats, e.what());
-    PairableGraph again = build_pairable_graph(mesh, {}, options.threads);
+    PairableGraph again = build_pairable_graph(mesh, {}, options.threads, options.memory);
     graph.node_edges = std::move(again.node_edges);
     graph.edge_ends = std::move(again.edge_ends);
     return std::nullopt;
@@ -98,7 +99,8 @@ void add_lrs_stats(const LrsStats& lrs, double elapsed, QuadStats& stats) {
 }  // namespace
 
 bool pair_component_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
-                           std::span<const NodeId> nodes, HugeVector<VertexId>* releasable_corners,
+                           std::span<const NodeId> nodes,
+                           std::pmr::vector<VertexId>* releasable_corners,
                            const QuadOptions& options, std::vector<VertexId>& local,
                            TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   if (mesh.attributes.has_corner_attributes() || mesh.attributes.has_face_attributes()) {

@@ -23,7 +23,8 @@ namespace petersen::quad_detail {
 /// orientable manifold (a pinched vertex); the whole graph's arrays are then made again. Fills the
 /// matching and lrs fields of `stats` and its dual, initial, augment and verify times.
 bool pair_component_by_lrs(PairableGraph& graph, const PolygonMesh& mesh,
-                           std::span<const NodeId> nodes, HugeVector<VertexId>* releasable_corners,
+                           std::span<const NodeId> nodes,
+                           std::pmr::vector<VertexId>* releasable_corners,
                            const QuadOptions& options, std::vector<VertexId>& local,
                            TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock);
 

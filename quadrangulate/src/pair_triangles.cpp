@@ -82,7 +82,7 @@ Components components_of(const PairableGraph& graph) {
 struct Subgraph {
   std::vector<NodeId> nodes;
   std::vector<EdgeId> edge_of;
-  HugeVector<NodeId> edge_ends;
+  std::pmr::vector<NodeId> edge_ends;
 };
 
 Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
@@ -108,13 +108,14 @@ Subgraph induced(const PairableGraph& graph, std::vector<NodeId> nodes) {
 
 // The graph of these edge ends (edge e joins ends 2e and 2e + 1), in CsrGraph's form; the ends are
 // freed before the graph is built, so that the two are not live together with the edge list.
-CsrGraph csr_taking(std::uint32_t node_count, HugeVector<NodeId> edge_ends) {
+CsrGraph csr_taking(std::uint32_t node_count, std::pmr::vector<NodeId> edge_ends,
+                    std::pmr::memory_resource* memory) {
   std::vector<std::array<NodeId, 2>> edges(edge_ends.size() / 2);
   for (EdgeId e = 0; e < edges.size(); ++e) {
     edges[e] = {edge_ends[2 * std::size_t{e}], edge_ends[2 * std::size_t{e} + 1]};
   }
-  edge_ends = HugeVector<NodeId>();
-  return CsrGraph::from_edges(node_count, edges);
+  free_storage(edge_ends);
+  return CsrGraph::from_edges(node_count, edges, memory);
 }
 
 // The exact minimum-cost perfect matching of a closed graph, its certificate checked; adds the
@@ -122,7 +123,8 @@ CsrGraph csr_taking(std::uint32_t node_count, HugeVector<NodeId> edge_ends) {
 Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost> costs,
                                    const QuadOptions& options, TrianglePairing& pairing,
                                    QuadStats& stats, Stopwatch& clock) {
-  MinCostResult result = min_cost_perfect_matching(cubic, costs, {.threads = options.threads});
+  MinCostResult result = min_cost_perfect_matching(
+      cubic, costs, {.threads = options.threads, .memory = options.memory});
   add_min_cost_run(stats.matching, result.stats);
   clock.lap();
   if (CertificateCheck check =
@@ -145,22 +147,24 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
                  std::span<const Cost> costs, const QuadOptions& options, Algorithm algorithm,
                  TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock,
                  BesideVerifier beside_verifier) {
-  Matching matching;
   std::string name(to_string(algorithm));
-  if (costs.empty()) {
+  // Made on options.memory and moved, never assigned (an assignment across resources copies).
+  Matching matching = [&] {
+    if (!costs.empty()) {
+      name = "the minimum-cost matching";
+      return cheapest_perfect_matching(cubic, costs, options, pairing, stats, clock);
+    }
     // No bridge test: a bridge would leave a set of triangles whose only boundary is one edge,
     // but a boundary (mod 2) has no ends, and one edge has two.
     PerfectMatchingResult result = perfect_matching(cubic, {.algorithm = algorithm,
                                                             .augment = options.augment,
                                                             .seed = options.seed,
-                                                            .validate = false});
+                                                            .validate = false,
+                                                            .memory = options.memory});
     add_run(stats.matching, result.stats);
-    matching = std::move(result.matching);
     clock.lap();
-  } else {
-    name = "the minimum-cost matching";
-    matching = cheapest_perfect_matching(cubic, costs, options, pairing, stats, clock);
-  }
+    return std::move(result.matching);
+  }();
   MatchingCheck check;
   run_parallel(options.threads, 2, [&](std::uint32_t task) {
     if (task == 0) {
@@ -200,14 +204,16 @@ void pair_closed(const CubicGraph& cubic, std::span<const NodeId> node_of,
 void pair_by_partners(CubicGraph cubic, Algorithm algorithm, const QuadOptions& options,
                       TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   const std::uint32_t node_count = cubic.node_count();
-  const HugeVector<NodeId> rows =
+  const std::pmr::vector<NodeId> rows =
       std::move(cubic).into_neighbour_rows(options.threads, [&](std::span<const NodeId> edge_ends) {
         stats.components = stats.closed_components =
             ComponentForest(node_count, edge_ends).root_count();
       });
   stats.dual_seconds += clock.lap();
-  PartnerResult result = perfect_partners(
-      rows, {.algorithm = algorithm, .augment = options.augment, .seed = options.seed});
+  PartnerResult result = perfect_partners(rows, {.algorithm = algorithm,
+                                                 .augment = options.augment,
+                                                 .seed = options.seed,
+                                                 .memory = options.memory});
   add_run(stats.matching, result.stats);
   clock.lap();
   if (MatchingCheck check = verify_perfect_partners(rows, result.partner); !check.ok()) {
@@ -274,7 +280,7 @@ void pair_closed_components(const PairableGraph& graph, std::vector<NodeId> clos
                             Algorithm algorithm, TrianglePairing& pairing, QuadStats& stats,
                             Stopwatch& clock) {
   Subgraph sub = induced(graph, std::move(closed_nodes));
-  HugeVector<EdgeId> node_edges(3 * sub.nodes.size());
+  std::pmr::vector<EdgeId> node_edges(3 * sub.nodes.size());
   std::vector<EdgeId> local_edge(graph.edge_count(), kNoEdge);
   for (EdgeId i = 0; i < sub.edge_of.size(); ++i) local_edge[sub.edge_of[i]] = i;
   for (NodeId i = 0; i < sub.nodes.size(); ++i) {
@@ -285,7 +291,7 @@ void pair_closed_components(const PairableGraph& graph, std::vector<NodeId> clos
   }
   const CubicGraph cubic =
       CubicGraph::from_valid_incidence(std::move(node_edges), std::move(sub.edge_ends));
-  HugeVector<Cost> local_costs;
+  std::pmr::vector<Cost> local_costs;
   if (!costs.empty()) {
     for (EdgeId e : sub.edge_of) local_costs.push_back(costs[e]);
   }
@@ -298,10 +304,10 @@ void pair_closed_components(const PairableGraph& graph, std::vector<NodeId> clos
 Matching cheapest_maximum_matching(const CsrGraph& open, std::span<const EdgeId> edge_of,
                                    std::span<const Cost> costs, const QuadOptions& options,
                                    TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
-  HugeVector<Cost> local_costs;
+  std::pmr::vector<Cost> local_costs;
   for (EdgeId e : edge_of) local_costs.push_back(costs[e]);
-  MinCostMaximumResult cheapest =
-      min_cost_maximum_matching(open, local_costs, {.threads = options.threads});
+  MinCostMaximumResult cheapest = min_cost_maximum_matching(
+      open, local_costs, {.threads = options.threads, .memory = options.memory});
   stats.matching.augment_seconds += clock.lap();
   if (CertificateCheck check = verify_min_cost_maximum_matching(
           open.node_count(), open.edge_ends(), local_costs, cheapest.matching, cheapest.total_cost,
@@ -322,10 +328,10 @@ void pair_open_components(PairableGraph& graph, std::vector<NodeId> open_nodes,
                           std::span<const Cost> costs, const QuadOptions& options,
                           TrianglePairing& pairing, QuadStats& stats, Stopwatch& clock) {
   Subgraph sub = induced(graph, std::move(open_nodes));
-  graph.node_edges = HugeVector<EdgeId>();
-  graph.edge_ends = HugeVector<NodeId>();
-  const CsrGraph open =
-      csr_taking(static_cast<std::uint32_t>(sub.nodes.size()), std::move(sub.edge_ends));
+  free_storage(graph.node_edges);
+  free_storage(graph.edge_ends);
+  const CsrGraph open = csr_taking(static_cast<std::uint32_t>(sub.nodes.size()),
+                                   std::move(sub.edge_ends), options.memory);
   if (costs.empty()) sub.edge_of = std::vector<EdgeId>();  // only the costs are looked up by it
   stats.dual_seconds += clock.lap();
   // The cardinality search runs in every case: its Tutte–Berge witness proves any matching of
@@ -368,12 +374,12 @@ void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
     stats.components = components.closed.size();
     for (std::uint8_t closed : components.closed) stats.closed_components += closed;
   }
-  graph.node_edges = HugeVector<EdgeId>();
-  const CsrGraph whole = csr_taking(graph.node_count, std::move(graph.edge_ends));
+  free_storage(graph.node_edges);
+  const CsrGraph whole = csr_taking(graph.node_count, std::move(graph.edge_ends), options.memory);
   const Cost price = static_cast<Cost>(std::llround(options.triangle_cost * kDefaultCostScale));
   stats.dual_seconds += clock.lap();
-  MinCostMatchingResult result =
-      min_cost_matching(whole, costs, {&price, 1}, {.threads = options.threads});
+  MinCostMatchingResult result = min_cost_matching(
+      whole, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
   add_min_cost_run(stats.matching, result.stats);
   clock.lap();
   if (CertificateCheck check =
@@ -408,19 +414,21 @@ bool lrs_takes_whole_mesh(const PairableGraph& graph, const PolygonMesh& mesh) {
 namespace petersen {
 
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
-                               HugeVector<VertexId>* releasable_corners,
+                               std::pmr::vector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats) {
   using namespace quad_detail;  // the strategies above
   Stopwatch clock;
-  TrianglePairing pairing;
+  TrianglePairing pairing{.partner = std::pmr::vector<NodeId>(options.memory),
+                          .lrs_quads = std::pmr::vector<LrsQuad>(options.memory)};
   // With lrs, auto matches the closed components lrs does not take.
   const Algorithm* chosen = std::get_if<Algorithm>(&options.algorithm);
   const Algorithm closed_algorithm = chosen ? *chosen : Algorithm::automatic;
   // lrs flips edges, making quads the threshold never judged: with one, auto does its work.
   bool use_lrs = !chosen && options.objective == Objective::pairs && !options.max_corner_deviation;
-  const HugeVector<Cost> costs =
-      options.objective != Objective::pairs ? scale_costs(degrees) : HugeVector<Cost>{};
+  const std::pmr::vector<Cost> costs = options.objective != Objective::pairs
+                                           ? scale_costs(degrees, kDefaultCostScale, options.memory)
+                                           : std::pmr::vector<Cost>(options.memory);
   stats.dual_seconds += clock.lap();
   stats.optimality_certified = options.objective != Objective::pairs;
   // With all_quad every triangle left is split into quads anyway: the quads objective then pairs

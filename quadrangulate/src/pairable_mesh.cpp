@@ -1,6 +1,7 @@
 // Stage 1 of the front door (stages.hpp): the pairable graph, its cuts and the pairs' costs.
 
 #include <bit>
+#include <optional>
 
 #include "attribute_cuts.hpp"
 #include "petersen/dualize/cross_field.hpp"
@@ -84,11 +85,11 @@ void genus_across_chosen_cuts(const PairableGraph& graph, QuadStats& stats) {
 // Objective::quads with a flow weight: each pair's cost gets its weighted flow against the cross
 // field, made over the whole pairable graph before any shape cut (a threshold says which pairs
 // are allowed, not where the quads' edge loops run); the threshold then judges shape alone.
-HugeVector<double> edge_flow(const PairableGraph& graph, const PolygonMesh& mesh,
-                             QuadStats& stats) {
+std::pmr::vector<double> edge_flow(const PairableGraph& graph, const PolygonMesh& mesh,
+                                   QuadStats& stats) {
   Stopwatch clock;
   const CrossField field = cross_field(graph, mesh);
-  HugeVector<double> flow = pairable_edge_flow(graph, side_alignment(field));
+  std::pmr::vector<double> flow = pairable_edge_flow(graph, side_alignment(field));
   stats.field_iterations = field.iterations;
   stats.field_seconds = clock.lap();
   return flow;
@@ -97,7 +98,9 @@ HugeVector<double> edge_flow(const PairableGraph& graph, const PolygonMesh& mesh
 }  // namespace
 
 PairableMesh pairable_mesh(const PolygonMesh& mesh, const QuadOptions& options, QuadStats& stats) {
-  PairableMesh pairable;
+  // The graph and the costs are made on options.memory and moved in, never assigned: an
+  // assignment across resources would copy them (memory.hpp).
+  std::optional<PairableGraph> built;
   // The referenced vertices are counted on a second thread beside the graph's single-threaded
   // start (the corners' range check and the bucket offsets, longer than the count).
   std::int64_t referenced_vertices = 0;
@@ -107,14 +110,15 @@ PairableMesh pairable_mesh(const PolygonMesh& mesh, const QuadOptions& options, 
       return;
     }
     quad_detail::AttributeCutIds ids;  // freed once the graph has the cuts
-    pairable.graph = build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids),
-                                          options.threads);
+    built.emplace(build_pairable_graph(mesh, quad_detail::attribute_cuts(mesh, options, ids),
+                                       options.threads, options.memory));
   });
+  PairableMesh pairable{std::move(*built), std::pmr::vector<double>(options.memory)};
   PairableGraph& graph = pairable.graph;
   if (options.objective != Objective::pairs || options.max_corner_deviation) {
-    pairable.costs = pairable_edge_quality(graph, mesh, options.threads);
+    pairable.costs = pairable_edge_quality(graph, mesh, options.threads, options.memory);
   }
-  HugeVector<double> flow;
+  std::pmr::vector<double> flow;
   if (options.objective == Objective::quads && options.flow_weight > 0) {
     flow = edge_flow(graph, mesh, stats);
   }
@@ -125,7 +129,7 @@ PairableMesh pairable_mesh(const PolygonMesh& mesh, const QuadOptions& options, 
   for (EdgeId e = 0; e < flow.size(); ++e) pairable.costs[e] += options.flow_weight * flow[e];
   record_graph_figures(mesh, graph, referenced_vertices, stats);
   genus_across_chosen_cuts(graph, stats);
-  graph.chosen_cut_ends = HugeVector<NodeId>();  // `= {}` would keep the capacity
+  free_storage(graph.chosen_cut_ends);  // `= {}` would keep the capacity
   return pairable;
 }
 

@@ -65,17 +65,18 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
       pair_triangles(pairable.graph, mesh, movable != nullptr ? &movable->corners : nullptr,
                      pairable.costs, options, stats);  // fills its own phases' times
   genus_from_components(pairable.graph, stats);
-  pairable.costs = HugeVector<double>();
+  free_storage(pairable.costs);
   clock.lap();
 
   const MeshAttributes& attributes = mesh.attributes;
   const bool with_sources = options.sources || options.all_quad ||
                             attributes.has_corner_attributes() || attributes.has_face_attributes();
   const std::int64_t objective_units = pairing.objective_units;
-  OutputFaces out =
-      output_faces(mesh, pairable.graph, std::move(pairing),
-                   movable != nullptr ? std::move(movable->positions) : Positions(mesh.positions),
-                   with_sources, stats);
+  OutputFaces out = output_faces(mesh, pairable.graph, std::move(pairing),
+                                 movable != nullptr && movable->memory()->is_equal(*options.memory)
+                                     ? std::move(movable->positions)
+                                     : Positions(mesh.positions, options.memory),
+                                 with_sources, stats);
   QuadResult& result = out.result;
   const QualityFigures quality = measure_quads(result.mesh, out.kinds, options.threads);
   stats.quality_median = quality.median;
@@ -96,7 +97,7 @@ QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options,
     split_leftovers(result, out.kinds, options);
     result.stats.all_quad_seconds = clock.lap();
   }
-  if (!options.sources) result.sources = HugeVector<std::array<FaceId, 2>>();
+  if (!options.sources) free_storage(result.sources);
   result.stats.total_seconds = total.lap();
   return std::move(result);
 }

@@ -21,10 +21,10 @@ bool runs_same_way(const PairableGraph& graph, const PolygonMesh& mesh, EdgeId e
 
 }  // namespace
 
-void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<double>& degrees,
-                  double max_degrees, HugeVector<double>* also) {
+void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, std::pmr::vector<double>& degrees,
+                  double max_degrees, std::pmr::vector<double>* also) {
   // Edges kept are renumbered in order; new_id[e] is kNoEdge for an edge cut.
-  HugeVector<EdgeId> new_id(graph.edge_count(), kNoEdge);
+  std::pmr::vector<EdgeId> new_id(graph.edge_count(), kNoEdge);
   EdgeId kept = 0;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     // "At most DEG" is pairable; a NaN cost cannot happen (quad_corner_deviation never gives one).

@@ -11,7 +11,7 @@ namespace petersen::quad_detail {
 /// longer as an inconsistent edge; the edges left keep their relative order and `degrees` (and
 /// `also`, another per-edge array, when not null) follows them. The graph is no longer cubic when
 /// any edge goes. O(F).
-void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, HugeVector<double>& degrees,
-                  double max_degrees, HugeVector<double>* also = nullptr);
+void cut_by_shape(PairableGraph& graph, const PolygonMesh& mesh, std::pmr::vector<double>& degrees,
+                  double max_degrees, std::pmr::vector<double>* also = nullptr);
 
 }  // namespace petersen::quad_detail

@@ -30,7 +30,7 @@ TEST(CrossField, FollowsTheQuadsOfATriangulatedGrid) {
   const CrossField field = cross_field(graph, mesh);
   ASSERT_EQ(field.cross.size(), graph.node_count);
   EXPECT_LT(field.residual, 1e-5);
-  const HugeVector<double> alignment = side_alignment(field);
+  const std::pmr::vector<double> alignment = side_alignment(field);
   double side_sum = 0, diagonal_sum = 0;
   int sides = 0, diagonals = 0;
   for (NodeId t = 0; t < graph.node_count; ++t) {
@@ -55,7 +55,7 @@ TEST(CrossField, FollowsTheQuadsOfATriangulatedGrid) {
 TEST(CrossField, FlowOfAPairIsLeastAcrossTheDiagonal) {
   const PolygonMesh mesh = jittered_grid({.nx = 16, .ny = 16, .jitter = 0.05, .seed = 5});
   const PairableGraph graph = build_pairable_graph(mesh);
-  const HugeVector<double> flow =
+  const std::pmr::vector<double> flow =
       pairable_edge_flow(graph, side_alignment(cross_field(graph, mesh)));
   ASSERT_EQ(flow.size(), graph.edge_count());
   // Each square's two triangles (faces 2q, 2q + 1) share its diagonal, which runs across the field;
@@ -79,8 +79,8 @@ TEST(CrossField, DoesNotDependOnTheMeshsPlacement) {
     p = {c * p[0] - s * p[2] + 3, p[1] - 2, s * p[0] + c * p[2] + 1};
   }
   const PairableGraph graph = build_pairable_graph(mesh);
-  const HugeVector<double> before = side_alignment(cross_field(graph, mesh));
-  const HugeVector<double> after = side_alignment(cross_field(graph, moved));
+  const std::pmr::vector<double> before = side_alignment(cross_field(graph, mesh));
+  const std::pmr::vector<double> after = side_alignment(cross_field(graph, moved));
   ASSERT_EQ(before.size(), after.size());
   for (std::size_t i = 0; i < before.size(); ++i) EXPECT_NEAR(before[i], after[i], 1e-6) << i;
 }
@@ -90,7 +90,7 @@ TEST(CrossField, DegenerateTrianglesHaveNoCross) {
   mesh.positions[5] = mesh.positions[6];  // two triangles at vertex 5 lose their area
   const PairableGraph graph = build_pairable_graph(mesh);
   const CrossField field = cross_field(graph, mesh);
-  const HugeVector<double> alignment = side_alignment(field);
+  const std::pmr::vector<double> alignment = side_alignment(field);
   for (NodeId t = 0; t < graph.node_count; ++t) {
     ASSERT_TRUE(std::isfinite(std::abs(field.cross[t])));
     for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(alignment[3 * t + k]));

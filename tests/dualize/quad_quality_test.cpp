@@ -119,7 +119,7 @@ TEST(QuadQuality, PairableEdgeCostIsTheCostOfTheQuadsFromAMatchingOfTheDual) {
     ASSERT_EQ(graph.edge_ends[2 * e], dual.graph.endpoints(e)[0]);
     ASSERT_EQ(graph.edge_ends[2 * e + 1], dual.graph.endpoints(e)[1]);
   }
-  const HugeVector<double> cost = pairable_edge_quality(graph, mesh);
+  const std::pmr::vector<double> cost = pairable_edge_quality(graph, mesh);
   const PerfectMatchingResult r = perfect_matching(dual.graph);
   const PolygonMesh quads = testing::quads_of_matching(mesh, dual.graph, r.matching);
   std::size_t q = 0;
@@ -150,8 +150,8 @@ TEST(QuadQuality, PairableEdgeCostsDoNotDependOnTheThreads) {
   const PolygonMesh mesh = random_closed_surface(1, 70000, 20000, 3);
   const PairableGraph graph = build_pairable_graph(mesh);
   ASSERT_GT(graph.node_count, 2u << 16);  // three blocks
-  const HugeVector<double> one = pairable_edge_quality(graph, mesh, 1);
-  const HugeVector<double> three = pairable_edge_quality(graph, mesh, 3);
+  const std::pmr::vector<double> one = pairable_edge_quality(graph, mesh, 1);
+  const std::pmr::vector<double> three = pairable_edge_quality(graph, mesh, 3);
   ASSERT_EQ(one.size(), graph.edge_count());
   ASSERT_EQ(three.size(), one.size());
   for (EdgeId e = 0; e < one.size(); ++e) {

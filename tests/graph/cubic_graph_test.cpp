@@ -81,10 +81,10 @@ TEST(CubicGraph, NeighbourRowsNameTheOtherEndOfEachSlot) {
     std::vector<NodeId> expected;
     for (NodeId v = 0; v < g.node_count(); ++v)
       for (EdgeId e : g.incident_edges(v)) expected.push_back(g.other_end(e, v));
-    const HugeVector<NodeId> rows = std::move(g).into_neighbour_rows();
+    const std::pmr::vector<NodeId> rows = std::move(g).into_neighbour_rows();
     EXPECT_EQ(std::vector<NodeId>(rows.begin(), rows.end()), expected);
   }
-  const HugeVector<NodeId> theta =
+  const std::pmr::vector<NodeId> theta =
       CubicGraph::from_incidence({0, 1, 2, 2, 1, 0}, {0, 1, 0, 1, 0, 1}).into_neighbour_rows();
   EXPECT_EQ(std::vector<NodeId>(theta.begin(), theta.end()),
             (std::vector<NodeId>{1, 1, 1, 0, 0, 0}));
@@ -98,7 +98,7 @@ TEST(CubicGraph, NeighbourRowsWithWorkBesideReadTheEdgesBeforeTheyAreFreed) {
     for (NodeId v = 0; v < g.node_count(); ++v)
       for (EdgeId e : g.incident_edges(v)) expected.push_back(g.other_end(e, v));
     std::vector<NodeId> seen;
-    const HugeVector<NodeId> rows =
+    const std::pmr::vector<NodeId> rows =
         std::move(g).into_neighbour_rows(threads, [&](std::span<const NodeId> edge_ends) {
           seen.assign(edge_ends.begin(), edge_ends.end());
         });

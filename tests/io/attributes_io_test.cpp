@@ -77,7 +77,8 @@ std::string resolved_corner(const PolygonMesh& mesh, std::size_t c) {
 
 std::string resolved_face(const PolygonMesh& mesh, FaceId f) {
   const MeshAttributes& a = mesh.attributes;
-  auto name = [f](const HugeVector<std::uint32_t>& values, const std::vector<std::string>& names) {
+  auto name = [f](const std::pmr::vector<std::uint32_t>& values,
+                  const std::vector<std::string>& names) {
     return values.empty() || values[f] == kNoAttribute ? std::string("-") : names[values[f]];
   };
   return name(a.face_material, a.material_names) + "|" + name(a.face_group, a.group_names) + "|" +

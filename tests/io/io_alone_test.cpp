@@ -38,7 +38,7 @@ PolygonMesh base_mesh() {
 }
 
 template <class T>
-std::vector<T> vec(const HugeVector<T>& values) {
+std::vector<T> vec(const std::pmr::vector<T>& values) {
   return std::vector<T>(values.begin(), values.end());
 }
 

@@ -59,7 +59,7 @@ TEST(ContractionStep, TetrahedronIsAlreadyIrreducible) {
   Triangulation tri = testing::from_triangles(testing::tetrahedron());
   const ContractionResult result = contract_to_irreducible(tri);
   EXPECT_TRUE(result.stack.empty());
-  EXPECT_EQ(result.processed, (HugeVector<VertexId>{0, 1, 2, 3}));
+  EXPECT_EQ(result.processed, (std::pmr::vector<VertexId>{0, 1, 2, 3}));
 }
 
 TEST(ContractionStep, OctahedronShrinksToTheTetrahedron) {

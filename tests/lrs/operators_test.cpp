@@ -247,7 +247,7 @@ TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
   const CubicGraph dual = build_dual(tetrahedron).graph;
   std::vector<VertexId> corners = testing::flat_corners(tetrahedron);
   std::swap(corners[1], corners[2]);
-  HugeVector<EdgeId> slots(dual.node_edges().begin(), dual.node_edges().end());
+  std::pmr::vector<EdgeId> slots(dual.node_edges().begin(), dual.node_edges().end());
   std::swap(slots[0], slots[2]);
   bool read = false;
   EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, std::move(slots),
@@ -258,7 +258,7 @@ TEST(Triangulation, FromDualRefusesWhatLrsCannotTake) {
   // Arrays of the wrong sizes, and an edge that is no side of its triangle.
   EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, corners, {}, {}),
                std::invalid_argument);
-  HugeVector<NodeId> ends(dual.edge_ends().begin(), dual.edge_ends().end());
+  std::pmr::vector<NodeId> ends(dual.edge_ends().begin(), dual.edge_ends().end());
   std::swap(ends[0], ends[3]);  // edge 0's first triangle no longer has it
   EXPECT_THROW(Triangulation::from_dual(tetrahedron.positions, testing::flat_corners(tetrahedron),
                                         {dual.node_edges().begin(), dual.node_edges().end()},

@@ -77,8 +77,8 @@ inline std::vector<std::array<VertexId, 3>> oriented_faces(const PolygonMesh& me
 /// edge e crosses edge e, and node f's k-th edge is edge k of to_mesh's triangle f. Every face
 /// alive.
 inline CubicGraph dual_graph_of(const Triangulation& tri) {
-  HugeVector<EdgeId> node_edges(3 * std::size_t{tri.live_faces()});
-  HugeVector<NodeId> edge_ends(2 * std::size_t{tri.edge_capacity()});
+  std::pmr::vector<EdgeId> node_edges(3 * std::size_t{tri.live_faces()});
+  std::pmr::vector<NodeId> edge_ends(2 * std::size_t{tri.edge_capacity()});
   FaceId f = 0;
   for (Halfedge h = 0; h < 2 * tri.edge_capacity(); ++h) {
     if (!tri.smallest_of_face(h)) continue;

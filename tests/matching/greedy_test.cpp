@@ -207,7 +207,7 @@ RC_GTEST_PROP(Schrijver, BipartiteGraphsArePairedPerfectlyBeforeAugmentingAtBoth
   RC_ASSERT(r.stats.unpaired_after_initial == 0u);
   RC_ASSERT(r.stats.augmenting_paths == 0u);
   RC_ASSERT(verify_perfect_matching(g, r.matching).ok());
-  const HugeVector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
+  const std::pmr::vector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
   const PartnerResult p = perfect_partners(rows);
   RC_ASSERT(p.stats.schrijver == r.stats.schrijver);
   RC_ASSERT(p.stats.ordered_sweep == r.stats.ordered_sweep);
@@ -237,7 +237,7 @@ TEST(Schrijver, TakesOverWhereTheSweepLeavesNodesOfABipartiteGraph) {
     EXPECT_EQ(r.stats.unpaired_after_initial, 0u);
     EXPECT_EQ(r.stats.augmenting_paths, 0u);
     EXPECT_TRUE(verify_perfect_matching(g, r.matching).ok());
-    const HugeVector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
+    const std::pmr::vector<NodeId> rows = CubicGraph(g).into_neighbour_rows();
     EXPECT_EQ(perfect_partners(rows).stats.unpaired_after_initial, 0u);
   }
   EXPECT_EQ(found, 5);
@@ -269,7 +269,7 @@ TEST(Schrijver, IsSkippedByPaperPS) {
   EXPECT_FALSE(r.stats.schrijver);
   EXPECT_GT(r.stats.unpaired_after_initial, 0u);
   EXPECT_TRUE(verify_perfect_matching(plate, r.matching).ok());
-  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  const std::pmr::vector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
   const PartnerResult p = perfect_partners(rows, {.algorithm = Algorithm::ps});
   EXPECT_FALSE(p.stats.schrijver);
   EXPECT_GT(p.stats.unpaired_after_initial, 0u);
@@ -343,7 +343,7 @@ TEST(OrderedSweep, TakesPSsPlaceAtBothFrontDoorsWhereTheNumberingIsLocal) {
   // would take over where the sweep leaves nodes of a bipartite graph, does not run: the same
   // pairing as on a graph that is not bipartite.
   const CubicGraph plate = dual_graph(voxel_plate({.holes_x = 3, .holes_y = 2, .subdivision = 5}));
-  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  const std::pmr::vector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
   for (const std::uint64_t seed : {1u, 2u}) {
     const PerfectMatchingResult r = perfect_matching(plate, {.seed = seed});
     EXPECT_TRUE(r.stats.ordered_sweep);
@@ -392,13 +392,13 @@ TEST(Algorithms, AutoPairsInPSsPlaceAndPsRunsThePapersPSAlone) {
     NeighbourTable table(*g);
     Matching by_ps(g->node_count());
     EXPECT_EQ(r.stats.unpaired_after_initial, puli_segal(table, &by_ps.mate_edge, 7));
-    const HugeVector<NodeId> rows = CubicGraph(*g).into_neighbour_rows();
+    const std::pmr::vector<NodeId> rows = CubicGraph(*g).into_neighbour_rows();
     const PartnerResult p = perfect_partners(rows, {.algorithm = Algorithm::ps, .seed = 7});
     EXPECT_FALSE(p.stats.ordered_sweep);
     EXPECT_FALSE(p.stats.schrijver);
     EXPECT_EQ(p.stats.unpaired_after_initial, r.stats.unpaired_after_initial);
   }
-  const HugeVector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
+  const std::pmr::vector<NodeId> rows = CubicGraph(plate).into_neighbour_rows();
   EXPECT_THROW(perfect_partners(rows, {.algorithm = Algorithm::sg}), std::invalid_argument);
 }
 

@@ -466,7 +466,7 @@ TEST(MinCostPerfect, SharedMeshesUnderTheQuadMeasureEqualLemonAndAreCertified) {
     // by their mesh edge): its costs are the dual's.
     const PairableGraph pairable = build_pairable_graph(triangles);
     ASSERT_EQ(pairable.edge_count(), dual.graph.edge_count());
-    const HugeVector<Cost> costs = scale_costs(pairable_edge_quality(pairable, triangles));
+    const std::pmr::vector<Cost> costs = scale_costs(pairable_edge_quality(pairable, triangles));
     // Two threads (the short searches' halves run at once on graphs of this size), and the same
     // matching on one.
     const MinCostResult r = min_cost_perfect_matching(dual.graph, costs, {.threads = 2});
@@ -544,7 +544,7 @@ TEST(MinCostPerfect, RejectsBadCosts) {
 
 TEST(ScaleCosts, RoundsAndRejectsNonFinite) {
   const std::vector<double> degrees = {0.0, 1.0, 90.5, 270.0};
-  const HugeVector<Cost> scaled = scale_costs(degrees);
+  const std::pmr::vector<Cost> scaled = scale_costs(degrees);
   for (std::size_t i = 0; i < degrees.size(); ++i)
     EXPECT_EQ(scaled[i], static_cast<Cost>(std::llround(degrees[i] * kDefaultCostScale)));
   const std::vector<double> bad = {1.0, std::numeric_limits<double>::quiet_NaN()};

@@ -18,14 +18,14 @@ namespace {
 
 using Problem = MatchingCheck::Problem;
 
-HugeVector<NodeId> rows_of(CubicGraph g) {
+std::pmr::vector<NodeId> rows_of(CubicGraph g) {
   return std::move(g).into_neighbour_rows();
 }
 
 RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsAutoAndPsDo, ()) {
   const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
   const auto seed = *rc::gen::arbitrary<std::uint64_t>();
-  const HugeVector<NodeId> rows = rows_of(g);
+  const std::pmr::vector<NodeId> rows = rows_of(g);
   const Algorithm algorithm = *rc::gen::element(Algorithm::automatic, Algorithm::ps);
   for (Augment augment : {Augment::local, Augment::faithful}) {
     const PerfectMatchingResult full = perfect_matching(
@@ -48,14 +48,14 @@ RC_GTEST_PROP(PerfectPartners, PairsAsPerfectMatchingsAutoAndPsDo, ()) {
 // augment_matching on the graph: the same pairs and counters.
 RC_GTEST_PROP(AugmentPartners, GrowsAPairingAsAugmentMatchingDoes, ()) {
   const CubicGraph g = *rc::gen::arbitrary<CubicGraph>();
-  const HugeVector<NodeId> rows = rows_of(g);
+  const std::pmr::vector<NodeId> rows = rows_of(g);
   std::vector<EdgeId> order(g.edge_count());
   for (EdgeId e = 0; e < order.size(); ++e) order[e] = e;
   std::shuffle(order.begin(), order.end(), std::mt19937_64(*rc::gen::arbitrary<std::uint64_t>()));
   for (Augment augment : {Augment::local, Augment::faithful}) {
     Matching matching;
     matching.mate_edge.assign(g.node_count(), kNoEdge);
-    HugeVector<NodeId> partner(g.node_count(), kNoNode);
+    std::pmr::vector<NodeId> partner(g.node_count(), kNoNode);
     for (EdgeId e : order) {
       const auto [a, b] = g.endpoints(e);
       if (matching.mate_edge[a] != kNoEdge || matching.mate_edge[b] != kNoEdge) continue;
@@ -75,7 +75,8 @@ RC_GTEST_PROP(AugmentPartners, GrowsAPairingAsAugmentMatchingDoes, ()) {
 }
 
 TEST(AugmentPartners, RefusesAPartnerThatIsNoNeighbourOrDoesNotNameItBack) {
-  const HugeVector<NodeId> prism_rows = rows_of(prism(3));  // 0-1-2 and 3-4-5, i joined to i+3
+  const std::pmr::vector<NodeId> prism_rows =
+      rows_of(prism(3));  // 0-1-2 and 3-4-5, i joined to i+3
   std::vector<NodeId> not_adjacent{4, kNoNode, kNoNode, kNoNode, 0, kNoNode};
   EXPECT_THROW(augment_partners(prism_rows, not_adjacent), std::invalid_argument);
   std::vector<NodeId> one_way{1, 2, kNoNode, kNoNode, kNoNode, kNoNode};
@@ -90,7 +91,7 @@ TEST(AugmentPartners, RefusesAPartnerThatIsNoNeighbourOrDoesNotNameItBack) {
 TEST(PerfectPartners, MatchesLargeRandomGraphsPerfectly) {
   // Past the read-ahead distances and with many free nodes after PS, so augmenting paths run.
   for (std::uint64_t seed = 1; seed <= 4; ++seed) {
-    const HugeVector<NodeId> rows = rows_of(random_cubic_bridgeless(20000, seed));
+    const std::pmr::vector<NodeId> rows = rows_of(random_cubic_bridgeless(20000, seed));
     const PartnerResult r = perfect_partners(rows, {.seed = seed});
     EXPECT_TRUE(verify_perfect_partners(rows, r.partner).ok());
     EXPECT_EQ(r.stats.augmenting_paths * 2, r.stats.unpaired_after_initial);
@@ -99,13 +100,14 @@ TEST(PerfectPartners, MatchesLargeRandomGraphsPerfectly) {
 
 TEST(VerifyPerfectPartners, AcceptsAPerfectMatchingOfTheTheta) {
   // Three parallel edges: the partner is in the row three times.
-  const HugeVector<NodeId> rows = rows_of(theta_graph());
+  const std::pmr::vector<NodeId> rows = rows_of(theta_graph());
   EXPECT_TRUE(verify_perfect_partners(rows, std::vector<NodeId>{1, 0}).ok());
 }
 
 TEST(VerifyPerfectPartners, NamesEachProblemWithItsNode) {
-  const HugeVector<NodeId> rows = rows_of(complete_k4());   // every pair adjacent
-  const HugeVector<NodeId> prism_rows = rows_of(prism(3));  // 0-1-2 and 3-4-5, i joined to i+3
+  const std::pmr::vector<NodeId> rows = rows_of(complete_k4());  // every pair adjacent
+  const std::pmr::vector<NodeId> prism_rows =
+      rows_of(prism(3));  // 0-1-2 and 3-4-5, i joined to i+3
   auto problem = [](std::span<const NodeId> r, std::vector<NodeId> partner) {
     return verify_perfect_partners(r, partner);
   };

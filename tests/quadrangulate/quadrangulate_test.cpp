@@ -496,7 +496,7 @@ TEST(Quadrangulate, AllQuadInterpolatesAttributes) {
   for (int d = 0; d < 3; ++d) texcoord[d] = (a.texcoords[before][d] + a.texcoords[after][d]) / 2;
   EXPECT_EQ(b.texcoords[b.corner_texcoord[m]], texcoord);
   EXPECT_EQ(b.texcoords.size(), 4u);
-  EXPECT_EQ(b.corner_normal, (HugeVector<std::uint32_t>{0, 0, 0, 0}));
+  EXPECT_EQ(b.corner_normal, (std::pmr::vector<std::uint32_t>{0, 0, 0, 0}));
   const double red =
       (a.vertex_properties[0].values[before] + a.vertex_properties[0].values[after]) / 2;
   EXPECT_EQ(b.vertex_properties[0].values[3], std::round(red));
@@ -542,8 +542,8 @@ MeshAttributes arbitrary_attributes(const PolygonMesh& mesh) {
     return *rc::gen::container<std::vector<std::uint32_t>>(
         *rc::gen::inRange<std::size_t>(0, 8), rc::gen::inRange<std::uint32_t>(0, corners));
   };
-  auto per_corner = [&](HugeVector<std::array<double, 3>>& values, HugeVector<std::uint32_t>& index,
-                        bool unit) {
+  auto per_corner = [&](std::pmr::vector<std::array<double, 3>>& values,
+                        std::pmr::vector<std::uint32_t>& index, bool unit) {
     if (!*rc::gen::arbitrary<bool>()) return;
     for (const auto& p : mesh.positions) {
       std::array<double, 3> x{p[0] * 0.5, p[1] * 0.25 + 1, unit ? p[2] + 3 : 0};
@@ -569,7 +569,7 @@ MeshAttributes arbitrary_attributes(const PolygonMesh& mesh) {
   };
   per_corner(a.texcoords, a.corner_texcoord, false);
   per_corner(a.normals, a.corner_normal, true);
-  auto per_face = [&](HugeVector<std::uint32_t>& ids, std::uint32_t choices, bool may_lack) {
+  auto per_face = [&](std::pmr::vector<std::uint32_t>& ids, std::uint32_t choices, bool may_lack) {
     if (!*rc::gen::arbitrary<bool>()) return;
     const auto most = *rc::gen::inRange<std::uint32_t>(1, choices + 1);
     for (std::uint32_t f = 0; f < faces; ++f) {

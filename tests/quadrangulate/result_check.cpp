@@ -114,7 +114,7 @@ Value corner_value(const MeshAttributes& a, CutCause cause, std::size_t c) {
   return (uv ? a.texcoords : a.normals)[index[c]];
 }
 
-std::optional<std::string> name_of(const HugeVector<std::uint32_t>& index,
+std::optional<std::string> name_of(const std::pmr::vector<std::uint32_t>& index,
                                    const std::vector<std::string>& names, FaceId f) {
   if (index.empty() || index[f] == kNoAttribute) return std::nullopt;
   return names[index[f]];

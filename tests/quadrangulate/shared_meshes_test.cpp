@@ -128,7 +128,7 @@ TEST(SharedMeshes, QualityObjectiveMatchesLemonsOptimum) {
     const Dual dual = build_dual(mesh);
     const PairableGraph pairable = build_pairable_graph(mesh);
     ASSERT_EQ(pairable.edge_count(), dual.graph.edge_count());
-    const HugeVector<Cost> costs = scale_costs(pairable_edge_quality(pairable, mesh));
+    const std::pmr::vector<Cost> costs = scale_costs(pairable_edge_quality(pairable, mesh));
     std::vector<std::array<std::uint32_t, 2>> edges(dual.graph.edge_count());
     for (EdgeId e = 0; e < edges.size(); ++e) edges[e] = dual.graph.endpoints(e);
     const auto lemon = testing::lemon_min_cost_perfect(dual.graph.node_count(), edges, costs);

@@ -88,7 +88,7 @@ RC_GTEST_PROP(PairTrianglesStage, PairsNeighboursAtTheTotalItCertifies, ()) {
   // The pairs' scaled costs by node pair, read before the pairing takes the graph's arrays.
   std::set<std::pair<NodeId, NodeId>> edges;
   std::vector<std::tuple<NodeId, NodeId, Cost>> costed;
-  const HugeVector<Cost> scaled = scale_costs(pairable.costs);
+  const std::pmr::vector<Cost> scaled = scale_costs(pairable.costs);
   for (EdgeId e = 0; e < pairable.graph.edge_count(); ++e) {
     const NodeId a = pairable.graph.edge_ends[2 * e], b = pairable.graph.edge_ends[2 * e + 1];
     edges.insert({std::min(a, b), std::max(a, b)});

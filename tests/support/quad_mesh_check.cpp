@@ -99,7 +99,7 @@ std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output
     return t;
   };
   if (!source.all_triangles()) return "the source has faces that are not triangles";
-  HugeVector<Triple> in, out;
+  std::pmr::vector<Triple> in, out;
   in.reserve(source.face_count());
   for (FaceId f = 0; f < source.face_count(); ++f) {
     const std::span<const VertexId> t = source.face(f);

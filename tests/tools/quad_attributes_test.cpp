@@ -49,13 +49,13 @@ class QuadAttributes : public ::testing::Test {
 
 using Value = std::optional<std::array<double, 3>>;
 
-Value value(const HugeVector<std::uint32_t>& index, const HugeVector<std::array<double, 3>>& values,
-            std::size_t corner) {
+Value value(const std::pmr::vector<std::uint32_t>& index,
+            const std::pmr::vector<std::array<double, 3>>& values, std::size_t corner) {
   if (index.empty() || index[corner] == kNoAttribute) return std::nullopt;
   return values[index[corner]];
 }
 
-std::optional<std::string> name(const HugeVector<std::uint32_t>& index,
+std::optional<std::string> name(const std::pmr::vector<std::uint32_t>& index,
                                 const std::vector<std::string>& names, FaceId f) {
   if (index.empty() || index[f] == kNoAttribute) return std::nullopt;
   return names[index[f]];

@@ -39,7 +39,7 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/augment.hpp"
 #include "search_slot.hpp"
 
@@ -58,12 +58,12 @@ class AlternatingForest {
   /// Reads the matching (mate edge per node), which each augmentation then updates; the free
   /// nodes, in id order, become free_nodes(). Throws std::length_error past kMaxTrees free nodes.
   /// A graph that keeps the search state (NeighbourTable) must hold fresh slots for `mate`.
-  AlternatingForest(const Graph& graph, HugeVector<EdgeId>& mate, AugmentStats& stats)
+  AlternatingForest(const Graph& graph, std::pmr::vector<EdgeId>& mate, AugmentStats& stats)
       : graph_(graph),
         mate_edge_(&mate),
         stats_(stats),
         n_(mate.size()),
-        slot_(kStateInGraph ? HugeArray<Slot>() : make_huge_array<Slot>(n_)) {
+        slot_(kStateInGraph ? RawArray<Slot>() : make_raw_array<Slot>(n_)) {
     if constexpr (kStateInGraph) {
       for (NodeId v = 0; v < n_; ++v)
         if (mate[v] == kNoEdge) free_.push_back(v);
@@ -406,10 +406,10 @@ class AlternatingForest {
   }
 
   const Graph& graph_;
-  HugeVector<EdgeId>* mate_edge_ = nullptr;  // nullptr: the matching is the slots' mates only
+  std::pmr::vector<EdgeId>* mate_edge_ = nullptr;  // nullptr: the matching is the slots' mates only
   AugmentStats& stats_;
   std::size_t n_;
-  HugeArray<Slot> slot_;  // unless the graph keeps the search state
+  RawArray<Slot> slot_;  // unless the graph keeps the search state
   std::vector<NodeId> free_;
   std::vector<std::uint8_t> tree_alive_;     // per tree: its root is still free
   std::vector<std::uint32_t> blocked_head_;  // per tree: first entry of its blocked list

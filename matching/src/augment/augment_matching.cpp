@@ -71,7 +71,7 @@ AugmentStats augment_matching(const CsrGraph& graph, Matching& matching, Augment
 
 MaximumMatchingResult maximum_matching(const CsrGraph& graph, Augment variant) {
   Matching greedy(graph.node_count());
-  HugeVector<EdgeId>& mate = greedy.mate_edge;
+  std::pmr::vector<EdgeId>& mate = greedy.mate_edge;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     auto [a, b] = graph.endpoints(e);
     if (mate[a] == kNoEdge && mate[b] == kNoEdge) mate[a] = mate[b] = e;

@@ -23,7 +23,8 @@ void puli_segal(const CubicGraph& graph, Matching& matching, std::uint64_t seed)
 /// `mate_edge` (all kNoEdge on entry; nullptr over a table on neighbour rows, which has no
 /// CubicGraph: the matching is then each slot's mate node). Returns the number of nodes left
 /// unpaired.
-std::uint32_t puli_segal(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, std::uint64_t seed);
+std::uint32_t puli_segal(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge,
+                         std::uint64_t seed);
 
 /// Even nodes a repair of the ordered sweep searches at most (ordered_sweep.cpp says why 64).
 inline constexpr std::uint32_t kSweepRepairBudget = 64;
@@ -37,7 +38,8 @@ inline constexpr std::uint32_t kSweepRepairBudget = 64;
 /// of nodes left unpaired. Returns std::nullopt, touching nothing, when the numbering is not local
 /// (the median largest id gap between sampled nodes and their neighbours above a few √n), where its
 /// pairing front would break up. Θ(n); n bytes of state.
-std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table,
+                                           std::pmr::vector<EdgeId>* mate_edge,
                                            std::uint32_t repair_budget = kSweepRepairBudget);
 
 /// Schrijver's perfect matching of a 3-regular bipartite graph (schrijver.cpp), over a table
@@ -49,7 +51,7 @@ std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<Edg
 /// still meet even cycles only; its matching is then perfect all the same: every node keeps
 /// weight 3 on exactly one edge.)
 /// Θ(n) time; extra memory: the walk's path, 8 bytes per node on it (at most n).
-bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh);
+bool schrijver(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge, bool state_is_fresh);
 
 /// What pairs in PS's place. Algorithm::automatic turns both on, Algorithm::ps both off (the
 /// paper's PS alone); tests turn them on one at a time.
@@ -82,7 +84,7 @@ struct PsPlace {
 /// D0-D6) in 0.8-2.0 times a BFS's time, where Schrijver's walk takes 2.3-3.2 (bench/RESULTS.md,
 /// the two orders alternated); where it leaves nodes on a graph that is not bipartite,
 /// Schrijver's walk starts from the sweep's fresh state and gives up at its first odd cycle.
-PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+PsPlace pair_in_ps_place(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge,
                          const PsPlaceOptions& options);
 
 }  // namespace petersen

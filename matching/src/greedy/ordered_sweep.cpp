@@ -75,7 +75,7 @@ bool order_is_local(const NeighbourTable& table) {
 
 class OrderedSweep {
  public:
-  OrderedSweep(NeighbourTable& table, HugeVector<EdgeId>* mate, std::uint32_t repair_budget)
+  OrderedSweep(NeighbourTable& table, std::pmr::vector<EdgeId>* mate, std::uint32_t repair_budget)
       : table_(table),
         mate_(mate),
         repair_budget_(repair_budget),
@@ -210,7 +210,7 @@ class OrderedSweep {
   }
 
   NeighbourTable& table_;
-  HugeVector<EdgeId>* mate_;  // nullptr: the matching is the table's state only
+  std::pmr::vector<EdgeId>* mate_;  // nullptr: the matching is the table's state only
   std::uint32_t repair_budget_;
   std::vector<std::uint8_t> state_;
   std::vector<NodeId> forced_;    // nodes left with one free neighbour, to pair next
@@ -226,7 +226,8 @@ class OrderedSweep {
 
 }  // namespace
 
-std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+std::optional<std::uint32_t> ordered_sweep(NeighbourTable& table,
+                                           std::pmr::vector<EdgeId>* mate_edge,
                                            std::uint32_t repair_budget) {
   if (!order_is_local(table)) return std::nullopt;
   return OrderedSweep(table, mate_edge, repair_budget).run();

@@ -2,7 +2,7 @@
 
 namespace petersen {
 
-PsPlace pair_in_ps_place(NeighbourTable& table, HugeVector<EdgeId>* mate_edge,
+PsPlace pair_in_ps_place(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge,
                          const PsPlaceOptions& options) {
   const std::optional<std::uint32_t> swept =
       options.ordered_sweep ? ordered_sweep(table, mate_edge, options.sweep_repair_budget)

@@ -43,7 +43,7 @@ constexpr std::uint8_t kStart = 3;
 
 class PuliSegal {
  public:
-  PuliSegal(NeighbourTable& table, HugeVector<EdgeId>* mate, std::uint64_t seed)
+  PuliSegal(NeighbourTable& table, std::pmr::vector<EdgeId>* mate, std::uint64_t seed)
       : table_(table),
         mate_(mate),
         state_(table.node_count(), kStart),
@@ -156,7 +156,7 @@ class PuliSegal {
   }
 
   NeighbourTable& table_;
-  HugeVector<EdgeId>* mate_;                 // nullptr: the matching is the table's state only
+  std::pmr::vector<EdgeId>* mate_;           // nullptr: the matching is the table's state only
   std::vector<std::uint8_t> state_;          // see kFreeMask, kPriorityMask, kOut
   std::array<std::vector<NodeId>, 4> sets_;  // sets 1..3; set 0 is implicit (see above)
   SeededRandom random_;
@@ -166,7 +166,8 @@ class PuliSegal {
 
 }  // namespace
 
-std::uint32_t puli_segal(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, std::uint64_t seed) {
+std::uint32_t puli_segal(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge,
+                         std::uint64_t seed) {
   return PuliSegal(table, mate_edge, seed).run();
 }
 

@@ -40,7 +40,7 @@ using augment_detail::kNone;
 
 class Schrijver {
  public:
-  Schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge)
+  Schrijver(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge)
       : table_(table), mate_edge_(mate_edge) {}
 
   // False (mates untouched) when an odd cycle or a loop turned up; the slots' tag and link are
@@ -184,7 +184,7 @@ class Schrijver {
   }
 
   NeighbourTable& table_;
-  HugeVector<EdgeId>* mate_edge_;  // nullptr: the matching is the table's state only
+  std::pmr::vector<EdgeId>* mate_edge_;  // nullptr: the matching is the table's state only
   std::vector<Step> path_;
   // Up to kTouchedCap + 1 entries, the last meaning "more": the odd cycle comes within a few
   // hundred steps on every shared mesh, where a pass over every slot costs time in proportion to
@@ -196,7 +196,7 @@ class Schrijver {
 
 }  // namespace
 
-bool schrijver(NeighbourTable& table, HugeVector<EdgeId>* mate_edge, bool state_is_fresh) {
+bool schrijver(NeighbourTable& table, std::pmr::vector<EdgeId>* mate_edge, bool state_is_fresh) {
   return Schrijver(table, mate_edge).run(state_is_fresh);
 }
 

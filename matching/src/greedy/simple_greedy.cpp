@@ -36,7 +36,7 @@ void simple_greedy(const CubicGraph& graph, Matching& matching, std::uint64_t se
     order[i] = order[j];
     order[j] = i;
   }
-  HugeVector<EdgeId>& mate = matching.mate_edge;
+  std::pmr::vector<EdgeId>& mate = matching.mate_edge;
   const std::span<const NodeId> ends = graph.edge_ends();
   for (std::uint32_t k = 0; k < m; ++k) {
     if (k + kAhead < m) __builtin_prefetch(&ends[2 * std::size_t{order[k + kAhead]}]);

@@ -13,7 +13,7 @@ CoverForest::CoverForest(std::uint32_t node_count, std::uint32_t edge_capacity)
   // An edge's node is written when the edge enters the forest (hang, link, swap) and not read
   // before: the pages of edges that never do are never touched.
   const std::size_t size = std::size_t{node_count} + edge_capacity;
-  nodes_ = make_huge_array<Node>(size);
+  nodes_ = make_raw_array<Node>(size);
   std::fill_n(nodes_.get(), node_count, Node{{kNil, kNil}, kNil, kNoEdge});
 }
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
 #include "petersen/graph/link_cut_splay.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen::reduction {
 
@@ -78,7 +78,7 @@ class CoverForest {
   void splay(std::uint32_t x) { core_.splay(nodes_.get(), x); }
   std::uint32_t access(std::uint32_t x);  // returns the last node where the path was switched
 
-  HugeArray<Node> nodes_;
+  RawArray<Node> nodes_;
   std::uint32_t base_;  // the node of edge 0
   detail::LinkCutSplay<Push> core_;
   std::uint32_t root_ = kNil;  // the node last everted while it is still its tree's root

@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "reduction/brute_force.hpp"
 
@@ -60,9 +60,9 @@ Matching reduce_and_lift(ReductionGraph g, std::span<const std::uint32_t> compon
   }
   if (forbidden != kNoEdge) first[component[g.end(forbidden, 0)]] = forbidden;
 
-  HugeVector<Step> steps;
+  std::pmr::vector<Step> steps;
   steps.reserve(n / 2);
-  HugeVector<EdgeId> mate(n, kNoEdge);
+  std::pmr::vector<EdgeId> mate(n, kNoEdge);
   for (std::uint32_t c = 0; c < components; ++c) {
     EdgeId f = first[c];
     for (std::uint32_t remaining = size[c]; remaining > 2; remaining -= 2) {

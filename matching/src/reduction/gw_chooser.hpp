@@ -41,7 +41,7 @@
 #include <span>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "reduction/chooser.hpp"
 #include "reduction/cover_forest.hpp"
 
@@ -68,7 +68,7 @@ class GwChooser final : public Chooser {
   void swap(EdgeId in, NodeId a, NodeId b, EdgeId out);
 
   CoverForest forest_;
-  HugeVector<std::uint8_t> in_tree_;
+  std::pmr::vector<std::uint8_t> in_tree_;
   // After remove(): the pieces left (1 or 2) and, for two, each one's tree attachment and cover.
   std::uint32_t pieces_ = 0;
   std::array<std::array<EdgeId, 2>, 2> piece_{};

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "petersen/graph/connectivity.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "reduction/ds_chooser.hpp"
 #include "reduction/engine.hpp"
@@ -35,23 +35,24 @@ namespace {
 // edges the reductions add) instead of being copied: 24 bytes per node less fresh memory (gw's
 // peak on armadillo-sub2's dual 192 MiB against 224) and 9 % fewer LL misses.
 struct DepthFirstCopy {
-  HugeVector<EdgeId> node_edges;  // as CubicGraph::node_edges()
-  HugeVector<NodeId> edge_ends;   // as CubicGraph::edge_ends(), with capacity for n more edges
-  HugeVector<NodeId> old_node;    // by new id
-  HugeVector<EdgeId> old_edge;    // by new id
-  HugeVector<std::uint32_t> component;  // by new id
+  std::pmr::vector<EdgeId> node_edges;  // as CubicGraph::node_edges()
+  std::pmr::vector<NodeId> edge_ends;  // as CubicGraph::edge_ends(), with capacity for n more edges
+  std::pmr::vector<NodeId> old_node;   // by new id
+  std::pmr::vector<EdgeId> old_edge;   // by new id
+  std::pmr::vector<std::uint32_t> component;  // by new id
   std::uint32_t components = 0;
-  HugeVector<EdgeId> tree_edge;  // by new id: the new id of the edge to the parent, or kNoEdge
-  HugeVector<EdgeId> cover;      // by new id: the cover of tree_edge
+  std::pmr::vector<EdgeId>
+      tree_edge;                   // by new id: the new id of the edge to the parent, or kNoEdge
+  std::pmr::vector<EdgeId> cover;  // by new id: the cover of tree_edge
 };
 
 DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
-  HugeVector<NodeId> new_node(n, kNoNode);
-  HugeVector<EdgeId> new_edge(m, kNoEdge);
+  std::pmr::vector<NodeId> new_node(n, kNoNode);
+  std::pmr::vector<EdgeId> new_edge(m, kNoEdge);
   DepthFirstCopy copy;
-  HugeVector<EdgeId>& node_edges = copy.node_edges;
-  HugeVector<NodeId>& edge_ends = copy.edge_ends;
+  std::pmr::vector<EdgeId>& node_edges = copy.node_edges;
+  std::pmr::vector<NodeId>& edge_ends = copy.edge_ends;
   node_edges.resize(3 * std::size_t{n});
   // A reduction adds at most two edges per two nodes. Edge ids are given in the order the ends
   // are written, so they are appended, as is `low`: zero-filling the two first (9.2 MB on
@@ -62,7 +63,7 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
   copy.component.reserve(n);
   copy.tree_edge.reserve(n);
   copy.cover.assign(n, kNoEdge);
-  HugeVector<NodeId> low;  // by new id: the smallest preorder number a back edge reaches
+  std::pmr::vector<NodeId> low;  // by new id: the smallest preorder number a back edge reaches
   low.reserve(n);
   const auto visit = [&](NodeId v, EdgeId tree_edge) {
     const auto id = static_cast<NodeId>(copy.old_node.size());
@@ -72,9 +73,9 @@ DepthFirstCopy depth_first_copy(const CubicGraph& graph, bool check) {
     copy.component.push_back(copy.components);
     copy.tree_edge.push_back(tree_edge);
   };
-  // Old id, next slot. Reserved at its bound, n entries, on huge pages: only the pages the depth
-  // reaches are touched, where a growing vector copied itself into fresh memory at each doubling.
-  HugeVector<std::pair<NodeId, int>> stack;
+  // Old id, next slot. Reserved at its bound, n entries: only the pages the depth reaches are
+  // touched, where a growing vector copied itself into fresh memory at each doubling.
+  std::pmr::vector<std::pair<NodeId, int>> stack;
   stack.reserve(n);
   for (NodeId root = 0; root < n; ++root) {
     if (new_node[root] != kNoNode) continue;
@@ -129,7 +130,7 @@ ReductionResult match_by_reductions(const CubicGraph& graph, EdgeId forbidden,
   // Only gw runs on the depth-first copy. ds on it (its spanning forest then the depth-first
   // tree) took 52 s on armadillo-sub2's dual against 31 s on the input order.
   std::optional<DepthFirstCopy> copy;
-  HugeVector<std::uint32_t> component;
+  std::pmr::vector<std::uint32_t> component;
   std::uint32_t components = 0;
   if (options.chooser == ReductionChooser::gw) {
     copy = depth_first_copy(graph, options.check_each_step);

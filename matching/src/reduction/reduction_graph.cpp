@@ -10,8 +10,8 @@ ReductionGraph::ReductionGraph(const CubicGraph& graph, std::uint32_t extra_edge
   ends_.assign(graph.edge_ends().begin(), graph.edge_ends().end());
 }
 
-ReductionGraph::ReductionGraph(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
-                               std::uint32_t extra_edges)
+ReductionGraph::ReductionGraph(std::pmr::vector<EdgeId> node_edges,
+                               std::pmr::vector<NodeId> edge_ends, std::uint32_t extra_edges)
     : ends_(std::move(edge_ends)), slots_(std::move(node_edges)), alive_(node_count(), 1) {
   ends_.reserve(ends_.size() + 2 * std::size_t{extra_edges});
 }

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen::reduction {
 
@@ -28,7 +28,7 @@ class ReductionGraph {
   /// Takes over the arrays of a cubic graph (as CubicGraph::node_edges() and edge_ends() lay
   /// them out), with room for `extra_edges` new edges: no copy, and no reallocation when
   /// `edge_ends` already has the capacity.
-  ReductionGraph(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends,
+  ReductionGraph(std::pmr::vector<EdgeId> node_edges, std::pmr::vector<NodeId> edge_ends,
                  std::uint32_t extra_edges);
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(slots_.size() / 3); }
@@ -45,9 +45,9 @@ class ReductionGraph {
   EdgeId add_edge(NodeId a, NodeId b);
   void replace_slot(NodeId v, EdgeId old_edge, EdgeId new_edge);
 
-  HugeVector<NodeId> ends_;
-  HugeVector<EdgeId> slots_;
-  HugeVector<std::uint8_t> alive_;
+  std::pmr::vector<NodeId> ends_;
+  std::pmr::vector<EdgeId> slots_;
+  std::pmr::vector<std::uint8_t> alive_;
 };
 
 }  // namespace petersen::reduction

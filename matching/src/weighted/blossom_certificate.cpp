@@ -51,7 +51,7 @@ WideCost BlossomSolver::write_result(std::span<const NodeId> new_node,
     c.set_parent[index[b - n_]] = p == kNone ? kNoSet : set_holding(p);
   }
   const auto n = static_cast<std::uint32_t>(new_node.size());
-  result.matching = Matching(n);
+  result.matching = Matching(n, result.matching.mate_edge.get_allocator().resource());
   c.node_dual.resize(n);
   c.node_set.resize(n);
   for (NodeId v = 0; v < n; ++v) {

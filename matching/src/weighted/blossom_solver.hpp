@@ -61,7 +61,9 @@ __extension__ using WideCost = __int128;
 class BlossomSolver {
  public:
   /// Node duals at the cheapest cost at each node, every node free (blossom_start.cpp).
-  BlossomSolver(const BreadthFirstAdjacency& graph, MinCostStats& stats);
+  /// The per-node arrays are allocated from `memory`.
+  BlossomSolver(const BreadthFirstAdjacency& graph, MinCostStats& stats,
+                std::pmr::memory_resource* memory);
 
   // ---- the start (blossom_start.cpp, blossom_short_searches.cpp), each optional
 
@@ -235,8 +237,8 @@ class BlossomSolver {
     Mate mate;                     // nodes only
     std::uint8_t label = kUnlabelled;
   };
-  HugeVector<Record> rec_;
-  HugeVector<NodeId> base_;
+  std::pmr::vector<Record> rec_;
+  std::pmr::vector<NodeId> base_;
   // A labelled blossom's tree edge: `from` in the tree parent, `to` in this blossom; one record,
   // as labelling writes the three together and the walks up the tree read them together.
   struct TreeLink {
@@ -244,8 +246,8 @@ class BlossomSolver {
     NodeId to = kNone;
     EdgeId edge = kNoEdge;
   };
-  HugeVector<TreeLink> link_;
-  HugeVector<std::uint32_t> mark_;
+  std::pmr::vector<TreeLink> link_;
+  std::pmr::vector<std::uint32_t> mark_;
   // The shortcuts (see the top): x's ancestor `to`, valid while to's generation is `generation`,
   // and the duals from x up to it; one record, read together on every walk.
   struct Shortcut {
@@ -253,7 +255,7 @@ class BlossomSolver {
     std::uint32_t to = kNone;
     std::uint32_t generation = 0;
   };
-  HugeVector<Shortcut> up_;
+  std::pmr::vector<Shortcut> up_;
   std::vector<std::pair<std::uint32_t, std::int64_t>> walked_;
   std::uint32_t stamp_ = 0;
   std::vector<std::vector<std::uint32_t>> children_;

@@ -7,16 +7,17 @@
 
 namespace petersen::weighted_detail {
 
-BlossomSolver::BlossomSolver(const BreadthFirstAdjacency& graph, MinCostStats& stats)
+BlossomSolver::BlossomSolver(const BreadthFirstAdjacency& graph, MinCostStats& stats,
+                             std::pmr::memory_resource* memory)
     : graph_(graph),
       stats_(stats),
       n_(graph.node_count()),
       ids_(std::size_t{n_} + n_ / 2 + 1),
-      rec_(n_),
-      base_(n_),
-      link_(n_),
-      mark_(n_, 0),
-      up_(n_) {
+      rec_(n_, memory),
+      base_(n_, memory),
+      link_(n_, memory),
+      mark_(n_, 0, memory),
+      up_(n_, memory) {
   // Blossom ids get their entries when first handed out (new_blossom): reserving leaves the
   // pages untouched, and few of the n/2 ids are ever used (freed ids are reused first), where
   // filling them all up front would first-touch 116 bytes per id.

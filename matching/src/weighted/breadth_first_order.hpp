@@ -21,7 +21,7 @@
 #include <string>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen::weighted_detail {
@@ -37,14 +37,14 @@ struct Slot {
 };
 
 struct BreadthFirstAdjacency {
-  HugeVector<NodeId> new_node;  // by the input's id
+  std::pmr::vector<NodeId> new_node;  // by the input's id
   /// New node v's slots, sorted by edge id (the order scans meet ties in then does not depend on
   /// the order the input lists a node's edges in): [first_slot[v], first_slot[v + 1]), or
   /// [d·v, d·v + d) when every node has degree d = uniform_degree (the dual of a closed mesh), and
   /// then first_slot is empty: the offset would be a cache miss before every scan's slots, a
   /// third of the even scans' samples on armadillo-sub2's dual.
-  HugeVector<Slot> slots;
-  HugeVector<std::size_t> first_slot;
+  std::pmr::vector<Slot> slots;
+  std::pmr::vector<std::size_t> first_slot;
   std::uint32_t uniform_degree = 0;
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(new_node.size()); }
@@ -59,9 +59,12 @@ struct BreadthFirstAdjacency {
 /// smallest unvisited id, and builds the rows with `costs` (by edge id). O(n + m), iterative.
 /// Throws GraphError, naming the input's node, when a node has no edge: no perfect matching.
 template <class Graph>
-BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<const Cost> costs) {
+BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<const Cost> costs,
+                                              std::pmr::memory_resource* memory) {
   const std::uint32_t n = graph.node_count();
-  BreadthFirstAdjacency order;
+  BreadthFirstAdjacency order{.new_node = std::pmr::vector<NodeId>(memory),
+                              .slots = std::pmr::vector<Slot>(memory),
+                              .first_slot = std::pmr::vector<std::size_t>(memory)};
   std::size_t slot_count = 0;
   bool uniform = true;
   for (NodeId v = 0; v < n; ++v) {
@@ -76,7 +79,8 @@ BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<cons
   if (order.uniform_degree == 0) order.first_slot.resize(std::size_t{n} + 1);
   order.slots.resize(slot_count);
   order.new_node.assign(n, kNoNode);
-  HugeVector<NodeId> old_node(n);  // by new id: the visiting order, the search's queue
+  std::pmr::vector<NodeId> old_node(n,
+                                    memory);  // by new id: the visiting order, the search's queue
   std::uint32_t visited = 0;
   constexpr std::uint32_t kAhead = 8;
   Slot* last = order.slots.data();

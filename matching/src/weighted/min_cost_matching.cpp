@@ -55,8 +55,8 @@ WideCost solve(const Graph& graph, std::span<const Cost> costs, const MinCostOpt
                MinCostResult& result) {
   Stopwatch init;
   const weighted_detail::BreadthFirstAdjacency order =
-      weighted_detail::breadth_first_adjacency(graph, costs);
-  weighted_detail::BlossomSolver solver(order, result.stats);
+      weighted_detail::breadth_first_adjacency(graph, costs, options.memory);
+  weighted_detail::BlossomSolver solver(order, result.stats, options.memory);
   if (options.greedy_start) solver.greedy_start();
   if (options.short_searches) {
     solver.short_searches(options.threads);
@@ -78,7 +78,8 @@ template <class Graph>
 MinCostResult solve_perfect(const Graph& graph, std::span<const Cost> costs,
                             const MinCostOptions& options) {
   check_costs(costs, graph.edge_count(), kMaxCost);
-  MinCostResult result;
+  // The matching is made on options.memory (write_result), so that moving it out copies nothing.
+  MinCostResult result{.matching = Matching(0, options.memory)};
   result.total_cost = fitting_total(solve(graph, costs, options, result));
   return result;
 }
@@ -88,8 +89,8 @@ struct FirstCopy {
   Matching matching;
   std::uint32_t size = 0;
   WideCost matched_cost = 0;
-  MatchingCertificate certificate;
-  MinCostStats stats;
+  MatchingCertificate certificate = {};
+  MinCostStats stats = {};
 };
 
 // The reduction of min_cost_matching and min_cost_maximum_matching: H = G ∪ G' plus v–v' (edge
@@ -109,16 +110,15 @@ FirstCopy solve_doubled(const CsrGraph& graph, std::span<const Cost> costs,
     edges.push_back({n + a, n + b});
   }
   for (NodeId v = 0; v < n; ++v) edges.push_back({v, n + v});
-  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges);
+  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges, options.memory);
   std::vector<Cost> doubled_costs(costs.begin(), costs.end());
   doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
   doubled_costs.insert(doubled_costs.end(), pair_costs.begin(), pair_costs.end());
 
   // The doubled graph's own total (up to n edges of cost K) is not needed: the first copy's is.
-  MinCostResult inner;
+  MinCostResult inner{.matching = Matching(0, options.memory)};
   solve(doubled, doubled_costs, options, inner);
-  FirstCopy first;
-  first.matching = Matching(n);
+  FirstCopy first{.matching = Matching(n, options.memory)};
   // Both copies are optimal halves of equal objective (else the cheaper one, doubled, would
   // beat the optimum), so the first copy is optimal.
   for (NodeId v = 0; v < n; ++v) {
@@ -142,13 +142,13 @@ bool cubic_bridgeless(const CsrGraph& graph) {
   for (NodeId v = 0; v < n; ++v) {
     if (graph.degree(v) != 3) return false;
   }
-  HugeVector<EdgeId> node_edges(3 * std::size_t{n});
+  std::pmr::vector<EdgeId> node_edges(3 * std::size_t{n});
   for (NodeId v = 0; v < n; ++v) {
     const std::span<const EdgeId> edges = graph.incident_edges(v);
     std::copy(edges.begin(), edges.end(), node_edges.begin() + 3 * std::size_t{v});
   }
   const std::span<const NodeId> ends = graph.edge_ends();
-  HugeVector<NodeId> edge_ends(ends.size());
+  std::pmr::vector<NodeId> edge_ends(ends.size());
   std::copy(ends.begin(), ends.end(), edge_ends.begin());
   // Consistent by the CsrGraph's construction: each edge listed once at each of its two ends.
   return !find_bridge(
@@ -157,8 +157,9 @@ bool cubic_bridgeless(const CsrGraph& graph) {
 
 }  // namespace
 
-HugeVector<Cost> scale_costs(std::span<const double> costs, double scale) {
-  HugeVector<Cost> scaled(costs.size());
+std::pmr::vector<Cost> scale_costs(std::span<const double> costs, double scale,
+                                   std::pmr::memory_resource* memory) {
+  std::pmr::vector<Cost> scaled(costs.size(), memory);
   for (std::size_t e = 0; e < costs.size(); ++e) {
     const double value = std::round(costs[e] * scale);
     if (!std::isfinite(value) || std::abs(value) > static_cast<double>(kMaxCost)) {
@@ -207,8 +208,7 @@ MinCostMaximumResult min_cost_maximum_matching(const CsrGraph& graph, std::span<
   const Cost unmatched_cost = static_cast<Cost>(k);
   const std::vector<Cost> pair_costs(n, unmatched_cost);
   FirstCopy first = solve_doubled(graph, costs, pair_costs, options);
-  MinCostMaximumResult result;
-  result.matching = std::move(first.matching);
+  MinCostMaximumResult result{.matching = std::move(first.matching)};
   result.size = first.size;
   result.total_cost = fitting_total(first.matched_cost);
   result.unmatched_cost = unmatched_cost;
@@ -242,8 +242,7 @@ MinCostMatchingResult min_cost_matching(const CsrGraph& graph, std::span<const C
   for (NodeId v = 0; v < n; ++v) {
     if (!first.matching.is_matched(v)) total += price(v);
   }
-  MinCostMatchingResult result;
-  result.matching = std::move(first.matching);
+  MinCostMatchingResult result{.matching = std::move(first.matching)};
   result.size = first.size;
   result.matched_cost = fitting_total(first.matched_cost);
   result.total = fitting_total(total);

@@ -26,7 +26,7 @@
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -69,12 +69,12 @@ CrossField cross_field(const PairableGraph& graph, const PolygonMesh& mesh,
 /// 45 − δ for δ in [0, 45] the angle between the side and the cross's nearest direction, weighted
 /// by the cross's confidence min(1, |u_t|). 45 where the side runs along the field (a quad side),
 /// 0 where it runs diagonally across it (a quad's diagonal) or where the field says nothing. O(n).
-HugeVector<double> side_alignment(const CrossField& field);
+std::pmr::vector<double> side_alignment(const CrossField& field);
 
 /// For each edge of `graph`, the flow cost of removing it to pair its two triangles: its alignment
 /// (side_alignment) in each of them, summed, in [0, 90]. Removing a quad's diagonal costs nothing;
 /// removing a side that an edge loop runs along costs up to 90. O(m).
-HugeVector<double> pairable_edge_flow(const PairableGraph& graph,
-                                      std::span<const double> alignment);
+std::pmr::vector<double> pairable_edge_flow(const PairableGraph& graph,
+                                            std::span<const double> alignment);
 
 }  // namespace petersen

@@ -99,21 +99,21 @@ struct CutOptions {
 struct PairableGraph {
   std::uint32_t node_count = 0;
   /// The face of each node; empty when every face is a triangle (node t is face t).
-  HugeVector<FaceId> node_face;
+  std::pmr::vector<FaceId> node_face;
   /// node_edges[3v + k]: the pairable edge across side k of node v's triangle (its corners k and
   /// k+1), or kNoEdge when that side is a cut.
-  HugeVector<EdgeId> node_edges;
+  std::pmr::vector<EdgeId> node_edges;
   /// Edge e joins nodes edge_ends[2e] and edge_ends[2e + 1]; edges are numbered by their mesh
   /// edge {a, b} in order of (min, max).
-  HugeVector<NodeId> edge_ends;
+  std::pmr::vector<NodeId> edge_ends;
   std::uint64_t mesh_edges = 0;  ///< distinct undirected edges of the mesh
-  CutCounts cuts;
+  CutCounts cuts = {};
   std::uint64_t inconsistent_edges = 0;  ///< pairable edges whose triangles run the same way
   bool cubic = false;                    ///< every side of every triangle is pairable
   /// The two nodes of each chosen cut: one made by the caller or the data (user, sharp, the
   /// attribute causes, shape), not by the structure. With the edges, the surface's own
   /// adjacency, so its components and genus are known under cuts.
-  HugeVector<NodeId> chosen_cut_ends;
+  std::pmr::vector<NodeId> chosen_cut_ends;
   std::uint64_t inconsistent_chosen_cuts = 0;  ///< of them, those whose triangles run the same way
 
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends.size() / 2); }
@@ -125,8 +125,10 @@ struct PairableGraph {
 /// span of `cuts` has the wrong size, and for meshes past 32-bit ids. O(C log d) for C corners and
 /// maximum vertex degree d, plus O(u log u) for u user edges; no hashing. The vertices are
 /// grouped and the edges classified in slices, on up to `threads` threads (0: every core); the
-/// graph is the same for any number.
-PairableGraph build_pairable_graph(const PolygonMesh& mesh, const CutOptions& cuts = {},
-                                   std::uint32_t threads = 1);
+/// graph is the same for any number. The graph's arrays are allocated from `memory` (its scratch
+/// from the default resource).
+PairableGraph build_pairable_graph(
+    const PolygonMesh& mesh, const CutOptions& cuts = {}, std::uint32_t threads = 1,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 }  // namespace petersen

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "petersen/dualize/pairable_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -33,9 +33,10 @@ double quad_corner_deviation(const std::array<double, 3>& a, const std::array<do
 /// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
 /// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b
 /// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F), on `threads` threads (0:
-/// every core); the costs do not depend on the threads.
-HugeVector<double> pairable_edge_quality(const PairableGraph& graph, const PolygonMesh& mesh,
-                                         std::uint32_t threads = 1);
+/// every core); the costs do not depend on the threads. The array is allocated from `memory`.
+std::pmr::vector<double> pairable_edge_quality(
+    const PairableGraph& graph, const PolygonMesh& mesh, std::uint32_t threads = 1,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Quads summarised by their costs: how many, the median and 95th percentile (the nearest-rank
 /// element of the sorted costs; 0 when there are no quads), how many are non-convex (cost above

@@ -8,15 +8,15 @@
 #include <span>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
 /// Disjoint sets of nodes 0..n-1: each node's parent, a root being its own, and every root the
 /// smallest node of its set (a join hangs the larger root under the smaller), so that roots
 /// come out in the order of the sets' first nodes. find halves the path it walks: O(log n)
-/// amortised per find. On huge pages, so that a run takes it from the pool's freed ranges rather
-/// than from fresh memory.
+/// amortised per find. On the default memory resource (a program's pool, where it sets one, hands
+/// it memory the run freed rather than fresh pages; memory.hpp).
 class ComponentForest {
  public:
   /// `node_count` singletons.
@@ -53,7 +53,7 @@ class ComponentForest {
   }
 
  private:
-  HugeVector<NodeId> parent_;
+  std::pmr::vector<NodeId> parent_;
 };
 
 }  // namespace petersen

@@ -6,7 +6,7 @@
 #include <span>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
@@ -18,9 +18,9 @@ class CsrGraph {
   CsrGraph() = default;
 
   /// Builds the graph from an edge list; throws GraphError naming the first loop or the first
-  /// endpoint out of range.
-  static CsrGraph from_edges(std::uint32_t node_count,
-                             std::span<const std::array<NodeId, 2>> edges);
+  /// endpoint out of range. The graph's arrays are allocated from `memory`.
+  static CsrGraph from_edges(std::uint32_t node_count, std::span<const std::array<NodeId, 2>> edges,
+                             std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(offsets_.size() - 1); }
   std::uint32_t edge_count() const { return static_cast<std::uint32_t>(edge_ends_.size() / 2); }
@@ -40,11 +40,14 @@ class CsrGraph {
   std::uint32_t degree(NodeId v) const { return offsets_[v + 1] - offsets_[v]; }
 
  private:
-  // On huge pages (huge_pages.hpp): a caller building graphs of millions of nodes one after the
-  // other (the out-of-core parts) reuses the pool's pages instead of faulting fresh ones in.
-  HugeVector<std::uint32_t> offsets_ = HugeVector<std::uint32_t>(1, 0);
-  HugeVector<EdgeId> node_edges_;
-  HugeVector<NodeId> edge_ends_;
+  explicit CsrGraph(std::pmr::memory_resource* memory)
+      : offsets_(1, 0, memory), node_edges_(memory), edge_ends_(memory) {}
+
+  // On the caller's resource (memory.hpp): a caller building graphs of millions of nodes one after
+  // the other (the out-of-core parts) may hand in one that reuses their pages.
+  std::pmr::vector<std::uint32_t> offsets_ = std::pmr::vector<std::uint32_t>(1, 0);
+  std::pmr::vector<EdgeId> node_edges_;
+  std::pmr::vector<NodeId> edge_ends_;
 };
 
 }  // namespace petersen

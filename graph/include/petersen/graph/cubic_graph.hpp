@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
@@ -27,8 +27,8 @@ struct GraphError : std::runtime_error {
 /// A cubic multigraph: nodes 0..n-1, edges 0..3n/2-1, parallel edges allowed, no loops.
 /// Endpoints of edge e are at edge_ends[2e], edge_ends[2e+1]; the three edges of node v are at
 /// node_edges[3v..3v+2], in the order the edge list named them. Construction is O(n). Both arrays
-/// sit on huge pages once large (HugeVector): graphs of millions of nodes are built and searched
-/// at random, and 4 KiB pages cost a fault per page to fill and a TLB miss per access.
+/// are on the resource of the arrays given to from_incidence (memory.hpp), the default one from
+/// from_edges.
 class CubicGraph {
  public:
   CubicGraph() = default;
@@ -44,18 +44,16 @@ class CubicGraph {
   /// arrays are taken over, not copied. Throws GraphError naming the first node slot or edge that
   /// disagrees: an edge out of range, a loop, an edge listed at a node that is not its endpoint,
   /// or an edge not listed exactly once at each end. O(n).
-  static CubicGraph from_incidence(HugeVector<EdgeId> node_edges, HugeVector<NodeId> edge_ends);
+  static CubicGraph from_incidence(std::pmr::vector<EdgeId> node_edges,
+                                   std::pmr::vector<NodeId> edge_ends);
 
   /// from_incidence without its checks, for arrays that form a cubic graph by construction (the
   /// dual of a triangulation's halfedge structure, lrs::Triangulation::dual_graph): the checks
   /// read edge_ends at every slot's edge, a random access that costs as much as building the
   /// arrays. The caller's tests check such arrays with from_incidence. O(1).
-  static CubicGraph from_valid_incidence(HugeVector<EdgeId> node_edges,
-                                         HugeVector<NodeId> edge_ends) {
-    CubicGraph g;
-    g.node_edges_ = std::move(node_edges);
-    g.edge_ends_ = std::move(edge_ends);
-    return g;
+  static CubicGraph from_valid_incidence(std::pmr::vector<EdgeId> node_edges,
+                                         std::pmr::vector<NodeId> edge_ends) {
+    return CubicGraph(std::move(node_edges), std::move(edge_ends));
   }
 
   std::uint32_t node_count() const { return static_cast<std::uint32_t>(node_edges_.size() / 3); }
@@ -86,18 +84,23 @@ class CubicGraph {
   /// its k-th incident edge (a parallel edge once per copy). They are written over the incidence
   /// lists in place and the edge list is freed, so a caller that needs only who is adjacent to
   /// whom (perfect_partners) holds 12 bytes per node instead of 24, and never both. O(n).
-  HugeVector<NodeId> into_neighbour_rows() &&;
+  std::pmr::vector<NodeId> into_neighbour_rows() &&;
   /// The same, with beside(edge_ends()) run on a second thread (given threads > 1; 0 means every
   /// core) while the rows are written, and before the edge list is freed: work that reads the
   /// edges, done on a core the rows leave idle. Its exception is rethrown here.
-  HugeVector<NodeId> into_neighbour_rows(
+  std::pmr::vector<NodeId> into_neighbour_rows(
       std::uint32_t threads, const std::function<void(std::span<const NodeId>)>& beside) &&;
   /// The same rows written to `rows` (3 · node_count() entries), the graph kept. O(n).
   void write_neighbour_rows(NodeId* rows) const;
 
  private:
-  HugeVector<NodeId> edge_ends_;
-  HugeVector<EdgeId> node_edges_;
+  // Moved in, so that they stay on the caller's resource (assigned, they would be copied to the
+  // default one).
+  CubicGraph(std::pmr::vector<EdgeId> node_edges, std::pmr::vector<NodeId> edge_ends)
+      : edge_ends_(std::move(edge_ends)), node_edges_(std::move(node_edges)) {}
+
+  std::pmr::vector<NodeId> edge_ends_;
+  std::pmr::vector<EdgeId> node_edges_;
 };
 
 }  // namespace petersen

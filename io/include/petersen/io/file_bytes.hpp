@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/io/file_error.hpp"
 
 namespace petersen {
@@ -18,10 +18,9 @@ struct Unmap {
 using MappedBytes = std::unique_ptr<const char, Unmap>;
 
 /// A file's bytes: a regular file's mapped from the page cache, read-only; a decompressed or
-/// piped file's in an uninitialised buffer on huge pages (a multi-gigabyte file is neither
-/// zero-filled first nor faulted in afresh; huge_pages.hpp).
+/// piped file's in an uninitialised buffer (a multi-gigabyte file is not zero-filled first).
 struct FileBytes {
-  HugeArray<char> data;  // empty when mapped
+  RawArray<char> data;  // empty when mapped
   std::size_t size = 0;
   MappedBytes mapped;
 
@@ -35,7 +34,9 @@ struct FileBytes {
 /// physical memory. A regular file is mapped, not copied: like any reader of a mapped file, the
 /// process is killed (SIGBUS) if another truncates the file while it is being read.
 /// O(decompressed size).
-FileBytes read_file_bytes(const std::string& path);
+/// A buffer is allocated from `memory`.
+FileBytes read_file_bytes(const std::string& path,
+                          std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Writes the bytes to `path` atomically, gzip-compressed when the path ends in .gz: into a new
 /// temporary file in the same folder, flushed to disk, then renamed over `path`. On any failure

@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -92,7 +92,7 @@ class PlyStreamWriter {
   struct File;
   std::unique_ptr<File> file_;
   std::string path_;
-  HugeArray<char> buffer_;
+  RawArray<char> buffer_;
   std::size_t used_ = 0;
   std::uint64_t faces_expected_ = 0, faces_ = 0, bytes_ = 0;
 };

@@ -19,6 +19,8 @@ struct ReadMeshOptions {
   /// being dropped for that face with one line in `dropped` per attribute (how many faces, the
   /// first line). Indices of vertices are always checked: a face without its corners is no face.
   bool strict = false;
+  /// Where the mesh's arrays, and a compressed file's decompressed bytes, are allocated.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 /// The format named by the path's extension (.off, .obj, .ply, case-insensitive), looking past a

@@ -15,7 +15,7 @@
 #include <span>
 
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/options.hpp"
 #include "petersen/mesh/mesh.hpp"
 
@@ -30,6 +30,8 @@ struct LrsOptions {
   bool sources = true;
   /// Threads for the fan check of the dual input (two at most; 0: as many as the machine has).
   std::uint32_t threads = 1;
+  /// Where the quads are allocated (the triangulation's scratch is on the default resource).
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 /// A closed triangle surface given by its dual's arrays rather than as a mesh: triangle t has
@@ -41,8 +43,8 @@ struct LrsOptions {
 struct LrsDualInput {
   const Positions& positions;
   std::span<const VertexId> corners;
-  HugeVector<EdgeId> node_edges;
-  HugeVector<NodeId> edge_ends;
+  std::pmr::vector<EdgeId> node_edges;
+  std::pmr::vector<NodeId> edge_ends;
   /// Whether the caller has found the triangles connected (then not counted again).
   bool connected = false;
   /// Called, when given, as soon as `corners` is read no more, so that a caller done with them
@@ -92,8 +94,8 @@ struct LrsQuad {
 
 struct LrsPairing {
   /// One quad per pair of K's triangles, F/2 of them, in order of the pair's first triangle.
-  HugeVector<LrsQuad> quads;
-  LrsStats stats;
+  std::pmr::vector<LrsQuad> quads;
+  LrsStats stats = {};
 };
 
 /// Pairs the triangles of one closed, connected, orientable manifold surface (every face of

@@ -11,10 +11,13 @@ namespace petersen {
 
 /// The matched edge of each node, or kNoEdge. Both ends of a matched edge name it.
 struct Matching {
-  HugeVector<EdgeId> mate_edge;
+  std::pmr::vector<EdgeId> mate_edge;
 
   Matching() = default;
-  explicit Matching(std::uint32_t node_count) : mate_edge(node_count, kNoEdge) {}
+  /// Every node free, the array allocated from `memory`.
+  explicit Matching(std::uint32_t node_count,
+                    std::pmr::memory_resource* memory = std::pmr::get_default_resource())
+      : mate_edge(node_count, kNoEdge, memory) {}
 
   bool is_matched(NodeId v) const { return mate_edge[v] != kNoEdge; }
   /// Matches edge e = {a, b}; both ends must be free.

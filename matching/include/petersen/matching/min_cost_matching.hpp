@@ -17,7 +17,7 @@
 
 #include "petersen/graph/csr_graph.hpp"
 #include "petersen/graph/cubic_graph.hpp"
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/matching.hpp"
 
 namespace petersen {
@@ -32,7 +32,9 @@ inline constexpr Cost kMaxCost = Cost{1} << 40;
 /// same integers from the same doubles. Throws std::invalid_argument naming the first index
 /// whose cost is not finite or whose scaled value exceeds kMaxCost. O(m).
 inline constexpr double kDefaultCostScale = 65536.0;
-HugeVector<Cost> scale_costs(std::span<const double> costs, double scale = kDefaultCostScale);
+std::pmr::vector<Cost> scale_costs(
+    std::span<const double> costs, double scale = kDefaultCostScale,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Marks "no set" in MatchingCertificate.
 inline constexpr std::uint32_t kNoSet = 0xFFFFFFFFu;
@@ -67,6 +69,8 @@ struct MinCostOptions {
   /// core. Threads are started for the call and joined before it returns. The result does not
   /// depend on it.
   std::uint32_t threads = 1;
+  /// Where the matching and the solver's large arrays are allocated.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 struct MinCostStats {
@@ -90,8 +94,8 @@ struct MinCostStats {
 struct MinCostResult {
   Matching matching;
   Cost total_cost = 0;  ///< sum of the matched edges' costs
-  MatchingCertificate certificate;
-  MinCostStats stats;
+  MatchingCertificate certificate = {};
+  MinCostStats stats = {};
 };
 
 /// A minimum-cost perfect matching of `graph` under `costs` (one per edge id, |cost| <=
@@ -121,7 +125,7 @@ struct MinCostMatchingResult {
   Cost matched_cost = 0;            ///< sum of the matched edges' costs
   Cost total = 0;                   ///< matched_cost + the prices of the unmatched nodes
   MatchingCertificate certificate;  ///< of the doubled graph's perfect matching
-  MinCostStats stats;
+  MinCostStats stats = {};
 };
 
 /// A matching of `graph` of any size minimizing cost(M) + Σ price(v) over the nodes v that M
@@ -151,7 +155,7 @@ struct MinCostMaximumResult {
   Cost total_cost = 0;              ///< the minimum among matchings of that size
   Cost unmatched_cost = 0;          ///< K, the cost of an edge v–v' of the doubled graph
   MatchingCertificate certificate;  ///< of the doubled graph's perfect matching
-  MinCostStats stats;
+  MinCostStats stats = {};
 };
 
 /// A minimum-cost matching among the maximum-cardinality matchings of `graph`, by reduction:
@@ -174,7 +178,7 @@ struct CheapestMaximumResult {
   std::uint32_t size = 0;  ///< matched edges: the maximum
   bool perfect = false;    ///< every node matched
   Cost total_cost = 0;     ///< the least among matchings of that size
-  MinCostStats stats;
+  MinCostStats stats = {};
 };
 
 /// The cheapest maximum matching of any graph, for callers that do not know whether it has a

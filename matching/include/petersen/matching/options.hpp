@@ -4,6 +4,7 @@
 // do not compile as C++20) can take a PerfectMatchingOptions.
 
 #include <cstdint>
+#include <memory_resource>
 #include <optional>
 #include <string_view>
 
@@ -42,6 +43,8 @@ struct PerfectMatchingOptions {
   std::uint64_t seed = 1;
   /// Check connectivity-per-component and bridgelessness at the door (O(n), one DFS).
   bool validate = true;
+  /// Where the matching and the algorithm's large arrays are allocated.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 /// Statistics of one run, in the columns of the paper's Table 4.3 plus per-algorithm counts.

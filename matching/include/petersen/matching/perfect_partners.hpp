@@ -16,13 +16,15 @@ struct PartnerOptions {
   Algorithm algorithm = Algorithm::automatic;
   Augment augment = Augment::local;
   std::uint64_t seed = 1;
+  /// Where the partners and the search state are allocated.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 struct PartnerResult {
   /// partner[v]: the node matched to v; kNoNode for a node left free (only when the graph is not
   /// bridgeless: Petersen's theorem matches every node of a cubic bridgeless graph).
-  HugeVector<NodeId> partner;
-  PerfectMatchingStats stats;
+  std::pmr::vector<NodeId> partner;
+  PerfectMatchingStats stats = {};
 };
 
 /// PS and Tarjan's augmenting paths (Algorithm::automatic or ps of perfect_matching, the same

@@ -6,14 +6,14 @@
 #include <cstdint>
 #include <span>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 
 namespace petersen {
 
 /// Integer costs for real ones: costs[e] = round(real[e] · 2^exponent).
 struct IntegerCosts {
-  HugeVector<Cost> costs;
+  std::pmr::vector<Cost> costs;
   int exponent = 0;   ///< of the scale 2^exponent (negative for costs past the limit)
   bool exact = true;  ///< every real[e] · 2^exponent was an integer: nothing rounded
   double rounding = 0;  ///< the largest |costs[e] · 2^−exponent − real[e]|, at most 2^−exponent / 2

@@ -8,7 +8,7 @@
 #include <span>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
 
 namespace petersen {
@@ -17,8 +17,8 @@ namespace petersen {
 /// entries[start[v]] up to entries[start[v+1]]) and sorted within each bucket, so the copies of
 /// an edge are adjacent and in halfedge order.
 struct EdgeGroups {
-  HugeVector<std::uint32_t> start;
-  HugeVector<std::array<std::uint32_t, 2>> entries;
+  std::pmr::vector<std::uint32_t> start;
+  std::pmr::vector<std::array<std::uint32_t, 2>> entries;
 };
 
 /// Sorts one bucket by (larger vertex, halfedge), its entries being in ascending halfedge order
@@ -42,9 +42,9 @@ inline void sort_bucket(std::array<std::uint32_t, 2>* first, std::array<std::uin
 /// below v (size vertex_count + 1). `for_each_halfedge(visit)` calls visit(h, from, to) for every
 /// halfedge to group, in ascending h. One pass over the halfedges.
 template <class ForEachHalfedge>
-HugeVector<std::uint32_t> bucket_starts(std::size_t vertex_count,
-                                        ForEachHalfedge for_each_halfedge) {
-  HugeVector<std::uint32_t> start(vertex_count + 1, 0);
+std::pmr::vector<std::uint32_t> bucket_starts(std::size_t vertex_count,
+                                              ForEachHalfedge for_each_halfedge) {
+  std::pmr::vector<std::uint32_t> start(vertex_count + 1, 0);
   for_each_halfedge([&](std::uint32_t, VertexId a, VertexId b) { ++start[std::min(a, b) + 1]; });
   for (std::size_t v = 0; v < vertex_count; ++v) start[v + 1] += start[v];
   return start;
@@ -100,7 +100,7 @@ template <class From, class To, class Used>
 EdgeGroups group_halfedges(std::size_t vertex_count, std::uint32_t halfedge_count, From from, To to,
                            Used used) {
   const auto halfedges = halfedges_by(halfedge_count, from, to, used);
-  const HugeVector<std::uint32_t> start = bucket_starts(vertex_count, halfedges);
+  const std::pmr::vector<std::uint32_t> start = bucket_starts(vertex_count, halfedges);
   return group_halfedges_in(start, 0, vertex_count, halfedges);
 }
 
@@ -156,13 +156,13 @@ class PolygonHalfedges {
   /// The halfedges grouped by edge (those from a vertex to itself left out).
   EdgeGroups group() const {
     const auto halfedges = [&](auto visit) { for_each(visit); };
-    const HugeVector<std::uint32_t> start = bucket_starts(mesh_.positions.size(), halfedges);
+    const std::pmr::vector<std::uint32_t> start = bucket_starts(mesh_.positions.size(), halfedges);
     return group_halfedges_in(start, 0, mesh_.positions.size(), halfedges);
   }
 
  private:
   const PolygonMesh& mesh_;
-  HugeVector<FaceId> corner_face_;
+  std::pmr::vector<FaceId> corner_face_;
 };
 
 /// Calls visit(first, end) for each edge's group of entries [first, end) in `groups`.

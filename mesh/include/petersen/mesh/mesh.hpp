@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh_attributes.hpp"
 
 namespace petersen {
@@ -18,20 +18,27 @@ using FaceId = std::uint32_t;
 /// No face: a source that is no input face, a slot that names none.
 inline constexpr FaceId kNoFace = 0xFFFFFFFFu;
 
-/// Vertex positions; like every large array of the library, on huge pages once large
-/// (petersen/graph/huge_pages.hpp), so that meshes, graphs and scratch arrays recycle one
-/// another's memory.
-using Positions = HugeVector<std::array<double, 3>>;
+/// Vertex positions; like every large array of the library, on the memory resource the caller
+/// chose (petersen/graph/memory.hpp).
+using Positions = std::pmr::vector<std::array<double, 3>>;
 
 /// A mesh whose faces have any number of corners (three or more), as flat arrays: face f's
 /// corners, in order, are corners[face_start[f]] up to corners[face_start[f + 1]]. While every
 /// face is a triangle, face_start stays empty and face f is corners[3f], corners[3f + 1],
 /// corners[3f + 2]: 4 bytes per face saved where it matters, on large all-triangle meshes.
 /// add_face keeps that invariant; code that fills the arrays directly must keep it too.
+/// Every array is on one memory resource, the one given at construction (the default resource
+/// otherwise); a copy takes the default resource, a move keeps the source's.
 struct PolygonMesh {
+  PolygonMesh() = default;
+  /// An empty mesh whose arrays allocate from `memory`.
+  explicit PolygonMesh(std::pmr::memory_resource* memory)
+      : positions(memory), corners(memory), face_start(memory), attributes(memory) {}
+
   Positions positions;
-  HugeVector<VertexId> corners;
-  HugeVector<std::uint32_t> face_start;  ///< empty (all triangles), or face_count() + 1 offsets
+  std::pmr::vector<VertexId> corners;
+  std::pmr::vector<std::uint32_t>
+      face_start;  ///< empty (all triangles), or face_count() + 1 offsets
   /// Texture coordinates, normals, materials, groups and other properties, where the mesh has
   /// them (see MeshAttributes); add_face does not touch them.
   MeshAttributes attributes;
@@ -50,6 +57,8 @@ struct PolygonMesh {
   /// Appends a face (at least three corners; not checked here). Switches to explicit face starts
   /// at the first face that is not a triangle. Throws MeshError past 2^32 - 1 corners.
   void add_face(std::span<const VertexId> face_corners);
+  /// The resource the arrays allocate from.
+  std::pmr::memory_resource* memory() const { return corners.get_allocator().resource(); }
 };
 
 /// Throws MeshError naming the first attribute array whose size does not match the mesh (one

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "petersen/graph/huge_pages.hpp"
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
@@ -35,26 +35,40 @@ enum class ScalarType : std::uint8_t {
 struct PropertyColumn {
   std::string name;
   ScalarType type = ScalarType::float32;
-  HugeVector<double> values;
+  std::pmr::vector<double> values;
 };
 
 /// Every array is empty when the mesh has none of that attribute; otherwise it has one entry per
 /// corner (parallel to PolygonMesh::corners), per face or per vertex, as its name says.
 /// check_attributes enforces that.
 struct MeshAttributes {
+  MeshAttributes() = default;
+  /// No attributes, the arrays to come allocating from `memory`.
+  explicit MeshAttributes(std::pmr::memory_resource* memory)
+      : texcoords(memory),
+        normals(memory),
+        corner_texcoord(memory),
+        corner_normal(memory),
+        face_material(memory),
+        face_group(memory),
+        face_object(memory),
+        face_smoothing(memory) {}
+
   /// OBJ `vt` and `vn`, in file order; corners refer to them by index.
-  HugeVector<std::array<double, 3>> texcoords;
+  std::pmr::vector<std::array<double, 3>> texcoords;
   std::uint8_t texcoord_components = 2;  ///< 2 (u v) or 3 (u v w): the most any `vt` line had
-  HugeVector<std::array<double, 3>> normals;
-  HugeVector<std::uint32_t> corner_texcoord;  ///< per corner: index into texcoords, or kNoAttribute
-  HugeVector<std::uint32_t> corner_normal;    ///< per corner: index into normals, or kNoAttribute
+  std::pmr::vector<std::array<double, 3>> normals;
+  std::pmr::vector<std::uint32_t>
+      corner_texcoord;  ///< per corner: index into texcoords, or kNoAttribute
+  std::pmr::vector<std::uint32_t>
+      corner_normal;  ///< per corner: index into normals, or kNoAttribute
 
   /// Per face, an index into the names (OBJ `usemtl`, `g`, `o`; a `g` line's whole argument is one
   /// name), or kNoAttribute for faces before the first such line.
   std::vector<std::string> material_names, group_names, object_names;
-  HugeVector<std::uint32_t> face_material, face_group, face_object;
+  std::pmr::vector<std::uint32_t> face_material, face_group, face_object;
   /// Per face, OBJ's smoothing group: 0 for `s off` or `s 0` (and before any `s` line).
-  HugeVector<std::uint32_t> face_smoothing;
+  std::pmr::vector<std::uint32_t> face_smoothing;
   /// OBJ `mtllib` arguments, in order; written back at the top of an OBJ.
   std::vector<std::string> material_libraries;
 

@@ -126,17 +126,19 @@ struct PartPairingOptions {
   std::uint64_t move_budget = 0;
   /// Threads for the pairable graph's construction (build_pairable_graph); 0: every core.
   std::uint32_t threads = 1;
+  /// Where the partners, the part's mesh and graph and the matching's arrays are allocated.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 struct PartPairing {
   FaceId first_face = 0;
   /// Per triangle of the part (carried ones first): its partner's global face id, or kNoFace.
   /// Partners are in the part, but for carried triangles held fixed.
-  HugeVector<FaceId> partner;
-  std::vector<FaceId> unpaired;      ///< global ids, ascending
-  std::vector<OpenEdge> open_edges;  ///< ascending by (low, high, face)
-  std::vector<BandFace> band;        ///< ascending by face (Objective::pairs)
-  std::vector<SeamFace> seam;        ///< the cost objectives' band, ascending by face
+  std::pmr::vector<FaceId> partner;
+  std::vector<FaceId> unpaired = {};      ///< global ids, ascending
+  std::vector<OpenEdge> open_edges = {};  ///< ascending by (low, high, face)
+  std::vector<BandFace> band = {};        ///< ascending by face (Objective::pairs)
+  std::vector<SeamFace> seam = {};        ///< the cost objectives' band, ascending by face
   /// The cost objectives: the part's certified optimum in the solver's units (scale_costs):
   /// quads the matched costs plus the price of every triangle left, quality the matched costs.
   Cost objective_units = 0;

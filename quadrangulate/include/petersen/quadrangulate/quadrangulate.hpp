@@ -168,6 +168,10 @@ struct QuadOptions {
   /// consuming front door frees the input's corners early, which lowers lrs's peak (see
   /// quadrangulate(PolygonMesh&&)).
   bool sources = true;
+  /// Where the result's arrays and the conversion's large scratch arrays are allocated (see
+  /// petersen/graph/memory.hpp); it must outlive the result. Two conversions on two threads may
+  /// each have their own.
+  std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 
 struct QuadStats {
@@ -266,12 +270,12 @@ struct QuadResult {
   /// follows t1's orientation), {f, kNoFace} for a face kept or left. With lrs, a triangle its
   /// flips made new has no input face (kNoFace). A face split by all_quad names the faces of the
   /// quad or triangle it was split from. Empty without QuadOptions::sources.
-  HugeVector<std::array<FaceId, 2>> sources;
+  std::pmr::vector<std::array<FaceId, 2>> sources;
   /// The proof that no pairing leaves fewer triangles: a set A of triangles (input face ids)
   /// such that removing A from the pairable graph leaves triangles_left + |A| components with an
   /// odd number of triangles (verify_maximum_matching). Empty when every triangle is paired.
-  std::vector<FaceId> tutte_set;
-  QuadStats stats;
+  std::vector<FaceId> tutte_set = {};
+  QuadStats stats = {};
 };
 
 /// Pairs the triangles of any polygon mesh (see the top of this file). Throws MeshError naming the
@@ -285,7 +289,8 @@ struct QuadResult {
 /// maximum_certified), and the callers that need a mesh (`petersen quad`, the Python module) refuse
 /// it themselves. O(n log d) plus the algorithm's cost.
 QuadResult quadrangulate(const PolygonMesh& mesh, const QuadOptions& options = {});
-/// The same, consuming the mesh: its positions move into the output mesh instead of being copied
+/// The same, consuming the mesh: its positions (when on QuadOptions::memory) move into the output
+/// mesh instead of being copied
 /// (24 bytes per vertex of fresh memory, 1.2 GB at 10^8 triangles), and without
 /// QuadOptions::sources lrs on a whole closed mesh frees its corners once its triangulation is
 /// built (12 bytes per triangle less at lrs's peak). Whether it returns or throws, `mesh` is left

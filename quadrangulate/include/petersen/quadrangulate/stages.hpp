@@ -30,7 +30,7 @@ struct PairableMesh {
   /// Per pairable edge: its quad's quad_corner_deviation, plus QuadOptions::flow_weight times
   /// its edge flow with Objective::quads; empty with Objective::pairs and no
   /// max_corner_deviation, which need none.
-  HugeVector<double> costs;
+  std::pmr::vector<double> costs;
 };
 
 /// Stage 1: the pairable graph of `mesh` (build_pairable_graph) with the attribute cuts the
@@ -48,10 +48,10 @@ using LrsQuad = petersen::LrsQuad;
 /// What pair_triangles found.
 struct TrianglePairing {
   /// Per node: its partner node, kNoNode when unpaired, kLrsNode when lrs paired it (lrs_quads).
-  HugeVector<NodeId> partner;
-  HugeVector<LrsQuad> lrs_quads;     ///< on huge pages: they reuse what the pairing freed
-  std::vector<NodeId> tutte_set;     ///< nodes; see QuadResult::tutte_set
-  std::int64_t objective_units = 0;  ///< a cost objective's certified total, in scaled costs
+  std::pmr::vector<NodeId> partner;
+  std::pmr::vector<LrsQuad> lrs_quads;  ///< on QuadOptions::memory, as the partners
+  std::vector<NodeId> tutte_set = {};   ///< nodes; see QuadResult::tutte_set
+  std::int64_t objective_units = 0;     ///< a cost objective's certified total, in scaled costs
 };
 inline constexpr NodeId kLrsNode = kNoNode - 1;
 
@@ -64,7 +64,7 @@ inline constexpr NodeId kLrsNode = kNoNode - 1;
 /// witness or its certificate. Fills the matching, lrs, component and time fields of `stats`,
 /// maximum_certified and optimality_certified.
 TrianglePairing pair_triangles(PairableGraph& graph, const PolygonMesh& mesh,
-                               HugeVector<VertexId>* releasable_corners,
+                               std::pmr::vector<VertexId>* releasable_corners,
                                std::span<const double> degrees, const QuadOptions& options,
                                QuadStats& stats);
 
@@ -76,12 +76,13 @@ enum class FaceKind : std::uint8_t { kept, left, pair };
 /// input faces; its stats left to the caller) and what each of its faces is.
 struct OutputFaces {
   QuadResult result;
-  std::vector<FaceKind> kinds;
+  std::vector<FaceKind> kinds = {};
 };
 
 /// Stage 3: the output mesh on `positions` (the input's, moved or copied in by the caller): in
 /// input order each pair's quad where its first triangle was and every other face as it is, then
-/// lrs's quads. `with_sources`: fill result.sources (what attributes and all_quad read).
+/// lrs's quads, all on the positions' memory resource. `with_sources`: fill result.sources (what
+/// attributes and all_quad read).
 /// `pairing` is taken, and freed before this returns. Counts pairs and triangles_left into
 /// `stats`. O(F).
 OutputFaces output_faces(const PolygonMesh& mesh, const PairableGraph& graph,

@@ -105,7 +105,7 @@ inline void add_corner_normals(PolygonMesh& mesh, Draws& draw) {
 /// real file; some names hold a space.
 inline void add_face_names(PolygonMesh& mesh, Draws& draw) {
   MeshAttributes& a = mesh.attributes;
-  const std::pair<std::vector<std::string>*, HugeVector<std::uint32_t>*> named[3] = {
+  const std::pair<std::vector<std::string>*, std::pmr::vector<std::uint32_t>*> named[3] = {
       {&a.material_names, &a.face_material},
       {&a.group_names, &a.face_group},
       {&a.object_names, &a.face_object}};
