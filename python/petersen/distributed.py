@@ -34,7 +34,7 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -42,133 +42,43 @@ from . import _degrees, _number, _petersen
 
 __all__ = ["PlyLayout", "read_layout", "quadrangulate"]
 
-_PLY_TYPES = {
-    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
-    "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
-}
-_HEADER_LIMIT = 1 << 16
-
-
 @dataclass(frozen=True)
 class PlyLayout:
-    """Where a binary little-endian triangle PLY keeps its vertices and faces: enough for any
-    worker to read a range of either without the header."""
+    """Where a binary little-endian triangle PLY keeps its vertices and faces, as the library's
+    PLY header reader (petersen/io/ply_stream.hpp) found them: what the client needs to split the
+    faces into parts and to copy the vertex block into the output."""
 
     path: str
     vertex_count: int
     face_count: int
     vertex_offset: int
-    vertex_dtype: Tuple[Tuple[str, str], ...]
     face_offset: int
-    face_dtype: Tuple[Tuple[Any, ...], ...]
     #: The vertex element's header lines, copied into the output's header.
     vertex_header: Tuple[str, ...]
 
-    @property
-    def face_stride(self) -> int:
-        return np.dtype(list(self.face_dtype)).itemsize
-
-
-def _header_lines(path: str) -> Tuple[List[str], int]:
-    with open(path, "rb") as f:
-        head = f.read(_HEADER_LIMIT)
-    end = head.find(b"end_header\n")
-    if not head.startswith(b"ply\n") or end < 0:
-        raise ValueError(f"{path}: not a PLY file (no 'ply' line, or no 'end_header' in the "
-                         f"first {_HEADER_LIMIT} bytes)")
-    return head[:end].decode("ascii", "replace").split("\n")[:-1], end + len("end_header\n")
-
-
-def _ply_type(path: str, line: int, name: str) -> str:
-    if name not in _PLY_TYPES:
-        raise ValueError(f"{path}: header line {line}: unknown PLY type '{name}'")
-    return "<" + _PLY_TYPES[name]
-
 
 def read_layout(path: str) -> PlyLayout:
-    """Reads the header of a binary little-endian PLY whose faces are triangles. Raises
-    ValueError naming the file and header line for any other file: ascii or big-endian, an
-    element before the vertices or between vertices and faces, a face property list that is not
-    vertex_indices, a list in the vertex element, x, y or z missing. O(header)."""
-    lines, data_offset = _header_lines(path)
-    elements: List[Tuple[str, int, List[Tuple[Any, ...]], List[str], int]] = []
-    for number, line in enumerate(lines, start=1):
-        words = line.split()
-        if not words or words[0] in ("ply", "comment", "obj_info"):
-            continue
-        if words[0] == "format":
-            if words[1:2] != ["binary_little_endian"]:
-                raise ValueError(f"{path}: header line {number}: format {' '.join(words[1:])}; "
-                                 "the distributed pipeline reads binary_little_endian PLY")
-        elif words[0] == "element" and len(words) == 3:
-            elements.append((words[1], int(words[2]), [], [line], number))
-        elif words[0] == "property" and elements:
-            elements[-1][3].append(line)
-            if words[1] == "list" and len(words) == 5:
-                fields = (words[4], _ply_type(path, number, words[2]),
-                          _ply_type(path, number, words[3]))
-            elif len(words) == 3:
-                fields = (words[2], _ply_type(path, number, words[1]))
-            else:
-                raise ValueError(f"{path}: header line {number}: malformed property")
-            elements[-1][2].append(fields)
-        else:
-            raise ValueError(f"{path}: header line {number}: unexpected '{line}'")
-    names = [e[0] for e in elements]
-    if names[:2] != ["vertex", "face"]:
-        raise ValueError(f"{path}: elements {names}: the distributed pipeline reads a vertex "
-                         "element followed by a face element")
-    (_, n, vprops, vlines, vline), (_, m, fprops, _, fline) = elements[:2]
-    if any(len(p) == 3 for p in vprops) or not {"x", "y", "z"} <= {p[0] for p in vprops}:
-        raise ValueError(f"{path}: header line {vline}: vertex element needs x, y, z and no list")
-    lists = [p for p in fprops if len(p) == 3]
-    if len(lists) != 1 or lists[0][0] not in ("vertex_indices", "vertex_index"):
-        raise ValueError(f"{path}: header line {fline}: face element needs one list, "
-                         "vertex_indices")
-    if n >= 2**32:
-        raise ValueError(f"{path}: {n} vertices; at most 2^32 - 1")
-    face_dtype = tuple(
-        (("count", p[1]), ("corners", p[2], (3,))) if len(p) == 3 else ((p[0], p[1]),)
-        for p in fprops)
-    layout = PlyLayout(
-        path=str(path), vertex_count=n, face_count=m, vertex_offset=data_offset,
-        vertex_dtype=tuple((p[0], p[1]) for p in vprops),
-        face_offset=data_offset + n * np.dtype(list((p[0], p[1]) for p in vprops)).itemsize,
-        face_dtype=tuple(field for group in face_dtype for field in group),
-        vertex_header=tuple(vlines))
-    end = layout.face_offset + m * layout.face_stride
-    if os.path.getsize(path) < end:
-        raise ValueError(f"{path}: {os.path.getsize(path)} bytes, shorter than the {end} its "
-                         "header needs for triangles (a face of another arity?)")
-    return layout
+    """Reads the header of a binary little-endian PLY whose faces are triangles (a vertex element
+    of scalar properties with x, y and z, then a face element of one list with 32-bit indices).
+    Raises ValueError naming the file and header line for any other file, and for a file shorter
+    than its header says. O(header)."""
+    layout = _petersen.ply_triangle_layout(str(path))
+    return PlyLayout(path=str(path), vertex_count=layout["vertex_count"],
+                     face_count=layout["face_count"], vertex_offset=layout["vertex_offset"],
+                     face_offset=layout["face_offset"],
+                     vertex_header=tuple(layout["vertex_declaration"].splitlines()))
 
 
 def _read_faces(layout: PlyLayout, lo: int, hi: int) -> np.ndarray:
     """Faces lo..hi-1 as an (hi - lo, 3) int64 array of vertex ids; ValueError naming the face for
     one that is not a triangle or has a vertex out of range."""
-    dtype = np.dtype(list(layout.face_dtype))
-    rows = np.memmap(layout.path, dtype=dtype, mode="r",
-                     offset=layout.face_offset + lo * dtype.itemsize, shape=(hi - lo,))
-    bad = np.flatnonzero(rows["count"] != 3)
-    if bad.size:
-        raise ValueError(f"{layout.path}: face {lo + bad[0]}: {rows['count'][bad[0]]} corners; "
-                         "the distributed pipeline reads triangle meshes")
-    F = rows["corners"].astype(np.int64)
-    out = np.flatnonzero(((F < 0) | (F >= layout.vertex_count)).any(axis=1))
-    if out.size:
-        raise ValueError(f"{layout.path}: face {lo + out[0]}: a vertex index out of range "
-                         f"({layout.vertex_count} vertices): {F[out[0]].tolist()}")
-    return F
+    return _petersen.read_triangles(layout.path, lo, hi)
 
 
 def _corner_positions(layout: PlyLayout, F: np.ndarray) -> np.ndarray:
-    """The positions of the corners of faces F, (m, 3, 3) float64: the vertex block mapped and
-    only the rows F names read."""
-    vertices = np.memmap(layout.path, dtype=np.dtype(list(layout.vertex_dtype)), mode="r",
-                         offset=layout.vertex_offset, shape=(layout.vertex_count,))
-    rows = vertices[F.ravel()]
-    return np.stack([rows["x"], rows["y"], rows["z"]], axis=1).astype(np.float64).reshape(-1, 3, 3)
+    """The positions of the corners of faces F, (m, 3, 3) float64, as the in-memory reader gives
+    them: only the vertex records F names are read."""
+    return _petersen.read_corner_positions(layout.path, F)
 
 
 @dataclass

@@ -26,6 +26,7 @@
 #include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
+#include "ply_stream.hpp"
 #include "render.hpp"
 
 namespace petersen::python {
@@ -353,5 +354,6 @@ PYBIND11_MODULE(_petersen, m) {
   m.attr("CROSSABLE") = crossable_names();
   add_render(m);
   add_partition(m);
+  add_ply_stream(m);
   add_graph_functions(m);
 }

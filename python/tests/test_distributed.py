@@ -283,6 +283,34 @@ def test_bad_input_is_named(client, tmp_path):
     assert not (tmp_path / "out.ply").exists()
 
 
+def test_the_layout_is_the_library_readers_and_a_face_property_is_refused(tmp_path):
+    # The header is read by the library's PLY reader (as `petersen quad --memory-limit` reads it):
+    # the offsets frame the vertex block exactly, and the faces and positions read back are the
+    # ones written.
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]], np.float64)
+    F = np.array([[0, 1, 2], [2, 1, 3]])
+    path = tmp_path / "two.ply"
+    petersen.write_mesh(str(path), V, F)
+    layout = pd.read_layout(str(path))
+    assert (layout.vertex_count, layout.face_count) == (4, 2)
+    data = path.read_bytes()
+    assert data[:layout.vertex_offset].endswith(b"end_header\n")
+    assert layout.face_offset - layout.vertex_offset == 4 * 3 * 8  # x, y, z as double
+    assert len(data) == layout.face_offset + 2 * 13
+    assert layout.vertex_header[0] == "element vertex 4"
+    assert pd._read_faces(layout, 1, 2).tolist() == [[2, 1, 3]]
+    assert np.array_equal(pd._corner_positions(layout, F), V[F])
+    # A face property the output could not carry is refused, naming it, not read past.
+    header = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+              b"property float y\nproperty float z\nelement face 1\n"
+              b"property list uchar int vertex_indices\nproperty uchar quality\nend_header\n")
+    body = np.eye(3, dtype="<f4").tobytes() + bytes([3]) + np.arange(3, dtype="<i4").tobytes()
+    with_property = tmp_path / "quality.ply"
+    with_property.write_bytes(header + body + bytes([7]))
+    with pytest.raises(ValueError, match="quality.ply.*face properties besides"):
+        pd.read_layout(str(with_property))
+
+
 def test_the_write_stage_quads_follow_the_first_triangle_and_refuse_a_non_pair():
     # (0, 1, 2) and (1, 0, 3) share the first's side 0-1: the quad (0, 3, 1, 2) runs the first's
     # way; (5, 6, 7) and (6, 7, 8) share its side 6-7, which starts the quad (6, 8, 7, 5).

@@ -34,6 +34,10 @@ class PlyTriangleStream {
   /// The header lines declaring the vertex element ("element vertex N" and its properties), each
   /// ending in '\n': a writer copies them with the records.
   const std::string& vertex_declaration() const { return vertex_declaration_; }
+  /// Where the vertex records start in the file, and where the face records start (right after
+  /// the last vertex record): a reader or a writer that copies the vertex block as it is.
+  std::size_t vertex_offset() const { return vertex_start_; }
+  std::size_t face_offset() const { return face_start_; }
 
   /// The corners of faces first..first+count-1 into `corners` (3 per face). Throws FileError
   /// naming the file, the face and its byte for a face that is not a triangle or names a vertex
