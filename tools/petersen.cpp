@@ -125,8 +125,12 @@ std::vector<std::string> given_flags(const CLI::App& command) {
 // Why the out-of-core conversion does not take a flag of `petersen quad`: each part is paired
 // from its own faces and positions, so what needs the whole mesh (or its attributes) at once is
 // refused rather than ignored.
-std::string out_of_core_refusal(const std::string& flag, Objective objective) {
+std::string out_of_core_refusal(const std::string& flag, Objective objective, bool all_quad) {
   const bool costs = objective != Objective::pairs;
+  if (flag == "--triangle-cost" && all_quad) {
+    return "with --all-quad the pairing is the cheapest maximum (as in memory), which prices no "
+           "triangle";
+  }
   if (flag == "--triangle-cost" && objective != Objective::quads) {
     return "prices the triangles --objective quads leaves";
   }
@@ -143,9 +147,6 @@ std::string out_of_core_refusal(const std::string& flag, Objective objective) {
            "matching, whatever the algorithm";
   }
   if (flag == "--flow-weight") return "the cross field of the edge flow needs the whole mesh";
-  if (flag == "--all-quad" || flag == "--keep-polygons") {
-    return "splitting the triangles left into quads needs the whole mesh in memory";
-  }
   if (flag == "--keep-edges" || flag == "--cross" || flag == "--strict" ||
       flag == "--drop-duplicate-faces") {
     return "the parts are read as a binary PLY of triangles without attributes or edge lists";
@@ -159,16 +160,17 @@ std::string out_of_core_refusal(const std::string& flag, Objective objective) {
 void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
   const bool costs = objective != Objective::pairs;
   for (const std::string& flag : args.given) {
-    const bool taken = flag == "--memory-limit" || flag == "--part-triangles" ||
-                       flag == "--threads" || flag == "--stats-json" || flag == "--objective" ||
-                       (flag == "--augment" && !costs) ||
-                       (flag == "--triangle-cost" && objective == Objective::quads) ||
-                       ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
+    const bool taken =
+        flag == "--memory-limit" || flag == "--part-triangles" || flag == "--threads" ||
+        flag == "--stats-json" || flag == "--objective" || flag == "--all-quad" ||
+        flag == "--keep-polygons" || (flag == "--augment" && !costs) ||
+        (flag == "--triangle-cost" && objective == Objective::quads && !args.all_quad) ||
+        ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
     if (!taken) {
       throw CLI::ValidationError(flag,
                                  "not taken by the out-of-core conversion (--memory-limit, "
                                  "or an input too large for memory): " +
-                                     out_of_core_refusal(flag, objective));
+                                     out_of_core_refusal(flag, objective, args.all_quad));
     }
   }
 }
@@ -188,7 +190,9 @@ int quad(const QuadArgs& args) {
                                                .sharp_angle_degrees = args.sharp_angle},
                                      .memory_limit = *limit,
                                      .part_triangles = args.part_triangles,
-                                     .threads = args.threads});
+                                     .threads = args.threads,
+                                     .all_quad = args.all_quad,
+                                     .keep_polygons = args.keep_polygons});
   }
   if (args.part_triangles > 0) {
     throw CLI::ValidationError("--part-triangles",
@@ -479,11 +483,14 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
                    "threads for the phases that split into independent parts (0: every core)")
       ->check(CLI::Range(0u, petersen::kMaxQuadThreads))
       ->capture_default_str();
-  quad_cmd->add_flag("--all-quad", quad_args.all_quad,
-                     "make every face a quad, splitting the fewest edges (certified)");
+  quad_cmd->add_flag(
+      "--all-quad", quad_args.all_quad,
+      "make every face a quad, splitting the fewest edges (certified; out of core, the fewest "
+      "for each part given the parts before it)");
   quad_cmd->add_flag(
       "--keep-polygons", quad_args.keep_polygons,
-      "with --all-quad: keep the input's polygons that are not triangles as they are");
+      "with --all-quad: keep the input's polygons that are not triangles as they are (out of "
+      "core the input is all triangles: nothing to keep)");
   quad_cmd->add_flag("--drop-duplicate-faces", quad_args.drop_duplicate_faces,
                      "drop faces with the same vertices as an earlier face before pairing");
   quad_cmd->add_flag("--strict", quad_args.strict,
