@@ -125,15 +125,8 @@ std::vector<std::string> given_flags(const CLI::App& command) {
 // Why the out-of-core conversion does not take a flag of `petersen quad`: each part is paired
 // from its own faces and positions, so what needs the whole mesh (or its attributes) at once is
 // refused rather than ignored.
-std::string out_of_core_refusal(const std::string& flag, Objective objective, bool all_quad) {
+std::string out_of_core_refusal(const std::string& flag, Objective objective) {
   const bool costs = objective != Objective::pairs;
-  if (flag == "--triangle-cost" && all_quad) {
-    return "with --all-quad the pairing is the cheapest maximum (as in memory), which prices no "
-           "triangle";
-  }
-  if (flag == "--triangle-cost" && objective != Objective::quads) {
-    return "prices the triangles --objective quads leaves";
-  }
   if ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && !costs) {
     return "--objective pairs pairs the maximum out of core without measuring the quads: give "
            "--objective quads or quality with it";
@@ -160,24 +153,46 @@ std::string out_of_core_refusal(const std::string& flag, Objective objective, bo
 void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
   const bool costs = objective != Objective::pairs;
   for (const std::string& flag : args.given) {
-    const bool taken =
-        flag == "--memory-limit" || flag == "--part-triangles" || flag == "--threads" ||
-        flag == "--stats-json" || flag == "--objective" || flag == "--all-quad" ||
-        flag == "--keep-polygons" || (flag == "--augment" && !costs) ||
-        (flag == "--triangle-cost" && objective == Objective::quads && !args.all_quad) ||
-        ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
+    const bool taken = flag == "--memory-limit" || flag == "--part-triangles" ||
+                       flag == "--threads" || flag == "--stats-json" || flag == "--objective" ||
+                       flag == "--all-quad" || flag == "--keep-polygons" ||
+                       flag == "--triangle-cost" || (flag == "--augment" && !costs) ||
+                       ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
     if (!taken) {
       throw CLI::ValidationError(flag,
                                  "not taken by the out-of-core conversion (--memory-limit, "
                                  "or an input too large for memory): " +
-                                     out_of_core_refusal(flag, objective, args.all_quad));
+                                     out_of_core_refusal(flag, objective));
     }
+  }
+}
+
+// The weights only --objective quads reads, refused where the run would not read them, in memory
+// and out of core alike.
+void refuse_unread_weights(const QuadArgs& args, Objective objective) {
+  auto given = [&](const char* flag) { return std::ranges::count(args.given, flag) > 0; };
+  if (given("--triangle-cost") && objective != Objective::quads) {
+    throw CLI::ValidationError("--triangle-cost",
+                               "prices the triangles --objective quads leaves; --objective " +
+                                   args.objective + " pairs the maximum");
+  }
+  if (given("--triangle-cost") && args.all_quad) {
+    throw CLI::ValidationError("--triangle-cost",
+                               "with --all-quad every triangle left is split into quads, so the "
+                               "pairing is the cheapest maximum, which prices no triangle");
+  }
+  if (given("--flow-weight") && objective != Objective::quads) {
+    throw CLI::ValidationError(
+        "--flow-weight",
+        "weighs the edge flow in the costs of --objective quads, not --objective " +
+            args.objective);
   }
 }
 
 int quad(const QuadArgs& args) {
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  refuse_unread_weights(args, *objective);
   if (const auto limit = out_of_core_limit(args.input, args.memory_limit, *objective)) {
     refuse_out_of_core_flags(args, *objective);
     return quad_out_of_core_command({.input = args.input,

@@ -340,7 +340,9 @@ TEST(OutOfCore, AllQuadInManyPartsPassesTheIndependentCheck) {
         EXPECT_EQ(counts.quads, out.face_count()) << what;
         EXPECT_EQ(counts.midpoints, stats.split_edges) << what;
         EXPECT_EQ(counts.centres, stats.centre_vertices) << what;
-        if (objective == Objective::pairs) EXPECT_EQ(stats.centre_vertices, 0u) << what;
+        if (objective == Objective::pairs) {
+          EXPECT_EQ(stats.centre_vertices, 0u) << what;
+        }
       }
     }
   }
@@ -376,7 +378,9 @@ TEST(OutOfCore, AllQuadMidpointsAgainstTheInMemoryMinimum) {
           (unsigned long long)minimum);
       EXPECT_GT(minimum, 0u) << path;
       EXPECT_GE(stats.split_edges, minimum) << path;
-      if (stats.all_quad_parts == 1) EXPECT_EQ(stats.split_edges, minimum) << path;
+      if (stats.all_quad_parts == 1) {
+        EXPECT_EQ(stats.split_edges, minimum) << path;
+      }
     }
   }
 }
