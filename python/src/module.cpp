@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "all_quad.hpp"
 #include "arrays.hpp"
 #include "attributes.hpp"
 #include "graph_functions.hpp"
@@ -355,5 +356,6 @@ PYBIND11_MODULE(_petersen, m) {
   add_render(m);
   add_partition(m);
   add_ply_stream(m);
+  add_all_quad(m);
   add_graph_functions(m);
 }
