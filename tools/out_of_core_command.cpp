@@ -109,6 +109,23 @@ void write_stats_json(const std::string& path, const OutOfCoreArgs& args, const 
     }
     b("optimality_certified", s.optimality_certified);
   }
+  if (args.all_quad) {
+    // The in-memory keys where they apply: added_vertices_minimum and all_quad_certified claim
+    // a whole-mesh minimum, which part by part is not proved (all_quad_parts_certified: each
+    // part's T-join is minimal for its own T).
+    u("added_vertices", s.added_vertices);
+    u("split_edges", s.split_edges);
+    u("degenerate_faces", s.degenerate_faces);
+    u("centre_vertices", s.centre_vertices);
+    b("all_quad_certified", false);
+    b("all_quad_parts_certified", s.all_quad_parts_certified);
+    u("all_quad_parts", s.all_quad_parts);
+    u("split_quads", s.split_quads);
+    d("split_quality_median", s.split_quality_median);
+    d("split_quality_p95", s.split_quality_p95);
+    u("faces_out", s.faces_out);
+    d("all_quad_seconds", s.all_quad_seconds);
+  }
   u("temp_bytes", s.temp_bytes);
   d("read_pair_seconds", s.read_pair_seconds);
   d("cut_seconds", s.cut_seconds);
@@ -219,6 +236,8 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
                                              .memory_limit = args.memory_limit,
                                              .part_triangles = args.part_triangles,
                                              .augment = *augment,
+                                             .all_quad = args.all_quad,
+                                             .keep_polygons = args.keep_polygons,
                                              .threads = args.threads,
                                              .memory = memory});
   std::printf("%s: %llu triangles in %llu part%s of %llu, out of core, objective %s\n",
@@ -226,7 +245,8 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
               s.parts == 1 ? "" : "s", (unsigned long long)s.part_triangles,
               std::string(to_string(args.costs.objective)).c_str());
   if (args.costs.objective != Objective::pairs) {
-    print_costs(s, args.costs.objective);
+    // With --all-quad, quads pairs the cheapest maximum, as quality (as in memory).
+    print_costs(s, args.all_quad ? Objective::quality : args.costs.objective);
   } else {
     std::printf(
         "pairs: %llu, triangles left: %llu (unpaired after the parts: %llu, paired across "
@@ -240,12 +260,25 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
         : s.parts_certified ? "every pair checked; each part's and the band's pairing maximum"
                             : "every pair checked");
   }
+  if (args.all_quad) {
+    std::printf(
+        "all-quad: %llu faces, all quads%s; %llu vertices added (%llu midpoints, %llu centres) in "
+        "%llu parts, each part's midpoints the fewest for it (%s), whole-mesh minimum not proved; "
+        "%llu split quads, worst corner median %.1f, p95 %.1f\n",
+        (unsigned long long)s.faces_out,
+        s.degenerate_faces > 0 ? " but the faces repeating a vertex, kept" : "",
+        (unsigned long long)s.added_vertices, (unsigned long long)s.split_edges,
+        (unsigned long long)s.centre_vertices, (unsigned long long)s.all_quad_parts,
+        s.all_quad_parts_certified ? "certified" : "NOT certified",
+        (unsigned long long)s.split_quads, s.split_quality_median, s.split_quality_p95);
+  }
   std::printf(
-      "time: %.2f s (read and pair %.2f, cut %.2f, %s %.2f, write %.2f); temporary files "
+      "time: %.2f s (read and pair %.2f, cut %.2f, %s %.2f, %s %.2f); temporary files "
       "%.2f GB\n",
       s.total_seconds, s.read_pair_seconds, s.cut_seconds,
       args.costs.objective == Objective::pairs ? "repair" : "seams", s.repair_seconds,
-      s.write_seconds, double(s.temp_bytes) / 1e9);
+      args.all_quad ? "all-quad and write" : "write",
+      args.all_quad ? s.all_quad_seconds : s.write_seconds, double(s.temp_bytes) / 1e9);
   std::printf("%s written\n", args.output.c_str());
   if (!args.stats_json.empty()) write_stats_json(args.stats_json, args, s);
   return 0;

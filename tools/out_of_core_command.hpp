@@ -27,6 +27,7 @@ struct OutOfCoreArgs {
   std::uint64_t memory_limit = 0;
   std::uint64_t part_triangles = 0;
   std::uint32_t threads = 1;
+  bool all_quad = false, keep_polygons = false;
 };
 
 /// Runs quad_out_of_core and prints its summary (and --stats-json). 0 when every pair checked out.

@@ -130,9 +130,6 @@ std::vector<std::string> given_flags(const CLI::App& command) {
 // refused rather than ignored.
 std::string out_of_core_refusal(const std::string& flag, Objective objective) {
   const bool costs = objective != Objective::pairs;
-  if (flag == "--triangle-cost" && objective != Objective::quads) {
-    return "prices the triangles --objective quads leaves";
-  }
   if ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && !costs) {
     return "--objective pairs pairs the maximum out of core without measuring the quads: give "
            "--objective quads or quality with it";
@@ -146,9 +143,6 @@ std::string out_of_core_refusal(const std::string& flag, Objective objective) {
            "matching, whatever the algorithm";
   }
   if (flag == "--flow-weight") return "the cross field of the edge flow needs the whole mesh";
-  if (flag == "--all-quad" || flag == "--keep-polygons") {
-    return "splitting the triangles left into quads needs the whole mesh in memory";
-  }
   if (flag == "--keep-edges" || flag == "--cross" || flag == "--strict" ||
       flag == "--drop-duplicate-faces") {
     return "the parts are read as a binary PLY of triangles without attributes or edge lists";
@@ -164,8 +158,8 @@ void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
   for (const std::string& flag : args.given) {
     const bool taken = flag == "--memory-limit" || flag == "--part-triangles" ||
                        flag == "--threads" || flag == "--stats-json" || flag == "--objective" ||
-                       (flag == "--augment" && !costs) ||
-                       (flag == "--triangle-cost" && objective == Objective::quads) ||
+                       flag == "--all-quad" || flag == "--keep-polygons" ||
+                       flag == "--triangle-cost" || (flag == "--augment" && !costs) ||
                        ((flag == "--sharp-angle" || flag == "--max-corner-deviation") && costs);
     if (!taken) {
       throw CLI::ValidationError(flag,
@@ -176,9 +170,32 @@ void refuse_out_of_core_flags(const QuadArgs& args, Objective objective) {
   }
 }
 
+// The weights only --objective quads reads, refused where the run would not read them, in memory
+// and out of core alike.
+void refuse_unread_weights(const QuadArgs& args, Objective objective) {
+  auto given = [&](const char* flag) { return std::ranges::count(args.given, flag) > 0; };
+  if (given("--triangle-cost") && objective != Objective::quads) {
+    throw CLI::ValidationError("--triangle-cost",
+                               "prices the triangles --objective quads leaves; --objective " +
+                                   args.objective + " pairs the maximum");
+  }
+  if (given("--triangle-cost") && args.all_quad) {
+    throw CLI::ValidationError("--triangle-cost",
+                               "with --all-quad every triangle left is split into quads, so the "
+                               "pairing is the cheapest maximum, which prices no triangle");
+  }
+  if (given("--flow-weight") && objective != Objective::quads) {
+    throw CLI::ValidationError(
+        "--flow-weight",
+        "weighs the edge flow in the costs of --objective quads, not --objective " +
+            args.objective);
+  }
+}
+
 int quad(const QuadArgs& args) {
   const auto objective = parse_objective(args.objective);
   if (!objective) throw CLI::ValidationError("--objective", "unknown objective " + args.objective);
+  refuse_unread_weights(args, *objective);
   if (const auto limit = out_of_core_limit(args.input, args.memory_limit, *objective)) {
     refuse_out_of_core_flags(args, *objective);
     return quad_out_of_core_command({.input = args.input,
@@ -191,7 +208,9 @@ int quad(const QuadArgs& args) {
                                                .sharp_angle_degrees = args.sharp_angle},
                                      .memory_limit = *limit,
                                      .part_triangles = args.part_triangles,
-                                     .threads = args.threads});
+                                     .threads = args.threads,
+                                     .all_quad = args.all_quad,
+                                     .keep_polygons = args.keep_polygons});
   }
   if (args.part_triangles > 0) {
     throw CLI::ValidationError("--part-triangles",
@@ -484,11 +503,14 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
                    "threads for the phases that split into independent parts (0: every core)")
       ->check(CLI::Range(0u, petersen::kMaxQuadThreads))
       ->capture_default_str();
-  quad_cmd->add_flag("--all-quad", quad_args.all_quad,
-                     "make every face a quad, splitting the fewest edges (certified)");
+  quad_cmd->add_flag(
+      "--all-quad", quad_args.all_quad,
+      "make every face a quad, splitting the fewest edges (certified; out of core, the fewest "
+      "for each part given the parts before it)");
   quad_cmd->add_flag(
       "--keep-polygons", quad_args.keep_polygons,
-      "with --all-quad: keep the input's polygons that are not triangles as they are");
+      "with --all-quad: keep the input's polygons that are not triangles as they are (out of "
+      "core the input is all triangles: nothing to keep)");
   quad_cmd->add_flag("--drop-duplicate-faces", quad_args.drop_duplicate_faces,
                      "drop faces with the same vertices as an earlier face before pairing");
   quad_cmd->add_flag("--strict", quad_args.strict,

@@ -9,6 +9,7 @@
 
 #include <bit>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 
@@ -88,6 +89,56 @@ std::string declaration_of(const ply::Element& vertex) {
 
 }  // namespace
 
+std::string PlyTriangleStream::vertex_declaration(std::uint64_t count) const {
+  const std::size_t line_end = vertex_declaration_.find('\n');
+  return "element vertex " + std::to_string(count) + vertex_declaration_.substr(line_end);
+}
+
+void PlyTriangleStream::append_blended_record(std::span<const VertexId> ids,
+                                              std::string& out) const {
+  std::size_t offset = 0;
+  char bytes[8];
+  for (const std::uint8_t t : property_types_) {
+    const auto type = ScalarType(t);
+    double sum = 0;
+    for (VertexId v : ids)
+      sum += scalar_at(bytes_ + vertex_start_ + v * vertex_bytes_ + offset, type);
+    const double mean = sum / double(ids.size());
+    const double whole = std::round(mean);
+    auto put = [&](auto value) {
+      std::memcpy(bytes, &value, sizeof value);  // little-endian, as check_layout requires
+      out.append(bytes, sizeof value);
+    };
+    switch (type) {
+      case ScalarType::int8:
+        put(std::int8_t(whole));
+        break;
+      case ScalarType::uint8:
+        put(std::uint8_t(whole));
+        break;
+      case ScalarType::int16:
+        put(std::int16_t(whole));
+        break;
+      case ScalarType::uint16:
+        put(std::uint16_t(whole));
+        break;
+      case ScalarType::int32:
+        put(std::int32_t(whole));
+        break;
+      case ScalarType::uint32:
+        put(std::uint32_t(whole));
+        break;
+      case ScalarType::float32:
+        put(float(mean));
+        break;
+      case ScalarType::float64:
+        put(mean);
+        break;
+    }
+    offset += ply::size_of(type);
+  }
+}
+
 PlyTriangleStream::PlyTriangleStream(const std::string& path) : path_(path) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) io_detail::fail(path, "cannot open for reading", errno);
@@ -119,6 +170,7 @@ PlyTriangleStream::PlyTriangleStream(const std::string& path) : path_(path) {
   xyz_offset_.fill(SIZE_MAX);
   std::size_t offset = 0;
   for (const ply::Property& p : header.elements[0].properties) {
+    property_types_.push_back(static_cast<std::uint8_t>(p.type));
     for (int k = 0; k < 3; ++k) {
       if (p.name == std::string(1, char('x' + k))) {
         xyz_offset_[k] = offset;

@@ -191,7 +191,7 @@ class Triangulation {
     Link& operator[](std::size_t h) { return data_[h]; }
     const Link& operator[](std::size_t h) const { return data_[h]; }
     std::size_t size() const { return size_; }
-    /// Keeps the first `size` links (shrink_huge_array).
+    /// Keeps the first `size` links (shrink_raw_array).
     void shrink(std::size_t size) {
       shrink_raw_array(data_, size);
       size_ = size;

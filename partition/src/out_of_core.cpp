@@ -8,9 +8,11 @@
 #include <string>
 
 #include "petersen/dualize/quad_of.hpp"
+#include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/file_error.hpp"
 #include "petersen/io/ply_stream.hpp"
+#include "petersen/partition/all_quad.hpp"
 #include "petersen/partition/partition.hpp"
 #include "temp_face_array.hpp"
 
@@ -185,10 +187,11 @@ RepairResult repair(const PartsOutcome& parts, const CutPairing& cut, TempFaceAr
   return result;
 }
 
-// Checks the pair {f, p} from f's side: p names f back and the two share an edge; writes its
-// quad when f is the first. O(1).
-void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, FaceId p,
-                std::span<const VertexId> tf, std::span<const VertexId> tp, std::uint64_t n) {
+// Checks the pair {f, p} from f's side: p names f back and the two share an edge; its quad.
+// O(1).
+std::array<VertexId, 4> checked_quad(const TempFaceArray& partner, FaceId f, FaceId p,
+                                     std::span<const VertexId> tf, std::span<const VertexId> tp,
+                                     std::uint64_t n) {
   if (p >= n || partner[p] != f) {
     throw std::logic_error("internal error: face " + std::to_string(f) + " names partner " +
                            std::to_string(p) + ", which does not name it back");
@@ -200,6 +203,13 @@ void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, Fa
     throw std::logic_error("internal error: faces " + std::to_string(f) + " and " +
                            std::to_string(p) + " are paired but share no edge");
   }
+  return quad;
+}
+
+// Checks the pair {f, p} from f's side and writes its quad when f is the first. O(1).
+void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, FaceId p,
+                std::span<const VertexId> tf, std::span<const VertexId> tp, std::uint64_t n) {
+  const std::array<VertexId, 4> quad = checked_quad(partner, f, p, tf, tp, n);
   if (f < p) out.write_quad(quad[0], quad[1], quad[2], quad[3]);
 }
 
@@ -241,6 +251,171 @@ void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std
   std::pmr::vector<VertexId> corners;
   for (std::uint64_t first = 0; first < in.face_count(); first += size) {
     write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out, stats);
+  }
+  out.commit();
+  stats.temp_bytes += out.bytes_written();
+}
+
+// The all-quad step's parts: the pairing's, or smaller where the T-join's matching needs it.
+constexpr std::uint64_t kAllQuadBytesPerTriangle = 600;
+
+std::uint64_t all_quad_part_size(const OutOfCoreOptions& options, std::uint64_t size) {
+  if (options.all_quad_part_triangles > 0) return options.all_quad_part_triangles;
+  if (options.part_triangles > 0) return size;
+  const std::uint64_t fixed = std::min(kFixedBytes, options.memory_limit / 2);
+  return std::max<std::uint64_t>(
+      kMinPartTriangles,
+      std::min(size, (options.memory_limit - fixed) / kAllQuadBytesPerTriangle * 2 / 3));
+}
+
+// The output faces of faces first..first+count-1 (all_quad.hpp's PartFaces): the triangles left
+// and the quads whose first triangle is among them, every pair checked from both sides; with the
+// corners' positions when asked. Counts the triangles left into `left`.
+PartFaces part_faces(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
+                     std::uint64_t count, std::pmr::vector<VertexId>& corners, bool positions,
+                     std::uint64_t& left) {
+  corners.resize(3 * count);
+  in.read_faces(first, count, corners);
+  in.release_faces(first, count);
+  const std::uint64_t n = in.face_count();
+  PartFaces faces;
+  faces.corners.reserve(2 * count + count / 2);
+  for (std::uint64_t i = 0; i < count; ++i) {
+    const FaceId f = static_cast<FaceId>(first + i), p = partner[f];
+    const std::span<const VertexId> tf(corners.data() + 3 * i, 3);
+    if (p == kNoFace) {
+      faces.corners.insert(faces.corners.end(), tf.begin(), tf.end());
+      faces.arity.push_back(3);
+      ++left;
+      continue;
+    }
+    const bool inside = p >= first && p < first + count;
+    VertexId outside[3];
+    if (!inside && p < n) in.read_faces(p, 1, outside);
+    const std::span<const VertexId> tp =
+        inside ? std::span<const VertexId>(corners.data() + 3 * (p - first), 3) : outside;
+    const std::array<VertexId, 4> quad = checked_quad(partner, f, p, tf, tp, n);
+    if (f > p) continue;
+    faces.corners.insert(faces.corners.end(), quad.begin(), quad.end());
+    faces.arity.push_back(4);
+  }
+  partner.release(first, count);
+  if (positions) {
+    faces.corner_positions.resize(faces.corners.size());
+    in.read_positions(faces.corners, faces.corner_positions);
+    in.release_vertices(0, in.vertex_count());
+  }
+  return faces;
+}
+
+// --all-quad (all_quad.hpp): the parities, the seams, the plan part by part in face order, and
+// the output: the input's vertex records, the midpoints' and centres' records, the quads.
+void write_all_quad(const PlyTriangleStream& in, TempFaceArray& partner, const std::string& output,
+                    std::uint64_t size, const OutOfCoreOptions& options, OutOfCoreStats& stats) {
+  const std::uint64_t n = in.face_count();
+  const std::uint64_t part = all_quad_part_size(options, size);
+  const QuadOptions quad_options{.objective = options.costs.objective,
+                                 .all_quad = true,
+                                 .keep_polygons = options.keep_polygons,
+                                 .threads = options.threads,
+                                 .memory = options.memory};
+  std::pmr::vector<VertexId> corners(options.memory);
+  std::vector<PartParity> parities;
+  std::uint64_t left = 0;
+  for (std::uint64_t first = 0; first < n; first += part) {
+    const PartFaces faces =
+        part_faces(in, partner, first, std::min(part, n - first), corners, false, left);
+    parities.push_back(part_parity(faces));
+    stats.degenerate_faces += parities.back().kept_faces;
+  }
+  stats.triangles_left = left;
+  stats.all_quad_parts = parities.size();
+  const SplitSeams seams = split_seams(parities);
+  parities = {};
+  stats.seam_cut_edges = seams.cut_edges;
+  std::vector<std::array<VertexId, 2>> midpoints, cut_midpoints;
+  std::vector<std::array<VertexId, 4>> centres;
+  std::vector<double> quality;
+  std::vector<std::uint64_t> first_centre;
+  stats.all_quad_parts_certified = true;
+  std::uint64_t index = 0;
+  for (std::uint64_t first = 0; first < n; first += part, ++index) {
+    const PartFaces faces =
+        part_faces(in, partner, first, std::min(part, n - first), corners, true, left);
+    PartSplitPlan plan = plan_part_all_quad(faces, static_cast<std::uint32_t>(index), seams,
+                                            cut_midpoints, quad_options);
+    midpoints.insert(midpoints.end(), plan.midpoints.begin(), plan.midpoints.end());
+    const std::size_t middle = cut_midpoints.size();
+    cut_midpoints.insert(cut_midpoints.end(), plan.cut_midpoints.begin(), plan.cut_midpoints.end());
+    std::inplace_merge(cut_midpoints.begin(), cut_midpoints.begin() + middle, cut_midpoints.end());
+    first_centre.push_back(centres.size());
+    centres.insert(centres.end(), plan.centre_corners.begin(), plan.centre_corners.end());
+    quality.insert(quality.end(), plan.split_quality.begin(), plan.split_quality.end());
+    stats.faces_out += plan.faces;
+    stats.all_quad_parts_certified = stats.all_quad_parts_certified && plan.certified;
+  }
+  std::sort(midpoints.begin(), midpoints.end());
+  midpoints.erase(std::unique(midpoints.begin(), midpoints.end()), midpoints.end());
+  stats.split_edges = midpoints.size();
+  stats.centre_vertices = centres.size();
+  stats.added_vertices = stats.split_edges + stats.centre_vertices;
+  stats.split_quads = quality.size();
+  const QualityFigures figures = quality_figures_in_place(quality);
+  stats.split_quality_median = figures.median;
+  stats.split_quality_p95 = figures.p95;
+  quality = {};
+  const std::uint64_t vertices = in.vertex_count() + stats.added_vertices;
+  if (vertices >= kNoFace) {
+    throw std::invalid_argument("--all-quad: " + std::to_string(vertices) +
+                                " vertices; vertex ids are 32-bit");
+  }
+  PlyStreamWriter out(output, in.vertex_declaration(vertices), stats.faces_out);
+  constexpr std::uint64_t kVertexChunk = std::uint64_t{1} << 22;
+  for (std::uint64_t first = 0; first < in.vertex_count(); first += kVertexChunk) {
+    const std::uint64_t count = std::min(kVertexChunk, in.vertex_count() - first);
+    out.write_vertex_records(in.vertex_records(first, count));
+    in.release_vertices(first, count);
+  }
+  std::string records;
+  auto flush = [&](bool last) {
+    if (records.size() >= (std::size_t{1} << 22) || last) {
+      out.write_vertex_records(records);
+      records.clear();
+    }
+  };
+  for (const auto& edge : midpoints) {
+    in.append_blended_record(edge, records);
+    flush(false);
+  }
+  for (const auto& corners4 : centres) {
+    const std::size_t count =
+        std::find(corners4.begin(), corners4.end(), kNoNode) - corners4.begin();
+    in.append_blended_record(std::span<const VertexId>(corners4.data(), count), records);
+    flush(false);
+  }
+  flush(true);
+  in.release_vertices(0, in.vertex_count());
+  centres = {};
+  index = 0;
+  std::uint64_t ignored = 0;
+  for (std::uint64_t first = 0; first < n; first += part, ++index) {
+    const PartFaces faces =
+        part_faces(in, partner, first, std::min(part, n - first), corners, true, ignored);
+    const PolygonMesh quads = part_all_quads(
+        faces, midpoints, static_cast<VertexId>(in.vertex_count()),
+        static_cast<VertexId>(in.vertex_count() + midpoints.size() + first_centre[index]),
+        quad_options);
+    for (FaceId f = 0; f < quads.face_count(); ++f) {
+      const auto c = quads.face(f);
+      if (c.size() == 4) {
+        out.write_quad(c[0], c[1], c[2], c[3]);
+      } else if (c.size() == 3) {
+        out.write_triangle(c[0], c[1], c[2]);
+      } else {
+        throw std::logic_error("internal error: --all-quad made a face of " +
+                               std::to_string(c.size()) + " corners");
+      }
+    }
   }
   out.commit();
   stats.temp_bytes += out.bytes_written();
@@ -300,7 +475,13 @@ void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
 }  // namespace
 
 OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& output,
-                                const OutOfCoreOptions& options) {
+                                const OutOfCoreOptions& given) {
+  // With all_quad every triangle left is split into quads anyway: quads then pairs the cheapest
+  // maximum, as quality does (as quadrangulate does in memory).
+  OutOfCoreOptions options = given;
+  if (options.all_quad && options.costs.objective == Objective::quads) {
+    options.costs.objective = Objective::quality;
+  }
   Stopwatch clock;
   OutOfCoreStats stats;
   const PlyTriangleStream in(input);
@@ -320,9 +501,14 @@ OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& out
   } else {
     pair_maximum(in, partner, size, options, stats, clock);
   }
-  write_output(in, partner, output, size, stats);
+  if (options.all_quad) {
+    write_all_quad(in, partner, output, size, options, stats);
+    stats.all_quad_seconds = clock.lap();
+  } else {
+    write_output(in, partner, output, size, stats);
+    stats.write_seconds = clock.lap();
+  }
   stats.perfect_certified = stats.closed && stats.triangles_left == 0;
-  stats.write_seconds = clock.lap();
   stats.total_seconds = clock.seconds();
   return stats;
 }

@@ -196,8 +196,8 @@ def quadrangulate(
     cross: Sequence[str] = (),
     threads: int = 0,
     keep_polygons: bool = False,
-    triangle_cost: float = 90.0,
-    flow_weight: float = 0.0,
+    triangle_cost: Optional[float] = None,
+    flow_weight: Optional[float] = None,
     drop_duplicate_faces: bool = False,
 ) -> QuadResult:
     """Pairs the triangles of any polygon mesh into quads on the same vertices.
@@ -208,8 +208,10 @@ def quadrangulate(
     pairing is the exact least-cost one, certified (``stats["optimality_certified"]``): each quad
     costs its shape (``quad_quality``) plus ``flow_weight`` times its edge flow (how closely the
     edge it removes runs along a smooth cross field; 0, the default, weighs shape alone), and each
-    triangle left unpaired ``triangle_cost`` degrees, so a triangle stays where pairing it would
-    break better quads. ``objective="pairs"`` gives a
+    triangle left unpaired ``triangle_cost`` degrees (90 when not given), so a triangle stays
+    where pairing it would break better quads; both weights are read by ``objective="quads"``
+    only, and ``triangle_cost`` not with ``all_quad`` (which pairs the cheapest maximum), so
+    giving one where it would not be read raises ``TypeError``. ``objective="pairs"`` gives a
     certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,
     sg, ps, ds, gw, frink or lrs), the rest by greedy pairing and augmenting paths with a
     Tutte-Berge witness. Faces that are not triangles are kept. ``all_quad`` makes every face a quad by splitting the fewest edges
@@ -255,6 +257,7 @@ def quadrangulate(
     integers or an angle that is not a number.
     """
     V, F, attributes = _mesh_parts(V, F, attributes, "quadrangulate")
+    _refuse_unread_weights(objective, bool(all_quad), triangle_cost, flow_weight)
     if isinstance(cross, str):
         raise TypeError("cross must be a list of cause names, e.g. cross=['uv_seam']")
     r = _petersen.quadrangulate(
@@ -262,9 +265,25 @@ def quadrangulate(
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
         [str(c) for c in cross], _threads(threads), bool(keep_polygons),
-        _number("triangle_cost", triangle_cost, 10000.0), _number("flow_weight", flow_weight, 100.0),
+        _number("triangle_cost", 90.0 if triangle_cost is None else triangle_cost, 10000.0),
+        _number("flow_weight", 0.0 if flow_weight is None else flow_weight, 100.0),
         bool(drop_duplicate_faces))
     return QuadResult(**r)
+
+
+def _refuse_unread_weights(objective: str, all_quad: bool, triangle_cost: Optional[float],
+                           flow_weight: Optional[float]) -> None:
+    """TypeError for a weight given where the run would not read it, as ``petersen quad``
+    refuses the flag."""
+    if triangle_cost is not None and objective != "quads":
+        raise TypeError(f"triangle_cost prices the triangles objective quads leaves; objective "
+                        f"{objective!r} pairs the maximum")
+    if triangle_cost is not None and all_quad:
+        raise TypeError("triangle_cost: with all_quad every triangle left is split into quads, "
+                        "so the pairing is the cheapest maximum, which prices no triangle")
+    if flow_weight is not None and objective != "quads":
+        raise TypeError(f"flow_weight weighs the edge flow in the costs of objective quads, not "
+                        f"{objective!r}")
 
 
 def _degrees(name: str, value: Optional[float], high: float) -> Optional[float]:

@@ -23,6 +23,13 @@ The stages (docs/dask.md), each the library's step of petersen/partition/partiti
    client computed; the client copies the vertex block unchanged and renames the temporary file
    into place when every part has written.
 
+With ``all_quad`` the write is the all-quad steps of petersen/partition/all_quad.hpp, as out of
+core runs them: each part's output faces and their parity on its worker (``part_parity``), the
+seam graph once (``split_seams``), each part's plan as a chain in part order, each given the cut
+midpoints of the parts before it (``plan_part_all_quad``), then the header with the exact counts,
+the input's vertex block, the added vertices' records (``blended_records``) and each part's quads
+(``part_all_quads``) at offsets the client computes.
+
 Only small arrays move between tasks (records, bands, the repair's partners); the parts'
 triangles and partners stay on their workers. Retries are Dask's: every task is submitted with
 ``retries``, and a task whose worker died is run again by the scheduler (from the file), as is
@@ -34,7 +41,7 @@ from __future__ import annotations
 import os
 import time
 from dataclasses import dataclass
-from typing import Any, Dict, List, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Optional, Sequence, Tuple, Union
 
 import numpy as np
 
@@ -42,133 +49,43 @@ from . import _degrees, _number, _petersen
 
 __all__ = ["PlyLayout", "read_layout", "quadrangulate"]
 
-_PLY_TYPES = {
-    "char": "i1", "int8": "i1", "uchar": "u1", "uint8": "u1", "short": "i2", "int16": "i2",
-    "ushort": "u2", "uint16": "u2", "int": "i4", "int32": "i4", "uint": "u4", "uint32": "u4",
-    "float": "f4", "float32": "f4", "double": "f8", "float64": "f8",
-}
-_HEADER_LIMIT = 1 << 16
-
-
 @dataclass(frozen=True)
 class PlyLayout:
-    """Where a binary little-endian triangle PLY keeps its vertices and faces: enough for any
-    worker to read a range of either without the header."""
+    """Where a binary little-endian triangle PLY keeps its vertices and faces, as the library's
+    PLY header reader (petersen/io/ply_stream.hpp) found them: what the client needs to split the
+    faces into parts and to copy the vertex block into the output."""
 
     path: str
     vertex_count: int
     face_count: int
     vertex_offset: int
-    vertex_dtype: Tuple[Tuple[str, str], ...]
     face_offset: int
-    face_dtype: Tuple[Tuple[Any, ...], ...]
     #: The vertex element's header lines, copied into the output's header.
     vertex_header: Tuple[str, ...]
 
-    @property
-    def face_stride(self) -> int:
-        return np.dtype(list(self.face_dtype)).itemsize
-
-
-def _header_lines(path: str) -> Tuple[List[str], int]:
-    with open(path, "rb") as f:
-        head = f.read(_HEADER_LIMIT)
-    end = head.find(b"end_header\n")
-    if not head.startswith(b"ply\n") or end < 0:
-        raise ValueError(f"{path}: not a PLY file (no 'ply' line, or no 'end_header' in the "
-                         f"first {_HEADER_LIMIT} bytes)")
-    return head[:end].decode("ascii", "replace").split("\n")[:-1], end + len("end_header\n")
-
-
-def _ply_type(path: str, line: int, name: str) -> str:
-    if name not in _PLY_TYPES:
-        raise ValueError(f"{path}: header line {line}: unknown PLY type '{name}'")
-    return "<" + _PLY_TYPES[name]
-
 
 def read_layout(path: str) -> PlyLayout:
-    """Reads the header of a binary little-endian PLY whose faces are triangles. Raises
-    ValueError naming the file and header line for any other file: ascii or big-endian, an
-    element before the vertices or between vertices and faces, a face property list that is not
-    vertex_indices, a list in the vertex element, x, y or z missing. O(header)."""
-    lines, data_offset = _header_lines(path)
-    elements: List[Tuple[str, int, List[Tuple[Any, ...]], List[str], int]] = []
-    for number, line in enumerate(lines, start=1):
-        words = line.split()
-        if not words or words[0] in ("ply", "comment", "obj_info"):
-            continue
-        if words[0] == "format":
-            if words[1:2] != ["binary_little_endian"]:
-                raise ValueError(f"{path}: header line {number}: format {' '.join(words[1:])}; "
-                                 "the distributed pipeline reads binary_little_endian PLY")
-        elif words[0] == "element" and len(words) == 3:
-            elements.append((words[1], int(words[2]), [], [line], number))
-        elif words[0] == "property" and elements:
-            elements[-1][3].append(line)
-            if words[1] == "list" and len(words) == 5:
-                fields = (words[4], _ply_type(path, number, words[2]),
-                          _ply_type(path, number, words[3]))
-            elif len(words) == 3:
-                fields = (words[2], _ply_type(path, number, words[1]))
-            else:
-                raise ValueError(f"{path}: header line {number}: malformed property")
-            elements[-1][2].append(fields)
-        else:
-            raise ValueError(f"{path}: header line {number}: unexpected '{line}'")
-    names = [e[0] for e in elements]
-    if names[:2] != ["vertex", "face"]:
-        raise ValueError(f"{path}: elements {names}: the distributed pipeline reads a vertex "
-                         "element followed by a face element")
-    (_, n, vprops, vlines, vline), (_, m, fprops, _, fline) = elements[:2]
-    if any(len(p) == 3 for p in vprops) or not {"x", "y", "z"} <= {p[0] for p in vprops}:
-        raise ValueError(f"{path}: header line {vline}: vertex element needs x, y, z and no list")
-    lists = [p for p in fprops if len(p) == 3]
-    if len(lists) != 1 or lists[0][0] not in ("vertex_indices", "vertex_index"):
-        raise ValueError(f"{path}: header line {fline}: face element needs one list, "
-                         "vertex_indices")
-    if n >= 2**32:
-        raise ValueError(f"{path}: {n} vertices; at most 2^32 - 1")
-    face_dtype = tuple(
-        (("count", p[1]), ("corners", p[2], (3,))) if len(p) == 3 else ((p[0], p[1]),)
-        for p in fprops)
-    layout = PlyLayout(
-        path=str(path), vertex_count=n, face_count=m, vertex_offset=data_offset,
-        vertex_dtype=tuple((p[0], p[1]) for p in vprops),
-        face_offset=data_offset + n * np.dtype(list((p[0], p[1]) for p in vprops)).itemsize,
-        face_dtype=tuple(field for group in face_dtype for field in group),
-        vertex_header=tuple(vlines))
-    end = layout.face_offset + m * layout.face_stride
-    if os.path.getsize(path) < end:
-        raise ValueError(f"{path}: {os.path.getsize(path)} bytes, shorter than the {end} its "
-                         "header needs for triangles (a face of another arity?)")
-    return layout
+    """Reads the header of a binary little-endian PLY whose faces are triangles (a vertex element
+    of scalar properties with x, y and z, then a face element of one list with 32-bit indices).
+    Raises ValueError naming the file and header line for any other file, and for a file shorter
+    than its header says. O(header)."""
+    layout = _petersen.ply_triangle_layout(str(path))
+    return PlyLayout(path=str(path), vertex_count=layout["vertex_count"],
+                     face_count=layout["face_count"], vertex_offset=layout["vertex_offset"],
+                     face_offset=layout["face_offset"],
+                     vertex_header=tuple(layout["vertex_declaration"].splitlines()))
 
 
 def _read_faces(layout: PlyLayout, lo: int, hi: int) -> np.ndarray:
     """Faces lo..hi-1 as an (hi - lo, 3) int64 array of vertex ids; ValueError naming the face for
     one that is not a triangle or has a vertex out of range."""
-    dtype = np.dtype(list(layout.face_dtype))
-    rows = np.memmap(layout.path, dtype=dtype, mode="r",
-                     offset=layout.face_offset + lo * dtype.itemsize, shape=(hi - lo,))
-    bad = np.flatnonzero(rows["count"] != 3)
-    if bad.size:
-        raise ValueError(f"{layout.path}: face {lo + bad[0]}: {rows['count'][bad[0]]} corners; "
-                         "the distributed pipeline reads triangle meshes")
-    F = rows["corners"].astype(np.int64)
-    out = np.flatnonzero(((F < 0) | (F >= layout.vertex_count)).any(axis=1))
-    if out.size:
-        raise ValueError(f"{layout.path}: face {lo + out[0]}: a vertex index out of range "
-                         f"({layout.vertex_count} vertices): {F[out[0]].tolist()}")
-    return F
+    return _petersen.read_triangles(layout.path, lo, hi)
 
 
 def _corner_positions(layout: PlyLayout, F: np.ndarray) -> np.ndarray:
-    """The positions of the corners of faces F, (m, 3, 3) float64: the vertex block mapped and
-    only the rows F names read."""
-    vertices = np.memmap(layout.path, dtype=np.dtype(list(layout.vertex_dtype)), mode="r",
-                         offset=layout.vertex_offset, shape=(layout.vertex_count,))
-    rows = vertices[F.ravel()]
-    return np.stack([rows["x"], rows["y"], rows["z"]], axis=1).astype(np.float64).reshape(-1, 3, 3)
+    """The positions of the corners of faces F, (m, 3, 3) float64, as the in-memory reader gives
+    them: only the vertex records F names are read."""
+    return _petersen.read_corner_positions(layout.path, F)
 
 
 @dataclass
@@ -344,7 +261,11 @@ def _write_part(part: _Part, plan: Dict[str, np.ndarray], out_tmp: str, offset: 
         pieces += [_face_bytes(quads[done:quads_before]), _face_bytes(part.F[left:left + 1])]
         done = quads_before
     pieces.append(_face_bytes(quads[done:]))
-    data = b"".join(pieces)
+    return _pwrite(b"".join(pieces), out_tmp, offset)
+
+
+def _pwrite(data, out_tmp: str, offset: int) -> int:
+    """`data` written into `out_tmp` at `offset` (idempotent). Returns the bytes written."""
     fd = os.open(out_tmp, os.O_WRONLY)
     try:
         os.pwrite(fd, data, offset)
@@ -353,7 +274,196 @@ def _write_part(part: _Part, plan: Dict[str, np.ndarray], out_tmp: str, offset: 
     return len(data)
 
 
-_OPTIONS = ("augment", "objective", "triangle_cost", "max_corner_deviation", "sharp_angle")
+def _mixed_face_bytes(corners: np.ndarray, arity: np.ndarray) -> bytes:
+    """Faces of 3 or 4 corners (flat corners, one arity per face) as PLY records. O(corners)."""
+    if (arity == 4).all():
+        return _face_bytes(corners.reshape(-1, 4))
+    size = 1 + 4 * arity.astype(np.int64)
+    start = np.cumsum(size) - size
+    out = np.empty(int(size.sum()), np.uint8)
+    out[start] = arity
+    face_of = np.repeat(np.arange(len(arity)), arity)
+    first_corner = np.cumsum(arity.astype(np.int64)) - arity
+    at = start[face_of] + 1 + 4 * (np.arange(len(corners)) - first_corner[face_of])
+    out[at[:, None] + np.arange(4)] = corners.astype("<u4").view(np.uint8).reshape(-1, 4)
+    return out.tobytes()
+
+
+# All quads part by part (all_quad.hpp), after the pairing, on the parts' workers.
+
+def _all_quad_faces(part: _Part, plan: Dict[str, np.ndarray]) -> Dict[str, np.ndarray]:
+    """The part's output faces as all_quad.hpp's PartFaces: each quad at its first triangle and
+    each triangle left at its place, in face order (as the plain write stage writes them), as
+    flat corners and arities. Kept on the worker for the all-quad stages. O(part)."""
+    heads, quads, lefts = plan["heads"], plan["quads"], plan["lefts"]
+    rows = np.full((len(heads) + len(lefts), 4), -1, np.int64)
+    rows[:len(heads)] = quads
+    rows[len(heads):, :3] = part.F[lefts]
+    rows = rows[np.argsort(np.concatenate([heads, lefts]), kind="stable")]
+    return {"corners": rows[rows >= 0], "arity": np.where(rows[:, 3] >= 0, 4, 3).astype(np.uint8)}
+
+
+def _parity(faces: Dict[str, np.ndarray]) -> Dict[str, Any]:
+    """All-quad step 1 on a part's worker (part_parity): its open edges and components' parity."""
+    return _petersen.part_parity(faces["corners"], faces["arity"])
+
+
+def _split_seams(parities: Sequence[Dict[str, Any]]) -> Dict[str, Any]:
+    """All-quad step 2, once (split_seams): the seam graph of every part's open edges."""
+    seams = _petersen.split_seams([p["border"] for p in parities],
+                                  [p["component_odd"] for p in parities])
+    seams["kept_faces"] = sum(p["kept_faces"] for p in parities)
+    return seams
+
+
+def _seams_figures(seams: Dict[str, Any]) -> Dict[str, int]:
+    return {k: seams[k] for k in ("cut_edges", "boundary_edges", "whole_edges", "kept_faces")}
+
+
+_NO_EDGES = np.zeros((0, 2), np.int64)
+
+
+def _plan_all_quad(path: str, faces: Dict[str, np.ndarray], index: int, seams: Dict[str, Any],
+                   earlier: Optional[np.ndarray], objective: str,
+                   keep_polygons: bool) -> Dict[str, Any]:
+    """All-quad step 3 for part `index` (plan_part_all_quad), given the cut midpoints the parts
+    before it chose (ascending): its T-join and cut. Adds `cut_so_far`, the cut midpoints of the
+    parts up to this one, ascending: what the next part's plan needs."""
+    earlier = _NO_EDGES if earlier is None else earlier
+    plan = _petersen.plan_part_all_quad(path, faces["corners"], faces["arity"], index,
+                                        seams["edges"], seams["node_start"], seams["node_odd"],
+                                        earlier, objective, keep_polygons, 1)
+    both = np.concatenate([earlier, plan["cut_midpoints"]])
+    plan["cut_so_far"] = both[np.lexsort((both[:, 1], both[:, 0]))]
+    return plan
+
+
+def _cut_so_far(plan: Dict[str, Any]) -> np.ndarray:
+    return plan["cut_so_far"]
+
+
+def _merge_plans(plans: Sequence[Dict[str, Any]]) -> Dict[str, Any]:
+    """Every part's midpoints, ascending and once each (the output's vertices after the input's),
+    and the figures: per part its faces, centres and certificate; the split pieces' quality."""
+    edges = np.concatenate([p["midpoints"] for p in plans])
+    midpoints = np.unique(edges, axis=0) if len(edges) else _NO_EDGES
+    median, p95 = _petersen.split_quality_figures(
+        np.concatenate([p["split_quality"] for p in plans]))
+    return {"midpoints": midpoints, "figures": {
+        "split_edges": len(midpoints), "faces": [int(p["faces"]) for p in plans],
+        "centres": [len(p["centre_corners"]) for p in plans],
+        "certified": [bool(p["certified"]) for p in plans],
+        "split_quads": int(sum(len(p["split_quality"]) for p in plans)),
+        "split_quality_median": median, "split_quality_p95": p95}}
+
+
+def _merged_figures(merged: Dict[str, Any]) -> Dict[str, Any]:
+    return merged["figures"]
+
+
+def _write_added(path: str, merged: Dict[str, Any], plans: Sequence[Dict[str, Any]],
+                 out_tmp: str, offset: int) -> int:
+    """The records of the added vertices, blended from the input's (blended_records: each
+    midpoint's two ends, then each part's centres in part order), written at `offset`."""
+    centres = np.concatenate([p["centre_corners"] for p in plans]).reshape(-1, 4)
+    return _pwrite(_petersen.blended_records(path, merged["midpoints"], centres), out_tmp, offset)
+
+
+def _all_quads(path: str, faces: Dict[str, np.ndarray], merged: Dict[str, Any],
+               vertex_count: int, first_centre: int, objective: str,
+               keep_polygons: bool) -> Dict[str, Any]:
+    """All-quad step 4 on a part's worker (part_all_quads): its faces cut into quads over the
+    output's vertex ids, as PLY face records kept for the write, with their counts."""
+    corners, arity = _petersen.part_all_quads(path, faces["corners"], faces["arity"],
+                                              merged["midpoints"], vertex_count, first_centre,
+                                              objective, keep_polygons, 1)
+    return {"records": _mixed_face_bytes(corners, arity), "faces": len(arity),
+            "triangles": int((arity == 3).sum())}
+
+
+def _records_counts(records: Dict[str, Any]) -> Tuple[int, int, int]:
+    return len(records["records"]), records["faces"], records["triangles"]
+
+
+def _write_records(records: Dict[str, Any], out_tmp: str, offset: int) -> int:
+    return _pwrite(records["records"], out_tmp, offset)
+
+
+def _write_all_quad(client, layout, parts, bounds, repair, out_path, retries, objective,
+                    keep_polygons) -> Tuple[int, int, Dict[str, Any]]:
+    """The all-quad stages and the write: each part's output faces and parity on its worker,
+    the seams once, the plans as a chain in part order (each given the cut midpoints of the parts
+    before it), then the header with the exact counts, the input's vertex block, the added
+    vertices' records and each part's quads at offsets the client computes. Returns the pairing's
+    quads and triangles left and the all-quad figures."""
+    plans, counts = _plans(client, parts, bounds, repair, retries)
+    faces = [_submit(client, _all_quad_faces, p, plan, retries=retries)
+             for p, plan in zip(parts, plans)]
+    seams = _submit(client, _split_seams,
+                    [_submit(client, _parity, f, retries=retries) for f in faces],
+                    retries=retries)
+    split, earlier = [], None
+    for index, f in enumerate(faces):
+        split.append(_submit(client, _plan_all_quad, layout.path, f, index, seams, earlier,
+                             objective, keep_polygons, retries=retries))
+        earlier = _submit(client, _cut_so_far, split[-1], retries=retries)
+    merged = _submit(client, _merge_plans, split, retries=retries)
+    figures = _submit(client, _merged_figures, merged, retries=retries).result()
+    figures.update(_submit(client, _seams_figures, seams, retries=retries).result())
+    added = figures["split_edges"] + sum(figures["centres"])
+    vertices = layout.vertex_count + added
+    if vertices >= 0xFFFFFFFF:
+        raise ValueError(f"all_quad: {vertices} vertices; vertex ids are 32-bit")
+    first_centre = np.cumsum([0] + figures["centres"])[:-1] + layout.vertex_count + \
+        figures["split_edges"]
+    records = [_submit(client, _all_quads, layout.path, f, merged, layout.vertex_count, int(c),
+                       objective, keep_polygons, retries=retries)
+               for f, c in zip(faces, first_centre)]
+    sizes = client.gather([_submit(client, _records_counts, r, retries=retries)
+                           for r in records])
+    faces_out = sum(s[1] for s in sizes)
+    if faces_out != sum(figures["faces"]):
+        raise RuntimeError(f"verification failed: the parts wrote {faces_out} faces, their plans "
+                           f"counted {sum(figures['faces'])}")
+    record_bytes = (layout.face_offset - layout.vertex_offset) // max(1, layout.vertex_count)
+    tmp = f"{out_path}.tmp-{os.getpid()}"
+    try:
+        start = _start_output(layout, tmp, vertices, faces_out,
+                              added * record_bytes + sum(s[0] for s in sizes))
+        offsets = np.cumsum([0] + [s[0] for s in sizes])[:-1] + start + added * record_bytes
+        written = [_submit(client, _write_added, layout.path, merged, split, tmp, start,
+                           retries=retries)]
+        written += [_submit(client, _write_records, r, tmp, int(o), retries=retries)
+                    for r, o in zip(records, offsets)]
+        if client.gather(written)[0] != added * record_bytes:
+            raise RuntimeError("verification failed: the added vertices' records are not "
+                               f"{added} of {record_bytes} bytes")
+        os.replace(tmp, out_path)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
+    figures.update(faces_out=faces_out, added_vertices=added,
+                   kept_triangles=sum(s[2] for s in sizes))
+    return sum(c[0] for c in counts), sum(c[1] for c in counts), figures
+
+
+def _all_quad_stats(stats: Dict[str, Any], figures: Dict[str, Any], seconds: float) -> None:
+    """The all-quad keys of `petersen quad --memory-limit --all-quad --stats-json`:
+    ``all_quad_certified`` is False as there, since each part's T-join is minimal for its own
+    parity only (``all_quad_parts_certified``); the whole mesh's minimum is not proved."""
+    stats.update({
+        "added_vertices": figures["added_vertices"], "split_edges": figures["split_edges"],
+        "degenerate_faces": figures["kept_faces"], "centre_vertices": sum(figures["centres"]),
+        "all_quad_certified": False, "all_quad_parts_certified": all(figures["certified"]),
+        "all_quad_parts": len(figures["faces"]), "split_quads": figures["split_quads"],
+        "split_quality_median": figures["split_quality_median"],
+        "split_quality_p95": figures["split_quality_p95"], "faces_out": figures["faces_out"],
+        "seam_cut_edges": figures["cut_edges"], "all_quad_seconds": seconds,
+    })
+
+
+_OPTIONS = ("augment", "objective", "triangle_cost", "max_corner_deviation", "sharp_angle",
+            "all_quad", "keep_polygons")
 
 
 def _costs_of(options: Dict[str, Any]) -> Dict[str, Any]:
@@ -362,6 +472,10 @@ def _costs_of(options: Dict[str, Any]) -> Dict[str, Any]:
     objective = options.get("objective", "quads")
     if objective not in ("quads", "quality", "pairs"):
         raise ValueError(f"unknown objective '{objective}': quads, quality or pairs")
+    if options.get("all_quad") and "triangle_cost" in options:
+        raise TypeError("petersen.distributed.quadrangulate: option 'triangle_cost' does not go "
+                        "with all_quad: every triangle left is split into quads, so the parts "
+                        "pair the cheapest maximum, which prices no triangle")
     refused = {
         "triangle_cost": objective != "quads",
         "max_corner_deviation": objective == "pairs", "sharp_angle": objective == "pairs",
@@ -468,30 +582,47 @@ def _cost_stats(costs, layout, bounds, cut, seamed, quads, left) -> Dict[str, An
     return stats
 
 
-def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> Tuple[int, int]:
-    """Stage 4: the header and vertex block by the client, each part's faces by its worker."""
+def _plans(client, parts, bounds, repair, retries):
+    """Each part's output as _plan makes it (kept on its worker) and its (quads, triangles)."""
     slices = [_submit(client, _repair_for, repair, int(bounds[i]), int(bounds[i + 1]),
                       retries=retries) for i in range(len(parts))]
     plans = [_submit(client, _plan, p, r, retries=retries) for p, r in zip(parts, slices)]
     counts = client.gather([_submit(client, _plan_counts, p, retries=retries) for p in plans])
-    quads = sum(c[0] for c in counts)
-    left = sum(c[1] for c in counts)
+    return plans, counts
+
+
+def _start_output(layout: PlyLayout, tmp: str, vertex_count: int, face_count: int,
+                  size_after_vertices: int) -> int:
+    """The header (the input's vertex element with `vertex_count` vertices, then `face_count`
+    faces) and the input's vertex block copied into `tmp`, sized for `size_after_vertices` more
+    bytes. Returns where the input's vertex block ends in `tmp`."""
+    lines = list(layout.vertex_header)
+    lines[0] = f"element vertex {vertex_count}"
     header = ("ply\nformat binary_little_endian 1.0\ncomment written by petersen.distributed\n"
-              + "\n".join(layout.vertex_header) + f"\nelement face {quads + left}\n"
+              + "\n".join(lines) + f"\nelement face {face_count}\n"
               "property list uchar uint vertex_indices\nend_header\n").encode("ascii")
     vertex_bytes = layout.face_offset - layout.vertex_offset
+    with open(tmp, "wb") as out, open(layout.path, "rb") as src:
+        out.write(header)
+        out.flush()
+        src.seek(layout.vertex_offset)
+        copied = 0
+        while copied < vertex_bytes:
+            copied += os.copy_file_range(src.fileno(), out.fileno(), vertex_bytes - copied)
+        out.truncate(len(header) + vertex_bytes + size_after_vertices)
+    return len(header) + vertex_bytes
+
+
+def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> Tuple[int, int]:
+    """Stage 4: the header and vertex block by the client, each part's faces by its worker."""
+    plans, counts = _plans(client, parts, bounds, repair, retries)
+    quads = sum(c[0] for c in counts)
+    left = sum(c[1] for c in counts)
     tmp = f"{out_path}.tmp-{os.getpid()}"
     try:
-        with open(tmp, "wb") as out, open(layout.path, "rb") as src:
-            out.write(header)
-            out.flush()
-            src.seek(layout.vertex_offset)
-            copied = 0
-            while copied < vertex_bytes:
-                copied += os.copy_file_range(src.fileno(), out.fileno(), vertex_bytes - copied)
-            out.truncate(len(header) + vertex_bytes + 17 * quads + 13 * left)
-        offsets = np.cumsum([0] + [17 * q + 13 * t for q, t in counts])[:-1]
-        offsets += len(header) + vertex_bytes
+        start = _start_output(layout, tmp, layout.vertex_count, quads + left,
+                              17 * quads + 13 * left)
+        offsets = np.cumsum([0] + [17 * q + 13 * t for q, t in counts])[:-1] + start
         client.gather([_submit(client, _write_part, p, plan, tmp, int(o), retries=retries)
                        for p, plan, o in zip(parts, plans, offsets)])
         os.replace(tmp, out_path)
@@ -531,7 +662,11 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     certified minimum-cost matching, then the triangles left beside the cuts across them;
     "quality": each part's cheapest maximum pairing, its cost not certified for the whole mesh;
     "pairs": the maximum, fastest, with the band repair), ``triangle_cost`` (quads),
-    ``max_corner_deviation`` and ``sharp_angle`` (quads and quality), ``augment`` (pairs).
+    ``max_corner_deviation`` and ``sharp_angle`` (quads and quality), ``augment`` (pairs),
+    ``all_quad`` (every face a quad by midpoints and centres added after the input's vertices,
+    part by part as ``petersen quad --memory-limit --all-quad``; the pairing the cheapest
+    maximum, so not with ``triangle_cost``) and ``keep_polygons`` (taken; the input is all
+    triangles).
 
     With objective quads the statistics hold ``objective_total``, a ``lower_bound`` on the whole
     mesh's optimum (the parts' certified duals stitched across the cuts), ``gap`` and
@@ -540,7 +675,10 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``faces_in``,
     ``vertices``, ``triangles``, ``pairs``, ``triangles_left``, ``maximum_certified``,
     ``total_seconds``, ...) and the distributed figures (``parts``, ``part_cut_edges``,
-    ``unpaired_after_parts``, ``repair_*``, each stage's seconds). ``maximum_certified`` is True
+    ``unpaired_after_parts``, ``repair_*``, each stage's seconds); with ``all_quad`` the keys of
+    the out-of-core ``--stats-json`` (``added_vertices``, ``split_edges``, ``centre_vertices``,
+    ``faces_out``, ``all_quad_parts_certified``, ``all_quad_certified`` False: no whole-mesh
+    minimum is proved part by part). ``maximum_certified`` is True
     when every triangle is paired (checked); a mesh with boundary whose pairing leaves triangles
     gets no whole-mesh Tutte-Berge witness here (``petersen.quadrangulate`` gives one). Raises
     ValueError naming the file and header line, or face, for input it cannot read, TypeError for
@@ -550,34 +688,51 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         if key not in _OPTIONS:
             raise TypeError(f"petersen.distributed.quadrangulate: option '{key}' is not one the "
                             f"parts take ({', '.join(_OPTIONS)})")
-    costs = _costs_of(options)
+    all_quad = bool(options.pop("all_quad", False))
+    keep_polygons = bool(options.pop("keep_polygons", False))  # the input is all triangles
+    costs = _costs_of(dict(options, all_quad=all_quad))
+    if all_quad and costs["objective"] == "quads":
+        # Every triangle left is split into quads anyway: the cheapest maximum pairing, as
+        # petersen.quadrangulate and `petersen quad --memory-limit` pair with all_quad.
+        costs = dict(costs, objective="quality")
     clock = time.perf_counter()
     layout = read_layout(in_path)
     if layout.face_count == 0:
         raise ValueError(f"{in_path}: no faces")
     bounds = _part_bounds(layout.face_count, parts or len(client.scheduler_info()["workers"]))
-    if costs["objective"] != "pairs":
-        part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, band_radius,
-                                                         costs, retries)
+
+    def write(part_futures, repair):
+        """The output (plain, or all quads); the pairing's quads and triangles left, checked."""
         lap = time.perf_counter()
-        quads, left = _write_output(client, layout, part_futures, bounds, seam, out_path, retries)
+        if all_quad:
+            quads, left, figures = _write_all_quad(client, layout, part_futures, bounds, repair,
+                                                   out_path, retries, costs["objective"],
+                                                   keep_polygons)
+        else:
+            figures = None
+            quads, left = _write_output(client, layout, part_futures, bounds, repair, out_path,
+                                        retries)
         if quads * 2 + left != layout.face_count:
             raise RuntimeError("verification failed: the parts' faces do not add up to the "
                                "input's")
+        return quads, left, figures, time.perf_counter() - lap
+
+    if costs["objective"] != "pairs":
+        part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, band_radius,
+                                                         costs, retries)
+        quads, left, figures, seconds = write(part_futures, seam)
         stats = _cost_stats(costs, layout, bounds, cut, seamed, quads, left)
-        stats.update(write_seconds=time.perf_counter() - lap,
-                     total_seconds=time.perf_counter() - clock)
+        if all_quad:
+            stats["objective"] = options.get("objective", "quads")
+            _all_quad_stats(stats, figures, seconds)
+        stats.update(write_seconds=seconds, total_seconds=time.perf_counter() - clock)
         return stats
     part_futures, cut, repaired, repair = _pair_and_repair(
         client, layout, bounds, options.get("augment", "local"), band_radius, first_radius,
         retries)
-    lap = time.perf_counter()
-    quads, left = _write_output(client, layout, part_futures, bounds, repair, out_path, retries)
-    write_seconds = time.perf_counter() - lap
-    if quads * 2 + left != layout.face_count:
-        raise RuntimeError("verification failed: the parts' faces do not add up to the input's")
+    quads, left, figures, write_seconds = write(part_futures, repair)
     per_part = cut["figures"]
-    return {
+    stats = {
         "objective": "pairs", "algorithm": "auto", "augment": options.get("augment", "local"),
         "vertices": layout.vertex_count, "faces_in": layout.face_count,
         "triangles": layout.face_count, "polygons_kept": 0, "maximum_certified": left == 0,
@@ -600,5 +755,9 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         "repair_maximum_in_band_certified": repaired["maximum_in_band_certified"],
         "repair_matching_seconds": repaired["seconds"],
         "parts_seconds": repaired["parts_seconds"], "repair_seconds": repaired["repair_seconds"],
-        "write_seconds": write_seconds, "total_seconds": time.perf_counter() - clock,
+        "write_seconds": write_seconds,
     }
+    if all_quad:
+        _all_quad_stats(stats, figures, write_seconds)
+    stats["total_seconds"] = time.perf_counter() - clock
+    return stats

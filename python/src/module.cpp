@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "all_quad.hpp"
 #include "arrays.hpp"
 #include "attributes.hpp"
 #include "graph_functions.hpp"
@@ -27,6 +28,7 @@
 #include "petersen/mesh/duplicate_faces.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stats_fields.hpp"
+#include "ply_stream.hpp"
 #include "render.hpp"
 
 namespace petersen::python {
@@ -358,5 +360,7 @@ PYBIND11_MODULE(_petersen, m) {
   m.attr("CROSSABLE") = crossable_names();
   add_render(m);
   add_partition(m);
+  add_ply_stream(m);
+  add_all_quad(m);
   add_graph_functions(m);
 }

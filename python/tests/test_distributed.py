@@ -1,9 +1,12 @@
 """petersen.distributed on a real Dask cluster (three worker processes): a closed mesh of 10^6
 triangles, its output checked here with numpy alone, and a worker killed while the parts run."""
 
+import json
 import logging
 import os
+import pathlib
 import signal
+import subprocess
 import threading
 import time
 
@@ -272,8 +275,11 @@ def test_bad_input_is_named(client, tmp_path):
     petersen.write_mesh(str(text), np.eye(3), np.array([[0, 1, 2]]))
     with pytest.raises(ValueError, match="not a PLY"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client)
-    with pytest.raises(TypeError, match="all_quad.*augment, objective"):
-        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, all_quad=True)
+    with pytest.raises(TypeError, match="flow_weight.*augment, objective"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, flow_weight=2)
+    with pytest.raises(TypeError, match="triangle_cost.*all_quad"):
+        pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, all_quad=True,
+                         triangle_cost=30)
     with pytest.raises(TypeError, match="sharp_angle.*objective pairs"):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, objective="pairs",
                          sharp_angle=30)
@@ -281,6 +287,34 @@ def test_bad_input_is_named(client, tmp_path):
         pd.quadrangulate(str(text), str(tmp_path / "out.ply"), client, objective="quality",
                          triangle_cost=30)
     assert not (tmp_path / "out.ply").exists()
+
+
+def test_the_layout_is_the_library_readers_and_a_face_property_is_refused(tmp_path):
+    # The header is read by the library's PLY reader (as `petersen quad --memory-limit` reads it):
+    # the offsets frame the vertex block exactly, and the faces and positions read back are the
+    # ones written.
+    V = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0.5]], np.float64)
+    F = np.array([[0, 1, 2], [2, 1, 3]])
+    path = tmp_path / "two.ply"
+    petersen.write_mesh(str(path), V, F)
+    layout = pd.read_layout(str(path))
+    assert (layout.vertex_count, layout.face_count) == (4, 2)
+    data = path.read_bytes()
+    assert data[:layout.vertex_offset].endswith(b"end_header\n")
+    assert layout.face_offset - layout.vertex_offset == 4 * 3 * 8  # x, y, z as double
+    assert len(data) == layout.face_offset + 2 * 13
+    assert layout.vertex_header[0] == "element vertex 4"
+    assert pd._read_faces(layout, 1, 2).tolist() == [[2, 1, 3]]
+    assert np.array_equal(pd._corner_positions(layout, F), V[F])
+    # A face property the output could not carry is refused, naming it, not read past.
+    header = (b"ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+              b"property float y\nproperty float z\nelement face 1\n"
+              b"property list uchar int vertex_indices\nproperty uchar quality\nend_header\n")
+    body = np.eye(3, dtype="<f4").tobytes() + bytes([3]) + np.arange(3, dtype="<i4").tobytes()
+    with_property = tmp_path / "quality.ply"
+    with_property.write_bytes(header + body + bytes([7]))
+    with pytest.raises(ValueError, match="quality.ply.*face properties besides"):
+        pd.read_layout(str(with_property))
 
 
 def test_the_write_stage_quads_follow_the_first_triangle_and_refuse_a_non_pair():
@@ -293,3 +327,100 @@ def test_the_write_stage_quads_follow_the_first_triangle_and_refuse_a_non_pair()
         petersen._petersen.quads_of_pairs(np.array([[0, 1, 2]]), np.array([[0, 1, 2]]))
     with pytest.raises(ValueError, match="as many rows"):
         petersen._petersen.quads_of_pairs(np.zeros((2, 3), np.int64), np.zeros((1, 3), np.int64))
+
+
+def out_of_core_bounds(face_count, part_triangles):
+    """The parts `petersen quad --memory-limit --part-triangles N` makes (out_of_core.cpp,
+    part_size): as many as N-sized parts need, of equal even size."""
+    parts = -(-face_count // part_triangles)
+    size = -(-face_count // parts)
+    size += size % 2
+    return list(range(0, face_count, size)) + [face_count]
+
+
+def after_header(path):
+    data = pathlib.Path(path).read_bytes()
+    return data[data.index(b"end_header\n") + len(b"end_header\n"):]
+
+
+ALL_QUAD_KEYS = ("added_vertices", "split_edges", "centre_vertices", "degenerate_faces",
+                 "all_quad_parts", "all_quad_parts_certified", "all_quad_certified",
+                 "split_quads", "faces_out", "pairs", "triangles_left", "parts")
+
+
+@pytest.fixture(scope="module")
+def jittered_torus(tmp_path_factory):
+    """A closed torus in scan order whose points are moved at random: with a corner threshold
+    many triangles stay unpaired, and all_quad splits them on a surface with no boundary."""
+    V, F = torus(120, 40)
+    V = V + np.random.default_rng(3).uniform(-0.05, 0.05, V.shape)
+    F = F.reshape(2, -1, 3).transpose(1, 0, 2).reshape(-1, 3)
+    path = tmp_path_factory.mktemp("dask") / "jittered_torus.ply"
+    petersen.write_mesh(str(path), V, F)
+    return path, V, F
+
+
+@pytest.mark.parametrize("options", [{}, {"max_corner_deviation": 30}], ids=["default", "mcd30"])
+@pytest.mark.parametrize("which", ["jittered_open_grid", "jittered_torus"])
+def test_all_quad_part_by_part_is_the_out_of_core_conversion(which, options, request, client,
+                                                             cli, tmp_path):
+    # The same parts as `petersen quad --memory-limit 1G --part-triangles N --all-quad`: the
+    # same pairing, the same seams and plans, hence the same file after the header (which names
+    # its writer); every face a quad, the input's vertices first and unmoved.
+    path, V, F = request.getfixturevalue(which)
+    n = len(F)
+    part_triangles = n // 4 + 2
+    bounds = out_of_core_bounds(n, part_triangles)
+    out = tmp_path / "dask.ply"
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=bounds,
+                        all_quad=True, keep_polygons=True, **options))
+    mesh = petersen.read_mesh(str(out))
+    source = petersen.read_mesh(str(path))
+    assert np.asarray(mesh.F).ndim == 2 and np.asarray(mesh.F).shape[1] == 4, "all quads"
+    assert len(mesh.F) == stats["faces_out"]
+    assert len(mesh.V) == len(V) + stats["added_vertices"]
+    assert np.array_equal(mesh.V[:len(V)], source.V), "the input's vertices first, unmoved"
+    assert stats["added_vertices"] == stats["split_edges"] + stats["centre_vertices"]
+    assert stats["all_quad_certified"] is False and stats["all_quad_parts_certified"] is True
+    assert stats["parts"] == stats["all_quad_parts"] == len(bounds) - 1 >= 4
+    assert stats["degenerate_faces"] == 0 and not list(tmp_path.glob("*.tmp-*"))
+
+    flags = [f"--max-corner-deviation={options['max_corner_deviation']}"] if options else []
+    reference, figures = tmp_path / "ooc.ply", tmp_path / "ooc.json"
+    subprocess.run([cli, "quad", str(path), str(reference), "--memory-limit", "1G",
+                    "--part-triangles", str(part_triangles), "--all-quad", "--stats-json",
+                    str(figures)] + flags, check=True, capture_output=True, timeout=RUN_TIMEOUT)
+    ooc = json.loads(figures.read_text())
+    assert after_header(out) == after_header(reference), "the out-of-core file, byte for byte"
+    for key in ALL_QUAD_KEYS:
+        assert stats[key] == ooc[key], key
+    for key in ("split_quality_median", "split_quality_p95"):
+        assert stats[key] == pytest.approx(ooc[key], abs=1e-3), key
+
+    memory = petersen.quadrangulate(V, F, all_quad=True, **options)
+    print(f"{which} {options}: added vertices dask {stats['added_vertices']}, out of core "
+          f"{ooc['added_vertices']}, in memory {memory.stats['added_vertices']} "
+          f"(minimum {memory.stats.get('added_vertices_minimum')})")
+
+    check = pathlib.Path(cli).resolve().parent.parent / "tests/partition/petersen_check_quads"
+    if check.is_file():
+        result = subprocess.run([str(check), str(path), str(out)], capture_output=True,
+                                text=True, timeout=RUN_TIMEOUT)
+        assert result.returncode == 0, result.stderr
+        assert "all quads" in result.stdout or "a quad mesh of the same surface" in result.stdout
+
+
+def test_all_quad_without_parts_of_the_out_of_core_sizes_is_all_quads(jittered_open_grid, client,
+                                                                       tmp_path):
+    # Parts of odd sizes (the pairing's repair pairs across the cuts), objective pairs: still
+    # every face a quad, and the counts the statistics give.
+    path, V, F = jittered_open_grid
+    m = len(F)
+    out = tmp_path / "quads.ply"
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, objective="pairs",
+                        parts=[0, m // 3 + 1, 2 * m // 3 - 1, m], all_quad=True))
+    mesh = petersen.read_mesh(str(out))
+    assert np.asarray(mesh.F).shape == (stats["faces_out"], 4)
+    assert len(mesh.V) == len(V) + stats["added_vertices"]
+    assert np.array_equal(mesh.V[:len(V)], petersen.read_mesh(str(path)).V)
+    assert stats["all_quad_parts"] == 3 and stats["all_quad_parts_certified"] is True

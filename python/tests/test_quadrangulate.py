@@ -189,3 +189,18 @@ def test_bad_input_raises_value_error_with_the_message():
         petersen.quadrangulate(V, F, augment="x")
     with pytest.raises(TypeError, match="integers"):
         petersen.quadrangulate(V, F.astype(float))
+
+
+def test_a_weight_the_run_would_not_read_is_refused():
+    V, F = open_grid(6, 5)
+    # Given as the defaults, the weights give the default's answer.
+    default = petersen.quadrangulate(V, F).stats
+    given = petersen.quadrangulate(V, F, triangle_cost=90.0, flow_weight=0.0).stats
+    assert (given["pairs"], given["objective_total"]) == (default["pairs"],
+                                                          default["objective_total"])
+    with pytest.raises(TypeError, match="triangle_cost.*objective 'quality' pairs the maximum"):
+        petersen.quadrangulate(V, F, objective="quality", triangle_cost=40)
+    with pytest.raises(TypeError, match="triangle_cost: with all_quad"):
+        petersen.quadrangulate(V, F, all_quad=True, triangle_cost=40)
+    with pytest.raises(TypeError, match="flow_weight.*not 'pairs'"):
+        petersen.quadrangulate(V, F, objective="pairs", flow_weight=1)

@@ -3,8 +3,10 @@
 // Reads both with the ordinary reader and checks, without the library's pairing code, that the
 // output has the source's positions and its faces are the source's triangles each used once
 // (pairing_problem) and, where every face is a quad, that they form a closed quad mesh of the
-// same surface (quad_mesh_problem). Prints the counts and exits 0, or prints the first problem
-// and exits 1. O(F log F) time; about 160 bytes per triangle (15.3 GB at 10^8).
+// same surface (quad_mesh_problem). An output with more vertices than the source is an
+// --all-quad output, checked by all_quad_file_problem (quad_mesh_check.hpp). Prints the counts and
+// exits 0, or prints the first problem and exits 1. O(F log F) time; about 160 bytes per triangle
+// (15.3 GB at 10^8).
 
 #include <cstdint>
 #include <cstdio>
@@ -22,6 +24,21 @@ int main(int argc, char** argv) {
   try {
     const petersen::PolygonMesh source = petersen::read_mesh(argv[1]);
     const petersen::PolygonMesh output = petersen::read_mesh(argv[2]);
+    if (output.positions.size() > source.positions.size()) {
+      // Vertices added: an --all-quad output (all_quad_file_problem).
+      petersen::testing::AllQuadFileCounts counts;
+      const std::string problem = petersen::testing::all_quad_file_problem(source, output, counts);
+      if (!problem.empty()) {
+        std::fprintf(stderr, "%s: %s\n", argv[2], problem.c_str());
+        return 1;
+      }
+      std::printf(
+          "%s: all quads: %llu quads (%llu triangles kept, repeating a vertex), "
+          "%llu midpoints and %llu centres added; a refinement of the source's surface\n",
+          argv[2], (unsigned long long)counts.quads, (unsigned long long)counts.kept_triangles,
+          (unsigned long long)counts.midpoints, (unsigned long long)counts.centres);
+      return 0;
+    }
     std::uint64_t quads = 0;
     std::string problem = output.positions == source.positions
                               ? petersen::testing::pairing_problem(source, output, quads)

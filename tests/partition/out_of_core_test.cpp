@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
@@ -18,6 +19,7 @@
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/io/read_mesh.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/quadrangulate/stages.hpp"
 #include "quad_mesh_check.hpp"
 #include "shared_meshes.hpp"
 
@@ -306,6 +308,80 @@ TEST(OutOfCore, ThresholdAndSharpAngleAreHonoured) {
     EXPECT_LE(sharp.lower_bound, memory.stats.objective_total + 1e-9);
     EXPECT_LE(memory.stats.objective_total, sharp.objective_total + 1e-9);
     EXPECT_NEAR(total_of(read_mesh(dir / "quads.ply"), 20.0), sharp.objective_total, 1e-3);
+  }
+}
+
+// --all-quad out of core (all_quad.hpp), on the open grids with holes and the closed torus in
+// many parts, by every objective (and the threshold): the output passes the independent check
+// of an all-quad file, and the stats count what the file holds.
+TEST(OutOfCore, AllQuadInManyPartsPassesTheIndependentCheck) {
+  const TempDir dir;
+  auto meshes = cost_meshes(dir);
+  meshes.emplace_back(dir / "lattice.ply",
+                      write_mesh_ply(punch_holes(open_grid(60, 50), 20, 3), dir / "lattice.ply"));
+  for (const auto& [path, mesh] : meshes) {
+    for (const Objective objective : {Objective::pairs, Objective::quads, Objective::quality}) {
+      for (const bool threshold : {false, true}) {
+        if (threshold && objective == Objective::pairs) continue;
+        PartCosts costs{.objective = objective};
+        if (threshold) costs.max_corner_deviation = 30;
+        const OutOfCoreStats stats = quad_out_of_core(
+            path, dir / "aq.ply", {.costs = costs, .part_triangles = 700, .all_quad = true});
+        const std::string what =
+            path + " " + std::string(to_string(objective)) + (threshold ? " threshold 30" : "");
+        EXPECT_GE(stats.all_quad_parts, 4u) << what;
+        EXPECT_TRUE(stats.all_quad_parts_certified) << what;
+        const PolygonMesh out = read_mesh(dir / "aq.ply");
+        EXPECT_EQ(out.face_count(), stats.faces_out) << what;
+        EXPECT_EQ(out.positions.size(), mesh.positions.size() + stats.added_vertices) << what;
+        EXPECT_EQ(stats.added_vertices, stats.split_edges + stats.centre_vertices) << what;
+        testing::AllQuadFileCounts counts;
+        EXPECT_EQ(testing::all_quad_file_problem(mesh, out, counts), "") << what;
+        EXPECT_EQ(counts.quads, out.face_count()) << what;
+        EXPECT_EQ(counts.midpoints, stats.split_edges) << what;
+        EXPECT_EQ(counts.centres, stats.centre_vertices) << what;
+        if (objective == Objective::pairs) {
+          EXPECT_EQ(stats.centre_vertices, 0u) << what;
+        }
+      }
+    }
+  }
+}
+
+// The midpoints part by part against the certified whole-mesh minimum for the same pairing: the
+// out-of-core pairing without --all-quad (quality under a 30 degree threshold, which leaves
+// triangles), read back, and the whole output's minimum T-join (plan_piece_splits on it as one
+// piece, the boundary its sink). Equal in one part; never below it in many (the excess is
+// printed).
+TEST(OutOfCore, AllQuadMidpointsAgainstTheInMemoryMinimum) {
+  const TempDir dir;
+  auto meshes = cost_meshes(dir);
+  meshes.emplace_back(dir / "lattice.ply",
+                      write_mesh_ply(punch_holes(open_grid(60, 50), 20, 3), dir / "lattice.ply"));
+  for (const auto& [path, mesh] : meshes) {
+    for (std::uint64_t part : {100000u, 1500u, 600u}) {
+      const OutOfCoreOptions options{
+          .costs = {.objective = Objective::quality, .max_corner_deviation = 30},
+          .part_triangles = part};
+      quad_out_of_core(path, dir / "paired.ply", options);
+      OutOfCoreOptions all_quad = options;
+      all_quad.all_quad = true;
+      const OutOfCoreStats stats = quad_out_of_core(path, dir / "aq.ply", all_quad);
+      const PieceSplits whole = plan_piece_splits(read_mesh(dir / "paired.ply"), {});
+      ASSERT_TRUE(whole.certified);
+      const std::uint64_t minimum = whole.edges.size();
+      std::printf(
+          "%s, %llu parts, %llu triangles left: %llu midpoints part by part, whole-mesh "
+          "minimum %llu\n",
+          path.c_str(), (unsigned long long)stats.all_quad_parts,
+          (unsigned long long)stats.triangles_left, (unsigned long long)stats.split_edges,
+          (unsigned long long)minimum);
+      EXPECT_GT(minimum, 0u) << path;
+      EXPECT_GE(stats.split_edges, minimum) << path;
+      if (stats.all_quad_parts == 1) {
+        EXPECT_EQ(stats.split_edges, minimum) << path;
+      }
+    }
   }
 }
 

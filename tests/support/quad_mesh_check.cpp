@@ -2,7 +2,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <map>
+#include <span>
 #include <vector>
 
 #include "petersen/dualize/quad_of.hpp"
@@ -159,6 +162,166 @@ std::string quad_mesh_problem(const PolygonMesh& source, const PolygonMesh& quad
   if (chi != source_chi) {
     return "Euler characteristic " + std::to_string(chi) + " differs from the source's " +
            std::to_string(source_chi);
+  }
+  return "";
+}
+
+namespace {
+
+using EdgeKey = std::pair<VertexId, VertexId>;
+
+EdgeKey key_of(VertexId a, VertexId b) {
+  return {std::min(a, b), std::max(a, b)};
+}
+
+// Per undirected edge: the faces on it, +1 for each running low to high, and the count.
+struct EdgeUse {
+  int faces = 0, forward = 0;
+};
+
+std::map<EdgeKey, EdgeUse> edge_uses(const PolygonMesh& mesh) {
+  std::map<EdgeKey, EdgeUse> uses;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const auto c = mesh.face(f);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const VertexId a = c[k], b = c[(k + 1) % c.size()];
+      if (a == b) continue;
+      EdgeUse& use = uses[key_of(a, b)];
+      ++use.faces;
+      use.forward += a < b;
+    }
+  }
+  return uses;
+}
+
+bool repeats(std::span<const VertexId> c) {
+  for (std::size_t i = 0; i < c.size(); ++i)
+    for (std::size_t j = i + 1; j < c.size(); ++j)
+      if (c[i] == c[j]) return true;
+  return false;
+}
+
+bool near(double a, double b) {
+  return std::abs(a - b) <= 1e-6 * std::max({1.0, std::abs(a), std::abs(b)});
+}
+
+std::int64_t euler(const PolygonMesh& mesh, std::size_t edges) {
+  std::vector<std::uint8_t> used(mesh.positions.size(), 0);
+  for (VertexId v : mesh.corners) used[v] = 1;
+  return std::int64_t(std::count(used.begin(), used.end(), 1)) - std::int64_t(edges) +
+         std::int64_t(mesh.face_count());
+}
+
+}  // namespace
+
+std::string all_quad_file_problem(const PolygonMesh& source, const PolygonMesh& output,
+                                  AllQuadFileCounts& counts) {
+  const std::size_t v0 = source.positions.size(), vn = output.positions.size();
+  if (vn < v0 ||
+      !std::equal(source.positions.begin(), source.positions.end(), output.positions.begin())) {
+    return "the output does not start with the source's positions";
+  }
+  for (FaceId f = 0; f < output.face_count(); ++f) {
+    const auto c = output.face(f);
+    for (VertexId v : c)
+      if (v >= vn) return "output face " + std::to_string(f) + " names a vertex out of range";
+    if (c.size() == 3 && repeats(c)) {
+      ++counts.kept_triangles;
+      continue;
+    }
+    if (c.size() != 4) return "output face " + std::to_string(f) + " is not a quad";
+    if (repeats(c)) return "output face " + std::to_string(f) + " repeats a vertex";
+    ++counts.quads;
+  }
+  const auto in = edge_uses(source);
+  const auto out = edge_uses(output);
+  bool source_oriented = true;
+  for (const auto& [e, use] : in) source_oriented &= use.faces != 2 || use.forward == 1;
+  std::vector<std::vector<VertexId>> neighbours(vn - v0);
+  std::vector<std::uint8_t> inner(vn - v0, 1);
+  for (const auto& [e, use] : out) {
+    if (use.faces > 2)
+      return "output edge " + std::to_string(e.first) + "-" + std::to_string(e.second) +
+             " is in more than two faces";
+    if (source_oriented && use.faces == 2 && use.forward != 1) {
+      return "output edge " + std::to_string(e.first) + "-" + std::to_string(e.second) +
+             " is run along in one direction by both of its faces";
+    }
+    for (const VertexId v : {e.first, e.second}) {
+      if (v < v0) continue;
+      neighbours[v - v0].push_back(v == e.first ? e.second : e.first);
+      if (use.faces != 2) inner[v - v0] = 0;
+    }
+  }
+  // Each added vertex: a midpoint of a source edge, or a centre.
+  std::map<EdgeKey, VertexId> midpoint_of;
+  for (std::size_t i = 0; i < vn - v0; ++i) {
+    const auto& p = output.positions[v0 + i];
+    bool found = false;
+    for (VertexId a : neighbours[i]) {
+      for (VertexId b : neighbours[i]) {
+        if (a >= b || a >= v0 || b >= v0 || in.count(key_of(a, b)) == 0) continue;
+        const auto& pa = output.positions[a];
+        const auto& pb = output.positions[b];
+        bool average = true;
+        for (int d = 0; d < 3; ++d) average &= near(p[d], (pa[d] + pb[d]) / 2);
+        if (!average || midpoint_of.count(key_of(a, b)) != 0) continue;
+        midpoint_of[key_of(a, b)] = VertexId(v0 + i);
+        found = true;
+        break;
+      }
+      if (found) break;
+    }
+    if (found) {
+      ++counts.midpoints;
+    } else if (inner[i] && neighbours[i].size() >= 3) {
+      ++counts.centres;
+    } else {
+      return "added vertex " + std::to_string(v0 + i) +
+             " is neither the midpoint of a source edge nor a centre";
+    }
+  }
+  // Each source edge: kept, split in its two halves, or removed where it had two faces.
+  std::size_t boundary_in = 0, boundary_expected = 0;
+  for (const auto& [e, use] : in) {
+    const bool kept = out.count(e) != 0;
+    const auto m = midpoint_of.find(e);
+    const bool split = m != midpoint_of.end();
+    if (kept && split) {
+      return "source edge " + std::to_string(e.first) + "-" + std::to_string(e.second) +
+             " is both kept and split";
+    }
+    if (split && (out.count(key_of(e.first, m->second)) == 0 ||
+                  out.count(key_of(m->second, e.second)) == 0)) {
+      return "split source edge " + std::to_string(e.first) + "-" + std::to_string(e.second) +
+             " lacks a half";
+    }
+    if (!kept && !split && use.faces != 2) {
+      return "source edge " + std::to_string(e.first) + "-" + std::to_string(e.second) + " of " +
+             std::to_string(use.faces) + " faces is gone";
+    }
+    if (use.faces == 1) {
+      ++boundary_in;
+      boundary_expected += split ? 2 : 1;
+      const int faces = kept ? out.at(e).faces
+                             : std::max(out.at(key_of(e.first, m->second)).faces,
+                                        out.at(key_of(m->second, e.second)).faces);
+      if (faces != 1) {
+        return "boundary edge " + std::to_string(e.first) + "-" + std::to_string(e.second) +
+               " is not on the output's boundary";
+      }
+    }
+  }
+  std::size_t boundary_out = 0;
+  for (const auto& [e, use] : out) boundary_out += use.faces == 1;
+  if (boundary_out != boundary_expected) {
+    return "the output has " + std::to_string(boundary_out) + " boundary edges, " +
+           std::to_string(boundary_expected) + " expected from the source's " +
+           std::to_string(boundary_in);
+  }
+  if (euler(source, in.size()) != euler(output, out.size())) {
+    return "the Euler characteristic changed from " + std::to_string(euler(source, in.size())) +
+           " to " + std::to_string(euler(output, out.size()));
   }
   return "";
 }

@@ -33,4 +33,22 @@ std::string pairing_problem(const PolygonMesh& source, const PolygonMesh& output
 /// Euler characteristic V - E + F. O(F log F).
 std::string quad_mesh_problem(const PolygonMesh& source, const PolygonMesh& quads);
 
+/// What all_quad_file_problem counted.
+struct AllQuadFileCounts {
+  std::uint64_t quads = 0, kept_triangles = 0, midpoints = 0, centres = 0;
+};
+
+/// The first way `output` fails to be an all-quad refinement of the triangle mesh `source` as
+/// --all-quad makes it from the files alone (no sources, no library code but the mesh type), or
+/// "": the source's positions first and unmoved; every face a quad of four distinct in-range
+/// corners (but a source triangle that repeats a vertex, kept); every added vertex either the
+/// midpoint of a source edge (its position the average of the ends' within float rounding, an
+/// output edge to each end, that source edge gone) or a centre (an inner vertex: every edge at it
+/// in two faces); every edge in one or two faces, two running along it in opposite directions
+/// where the source's do; every source edge kept, split in two halves, or removed (then it had
+/// two source faces: a pair's diagonal); the boundary the source's, split edges in halves; the
+/// same Euler characteristic V − E + F over the used vertices. O(F log F).
+std::string all_quad_file_problem(const PolygonMesh& source, const PolygonMesh& output,
+                                  AllQuadFileCounts& counts);
+
 }  // namespace petersen::testing

@@ -284,8 +284,14 @@ for command in "render $example" "generate" "match $work/g.txt" "quad $example";
 done
 refuses "--memory-limit on an OFF" "out-of-core conversion reads a binary PLY" \
   "$petersen" quad "$example" "$work/x.ply" --memory-limit 1G
-refuses "--memory-limit with a flag out of core cannot honour" "--all-quad: not taken by the out-of-core" \
-  "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --all-quad
+refuses "--memory-limit with a flag out of core cannot honour" "--strict: not taken by the out-of-core" \
+  "$petersen" quad "$work/k-trefoil.ply" "$work/x.ply" --memory-limit 1G --objective quality --strict
+refuses "a weight the objective does not read" "--triangle-cost: prices the triangles --objective quads leaves" \
+  "$petersen" quad "$example" "$work/x.obj" --objective quality --triangle-cost 40
+refuses "a triangle price with --all-quad" "--triangle-cost: with --all-quad every triangle left is split" \
+  "$petersen" quad "$example" "$work/x.obj" --all-quad --triangle-cost 40
+refuses "an edge-flow weight without --objective quads" "--flow-weight: weighs the edge flow" \
+  "$petersen" quad "$example" "$work/x.obj" --objective pairs --flow-weight 1
 refuses "--part-triangles alone" "give --memory-limit" \
   "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000
 # Every generator kind works with its defaults.

@@ -8,6 +8,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "petersen/graph/memory.hpp"
 #include "petersen/mesh/mesh.hpp"
@@ -34,6 +35,17 @@ class PlyTriangleStream {
   /// The header lines declaring the vertex element ("element vertex N" and its properties), each
   /// ending in '\n': a writer copies them with the records.
   const std::string& vertex_declaration() const { return vertex_declaration_; }
+  /// Where the vertex records start in the file, and where the face records start (right after
+  /// the last vertex record): a reader or a writer that copies the vertex block as it is.
+  std::size_t vertex_offset() const { return vertex_start_; }
+  std::size_t face_offset() const { return face_start_; }
+  /// The same with `count` vertices ("element vertex count"): a writer that adds vertices.
+  std::string vertex_declaration(std::uint64_t count) const;
+  /// Appends to `out` one vertex record that blends the vertices `ids` (one to four): each
+  /// property the average of theirs, a float one rounded to its type, an integer one rounded to
+  /// the nearest (halves away from zero). The record of a midpoint or a centre that --all-quad
+  /// adds. O(ids · properties), random reads.
+  void append_blended_record(std::span<const VertexId> ids, std::string& out) const;
 
   /// The corners of faces first..first+count-1 into `corners` (3 per face). Throws FileError
   /// naming the file, the face and its byte for a face that is not a triangle or names a vertex
@@ -62,6 +74,7 @@ class PlyTriangleStream {
   // Where x, y and z lie in a vertex record and their types; offset SIZE_MAX when absent.
   std::array<std::size_t, 3> xyz_offset_{};
   std::array<std::uint8_t, 3> xyz_type_{};
+  std::vector<std::uint8_t> property_types_;  // the vertex properties' ScalarTypes, in order
   std::string vertex_declaration_;
 };
 

@@ -23,6 +23,14 @@ struct OutOfCoreOptions {
   /// Triangles per part; zero: from memory_limit. Tests set it to force many parts.
   std::uint64_t part_triangles = 0;
   Augment augment = Augment::local;
+  /// Every face of the output made a quad (QuadOptions::all_quad), part by part (all_quad.hpp):
+  /// the fewest midpoints per part given what the parts before it chose, then the cuts.
+  bool all_quad = false;
+  /// With all_quad: QuadOptions::keep_polygons. The input holds triangles only, so there is no
+  /// polygon to keep: honoured as it is, changing nothing.
+  bool keep_polygons = false;
+  /// Triangles per part of the all-quad step; zero: part_triangles, or from memory_limit.
+  std::uint64_t all_quad_part_triangles = 0;
   std::uint32_t band_radius = 16;
   std::uint32_t threads = 1;
   /// Where each part's arrays are allocated: a resource that keeps what one part frees for the
@@ -55,6 +63,16 @@ struct OutOfCoreStats {
   bool optimality_certified = false;
   /// The cost objectives: pairs made across the cuts, and the seam graph they were chosen in.
   std::uint64_t seam_pairs = 0, seam_graph_faces = 0;
+  /// all_quad: the vertices added (split_edges midpoints and centre_vertices centres), the
+  /// faces kept as they are (they repeat a vertex), the pieces the cuts made and their
+  /// worst-corner median and 95th percentile, the output's faces, the all-quad step's parts.
+  /// all_quad_parts_certified: every part's T-join passed its certificate (each is minimal for
+  /// its own T; whole-mesh minimality is not proved).
+  std::uint64_t added_vertices = 0, split_edges = 0, centre_vertices = 0, degenerate_faces = 0;
+  std::uint64_t split_quads = 0, faces_out = 0, all_quad_parts = 0, seam_cut_edges = 0;
+  double split_quality_median = 0, split_quality_p95 = 0;
+  bool all_quad_parts_certified = false;
+  double all_quad_seconds = 0;
   std::uint64_t temp_bytes = 0;  ///< the temporary files' size at their largest
   double read_pair_seconds = 0, cut_seconds = 0, repair_seconds = 0, write_seconds = 0;
   double total_seconds = 0;
@@ -63,9 +81,11 @@ struct OutOfCoreStats {
 /// Converts `input` (binary little-endian PLY: a vertex element of fixed-size properties, then a
 /// face element of triangles, a list of uint8 count and int32/uint32 indices, and no other
 /// element) to `output` (binary PLY: the vertex records copied byte for byte, then the quads and
-/// the triangles left). Temporary files sit beside the output and are removed on success and
-/// on failure; the output is written to a temporary file renamed only on success. Throws
-/// FileError naming the file, MeshError naming the face for bad input. O(n log n) for n
+/// the triangles left; with all_quad, the input's vertex records, then the midpoints' and the
+/// centres' records blended from their ends' or corners' (PlyTriangleStream::
+/// append_blended_record), then quads). Temporary files sit beside the output and are removed on
+/// success and on failure; the output is written to a temporary file renamed only on success.
+/// Throws FileError naming the file, MeshError naming the face for bad input. O(n log n) for n
 /// triangles, two passes over the faces, one over the vertices.
 OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& output,
                                 const OutOfCoreOptions& options = {});

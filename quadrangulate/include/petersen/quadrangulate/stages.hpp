@@ -7,6 +7,8 @@
 //   measure_quads    the quads' worst-corner figures
 //   attributes_of_pairs  the input's attributes carried to the quads
 //   split_leftovers  with all_quad: every face made a quad by the fewest midpoints
+// and, for a mesh converted piece by piece (partition/: out of core, Dask), stage 6 in three
+// calls on one piece at a time: piece_parity, plan_piece_splits, cut_piece_into_quads.
 // Every stage takes the
 // QuadOptions the front door was given (each reads only its own fields) and fills its own fields of
 // the one QuadStats; no stage reads what another left anywhere but in its arguments.
@@ -113,5 +115,86 @@ MeshAttributes attributes_of_pairs(const PolygonMesh& input, const PolygonMesh& 
 /// exists. O(H) plus the T-join's matching.
 void split_leftovers(QuadResult& result, const std::vector<FaceKind>& kinds,
                      const QuadOptions& options);
+
+/// Stage 6 on a piece of a mesh (a part out of core or on a cluster: partition/all_quad.hpp),
+/// step 1: what the piece's parity is. An edge of exactly one face of the piece.
+struct PieceOpenEdge {
+  VertexId low = 0, high = 0;  ///< its ends, low < high
+  FaceId face = kNoFace;       ///< the piece's face on it
+  bool kept = false;           ///< that face is kept as it is (it repeats a vertex)
+  friend bool operator==(const PieceOpenEdge&, const PieceOpenEdge&) = default;
+};
+
+/// The piece's faces joined across its edges of exactly two faces (neither kept): as
+/// plan_splits' dual, without the sink.
+struct PieceParity {
+  std::vector<std::uint32_t> component;     ///< per face: its component, kNoNode when kept
+  std::vector<std::uint8_t> component_odd;  ///< per component: an odd number of odd faces
+  std::vector<PieceOpenEdge> open;          ///< ascending by (low, high)
+  std::uint64_t kept_faces = 0;             ///< faces that repeat a vertex
+};
+
+/// The parity of `piece` (faces over its own vertex ids; positions unread): a face is odd when
+/// its side count is odd and it is not kept (it repeats a vertex: kept as it is, as in
+/// split_leftovers). O(C) for C corners.
+PieceParity piece_parity(const PolygonMesh& piece);
+
+/// What an open edge of a piece leads to (PieceBorder::node): an edge never split, an edge whose
+/// midpoint is decided already (it flips the piece's face), or one of the outside nodes; outside
+/// node 0 is the sink (any parity), the others have the parity PieceSplitInput::outside_odd
+/// gives.
+inline constexpr std::uint32_t kKeepWhole = 0xFFFFFFFFu, kSplitAlready = 0xFFFFFFFEu;
+
+struct PieceBorder {
+  VertexId low = 0, high = 0;  ///< an open edge of the piece, low < high
+  std::uint32_t node = 0;      ///< kKeepWhole, kSplitAlready or an outside node
+};
+
+struct PieceSplitInput {
+  /// Open edges of the piece, ascending by (low, high); an open edge not listed joins the sink.
+  std::span<const PieceBorder> border = {};
+  /// Per outside node (node 0, the sink, is read as free): whether it is in T.
+  std::span<const std::uint8_t> outside_odd = {};
+  std::uint32_t threads = 1;  ///< the T-join's matching (0: every core)
+};
+
+/// The edges of a piece that plan_piece_splits gives a midpoint.
+struct PieceSplits {
+  /// Ascending, in the piece's ids: edges inside the piece and the open edges chosen (not those
+  /// split already).
+  std::vector<std::array<VertexId, 2>> edges;
+  bool certified = false;  ///< the T-join's certificate passed its check (it is minimal)
+};
+
+/// Step 2: the fewest edges of `piece` whose midpoints, with those split already, make every
+/// face even: a minimum T-join (minimum_t_join, certified by its dual) of the piece's dual
+/// with the outside nodes, where T is the odd faces (flipped by the edges split already) and the
+/// outside nodes in T, the sink taking whatever parity makes its component even. Non-manifold
+/// edges of the piece and the edges of kept faces are never split (unlike plan_splits, which may
+/// split a non-manifold edge). Throws MeshError naming a face of the piece when a component
+/// without the sink has odd parity (no midpoints inside it can make it even). O(C) plus the
+/// T-join's matching.
+PieceSplits plan_piece_splits(const PolygonMesh& piece, const PieceSplitInput& input);
+
+/// What cut_piece_into_quads makes of a piece.
+struct PieceQuads {
+  /// The faces (no positions), in the order of the faces they come from, over the piece's
+  /// vertices, then the midpoints (vertex V + i on split_edges[i], for V the piece's vertices),
+  /// then the centres (V + split_edges.size() + j).
+  PolygonMesh mesh;
+  /// Per centre: the corners of the face it is the average of (up to four; kNoNode after).
+  std::vector<std::array<VertexId, 4>> centre_corners;
+  /// The worst-corner figure (quad_corner_deviation) of each face the cuts made.
+  std::vector<double> split_quality;
+};
+
+/// Step 3: every face of `piece` (with positions) cut into quads once `split_edges` (ascending
+/// (low, high) pairs, each an edge of the piece) have their midpoints: split_leftovers' cut
+/// (a kept face stays as it is; centres where options.objective is not pairs and they are
+/// better), except that a fan's diagonal is tested against the piece's edges only. O(C log M)
+/// for M split edges.
+PieceQuads cut_piece_into_quads(const PolygonMesh& piece,
+                                std::span<const std::array<VertexId, 2>> split_edges,
+                                const QuadOptions& options);
 
 }  // namespace petersen
