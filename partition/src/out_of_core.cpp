@@ -206,17 +206,14 @@ std::array<VertexId, 4> checked_quad(const TempFaceArray& partner, FaceId f, Fac
   return quad;
 }
 
-// Checks the pair {f, p} from f's side and writes its quad when f is the first. O(1).
-void write_pair(PlyStreamWriter& out, const TempFaceArray& partner, FaceId f, FaceId p,
-                std::span<const VertexId> tf, std::span<const VertexId> tp, std::uint64_t n) {
-  const std::array<VertexId, 4> quad = checked_quad(partner, f, p, tf, tp, n);
-  if (f < p) out.write_quad(quad[0], quad[1], quad[2], quad[3]);
-}
-
-// The faces of one part, written and checked: every pair from both of its sides.
-void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
-                std::uint64_t count, std::pmr::vector<VertexId>& corners, PlyStreamWriter& out,
-                OutOfCoreStats& stats) {
+// Visits the output faces of faces first..first+count-1 in face order: each triangle left
+// (visit(corners of 3)), and the quad of each pair whose first triangle is among them
+// (visit(corners of 4)); every pair is checked from both of its sides (checked_quad), the one
+// whose first triangle lies in an earlier part from its second. `corners` is the part's buffer.
+// O(count), plus one face read for each partner outside the part.
+template <class Visit>
+void for_each_output_face(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
+                          std::uint64_t count, std::pmr::vector<VertexId>& corners, Visit visit) {
   corners.resize(3 * count);
   in.read_faces(first, count, corners);
   in.release_faces(first, count);
@@ -225,8 +222,7 @@ void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64
     const FaceId f = static_cast<FaceId>(first + i), p = partner[f];
     const std::span<const VertexId> tf(corners.data() + 3 * i, 3);
     if (p == kNoFace) {
-      out.write_triangle(tf[0], tf[1], tf[2]);
-      ++stats.triangles_left;
+      visit(tf);
       continue;
     }
     const bool inside = p >= first && p < first + count;
@@ -234,9 +230,24 @@ void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64
     if (!inside && p < n) in.read_faces(p, 1, outside);
     const std::span<const VertexId> tp =
         inside ? std::span<const VertexId>(corners.data() + 3 * (p - first), 3) : outside;
-    write_pair(out, partner, f, p, tf, tp, n);
+    const std::array<VertexId, 4> quad = checked_quad(partner, f, p, tf, tp, n);
+    if (f < p) visit(std::span<const VertexId>(quad));
   }
   partner.release(first, count);
+}
+
+// The faces of one part, written and checked: every pair from both of its sides.
+void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
+                std::uint64_t count, std::pmr::vector<VertexId>& corners, PlyStreamWriter& out,
+                OutOfCoreStats& stats) {
+  for_each_output_face(in, partner, first, count, corners, [&](std::span<const VertexId> face) {
+    if (face.size() == 3) {
+      out.write_triangle(face[0], face[1], face[2]);
+      ++stats.triangles_left;
+    } else {
+      out.write_quad(face[0], face[1], face[2], face[3]);
+    }
+  });
 }
 
 void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std::string& output,
@@ -268,38 +279,19 @@ std::uint64_t all_quad_part_size(const OutOfCoreOptions& options, std::uint64_t 
       std::min(size, (options.memory_limit - fixed) / kAllQuadBytesPerTriangle * 2 / 3));
 }
 
-// The output faces of faces first..first+count-1 (all_quad.hpp's PartFaces): the triangles left
-// and the quads whose first triangle is among them, every pair checked from both sides; with the
-// corners' positions when asked. Counts the triangles left into `left`.
+// The output faces of faces first..first+count-1 (all_quad.hpp's PartFaces), as the output
+// writes them (for_each_output_face), with the corners' positions when asked. Counts the
+// triangles left into `left`.
 PartFaces part_faces(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
                      std::uint64_t count, std::pmr::vector<VertexId>& corners, bool positions,
                      std::uint64_t& left) {
-  corners.resize(3 * count);
-  in.read_faces(first, count, corners);
-  in.release_faces(first, count);
-  const std::uint64_t n = in.face_count();
   PartFaces faces;
   faces.corners.reserve(2 * count + count / 2);
-  for (std::uint64_t i = 0; i < count; ++i) {
-    const FaceId f = static_cast<FaceId>(first + i), p = partner[f];
-    const std::span<const VertexId> tf(corners.data() + 3 * i, 3);
-    if (p == kNoFace) {
-      faces.corners.insert(faces.corners.end(), tf.begin(), tf.end());
-      faces.arity.push_back(3);
-      ++left;
-      continue;
-    }
-    const bool inside = p >= first && p < first + count;
-    VertexId outside[3];
-    if (!inside && p < n) in.read_faces(p, 1, outside);
-    const std::span<const VertexId> tp =
-        inside ? std::span<const VertexId>(corners.data() + 3 * (p - first), 3) : outside;
-    const std::array<VertexId, 4> quad = checked_quad(partner, f, p, tf, tp, n);
-    if (f > p) continue;
-    faces.corners.insert(faces.corners.end(), quad.begin(), quad.end());
-    faces.arity.push_back(4);
-  }
-  partner.release(first, count);
+  for_each_output_face(in, partner, first, count, corners, [&](std::span<const VertexId> face) {
+    faces.corners.insert(faces.corners.end(), face.begin(), face.end());
+    faces.arity.push_back(static_cast<std::uint8_t>(face.size()));
+    left += face.size() == 3;
+  });
   if (positions) {
     faces.corner_positions.resize(faces.corners.size());
     in.read_positions(faces.corners, faces.corner_positions);
