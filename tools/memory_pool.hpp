@@ -1,5 +1,5 @@
 #pragma once
-// The CLI's huge-page pool (petersen/graph/huge_page_pool.hpp): the program's choice, not the
+// The CLI's huge-page pool (petersen/memory_pool/huge_page_pool.hpp): the program's choice, not the
 // library's. A conversion's stages free large arrays that the next stage allocates again; kept in
 // the pool, they are not faulted in afresh (fresh pages are the slow ones on a virtual machine).
 // PETERSEN_HUGE_PAGE_POOL=off runs without it, so that the same binary measures what it buys.
@@ -8,7 +8,7 @@
 #include <memory_resource>
 #include <string_view>
 
-#include "petersen/graph/huge_page_pool.hpp"
+#include "petersen/memory_pool/huge_page_pool.hpp"
 
 namespace petersen::cli {
 

@@ -13,10 +13,10 @@
 #include "json_text.hpp"
 #include "memory_pool.hpp"
 #include "petersen/generators/streamed_plate.hpp"
-#include "petersen/graph/huge_page_pool.hpp"
 #include "petersen/graph/memory.hpp"
 #include "petersen/io/file_bytes.hpp"
 #include "petersen/io/ply_stream.hpp"
+#include "petersen/memory_pool/huge_page_pool.hpp"
 #include "petersen/partition/out_of_core.hpp"
 
 namespace petersen::cli {

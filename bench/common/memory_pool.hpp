@@ -1,14 +1,14 @@
 #pragma once
-// The bench's huge-page pool (petersen/graph/huge_page_pool.hpp): made once by the program and
-// set as its default memory resource, so that every array of every contestant, at every level the
-// bench calls the library, is served as the CLI's are. PETERSEN_HUGE_PAGE_POOL=off leaves the
+// The bench's huge-page pool (petersen/memory_pool/huge_page_pool.hpp): made once by the program
+// and set as its default memory resource, so that every array of every contestant, at every level
+// the bench calls the library, is served as the CLI's are. PETERSEN_HUGE_PAGE_POOL=off leaves the
 // standard resource, so that the same binaries measure what the pool buys.
 
 #include <cstdlib>
 #include <memory_resource>
 #include <string_view>
 
-#include "petersen/graph/huge_page_pool.hpp"
+#include "petersen/memory_pool/huge_page_pool.hpp"
 
 namespace petersen::bench {
 

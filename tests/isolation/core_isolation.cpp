@@ -11,8 +11,8 @@
 
 #include "counting_resource.hpp"
 #include "petersen/generators/graph_generators.hpp"
-#include "petersen/graph/huge_page_pool.hpp"
 #include "petersen/matching/perfect_matching.hpp"
+#include "petersen/memory_pool/huge_page_pool.hpp"
 
 // glibc's registration behind pthread_atfork; this definition takes the place of the one in
 // libc_nonshared.a for every object linked here, so each registration is counted, then made.

@@ -2,9 +2,10 @@
 // Memory the caller owns. Every large array the library makes, in its results and in its
 // scratch, is a std::pmr::vector or a RawArray on the std::pmr::memory_resource the caller's
 // options name (`memory`, std::pmr::get_default_resource() unless set): a program that converts
-// meshes of millions of faces hands in a resource that keeps and reuses large blocks (HugePagePool,
-// in huge_page_pool.hpp), one that does not leaves the default. The library keeps no memory and no
-// state of its own between calls, and never changes the default resource.
+// meshes of millions of faces hands in a resource that keeps and reuses large blocks (the huge-page
+// pool of the CLI, the bench and the Python module, which is theirs and not the library's), one
+// that does not leaves the default. The library keeps no memory and no state of its own between
+// calls, and never changes the default resource.
 //
 // The invariant, which makes the resource flow: an array is made on the resource it was given
 // (std::pmr::vector<T>(n, value, memory)), and only moved (never copied, never move-assigned or
@@ -48,10 +49,19 @@ RawArray<T> make_raw_array(std::size_t size,
                      RawArrayRelease<T>{memory, size});
 }
 
+/// A memory resource that can give back the tail of a block while its head lives on (a resource
+/// of whole pages can unmap the pages past the head); what release_tail asks of a resource.
+class TailReleasingResource : public std::pmr::memory_resource {
+ public:
+  /// Shrinks a block of `bytes` from this resource to its first `keep_bytes` where it can, giving
+  /// back the rest. Returns the size the block must be deallocated with from now on:
+  /// `keep_bytes` when the tail was given back, else `bytes`.
+  virtual std::size_t shrink(void* block, std::size_t bytes, std::size_t keep_bytes) = 0;
+};
+
 /// Gives back the tail of a block of `bytes` from `memory` past its first `keep_bytes`, where the
-/// resource can: a HugePagePool returns the whole huge pages past them at once
-/// (HugePagePool::shrink); any other resource keeps the block whole. Returns the size the block
-/// must be deallocated with from now on. O(1).
+/// resource can (a TailReleasingResource); any other resource keeps the block whole. Returns the
+/// size the block must be deallocated with from now on. O(1).
 std::size_t release_tail(std::pmr::memory_resource* memory, void* block, std::size_t bytes,
                          std::size_t keep_bytes);
 

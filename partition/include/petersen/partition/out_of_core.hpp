@@ -34,7 +34,8 @@ struct OutOfCoreOptions {
   std::uint32_t band_radius = 16;
   std::uint32_t threads = 1;
   /// Where each part's arrays are allocated: a resource that keeps what one part frees for the
-  /// next (HugePagePool, up to memory_limit) spares faulting them in afresh for every part.
+  /// next (the CLI's huge-page pool, up to memory_limit) spares faulting them in afresh for
+  /// every part.
   std::pmr::memory_resource* memory = std::pmr::get_default_resource();
 };
 

@@ -1,4 +1,4 @@
-#include "petersen/graph/huge_page_pool.hpp"
+#include "petersen/memory_pool/huge_page_pool.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>

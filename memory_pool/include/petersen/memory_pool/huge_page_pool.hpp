@@ -1,9 +1,10 @@
 #pragma once
 // A memory resource for arrays of millions of elements, made by a program and handed to the
 // library through its options (`memory`): large blocks on transparent huge pages, and blocks given
-// back kept for the next arrays. No library type or options struct includes this header: the
-// library allocates from whatever std::pmr::memory_resource its caller passes, the standard one
-// by default, and never makes or finds a pool by itself.
+// back kept for the next arrays. It belongs to the programs (the CLI, the bench, the Python
+// module), not to the library: this module is not installed, no library type or options struct
+// includes it, and the library allocates from whatever std::pmr::memory_resource its caller
+// passes, the standard one by default, never making or finding a pool by itself.
 //
 // Why: a fresh array of n bytes costs n / 4 KiB page faults, and every random access a TLB miss;
 // on virtual machines a fresh page is dearer still, as the host backs guest memory lazily and
@@ -16,6 +17,8 @@
 #include <memory_resource>
 #include <mutex>
 #include <vector>
+
+#include "petersen/graph/memory.hpp"
 
 namespace petersen {
 
@@ -42,7 +45,7 @@ namespace petersen {
 /// write to each 4 KiB page would copy it (LRS's contraction on the 4.1M-triangle D6: 7,583 such
 /// copies). A child that allocates from an inherited pool calls release_retained() first (the
 /// bench harness does), as fresh memory is cheaper.
-class HugePagePool final : public std::pmr::memory_resource {
+class HugePagePool final : public TailReleasingResource {
  public:
   static constexpr std::size_t kPageBytes = std::size_t{2} << 20;
   static constexpr std::size_t kPooledBytes = std::size_t{64} << 10;
@@ -70,7 +73,7 @@ class HugePagePool final : public std::pmr::memory_resource {
   /// released range): for an array whose tail is dead while its head lives on. Returns the size
   /// the block must be deallocated with from now on: `keep_bytes` when pages were given back,
   /// else `bytes` (nothing is given back when either size is below a huge page). O(1).
-  std::size_t shrink(void* block, std::size_t bytes, std::size_t keep_bytes);
+  std::size_t shrink(void* block, std::size_t bytes, std::size_t keep_bytes) override;
 
  private:
   struct Range {
