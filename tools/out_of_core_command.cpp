@@ -53,7 +53,8 @@ std::pair<double, double> gap_of(const OutOfCoreStats& s) {
 }
 
 // The figures as one JSON object: the keys of the in-memory --stats-json where the meaning is the
-// same (objective, algorithm, triangle_cost, vertices, triangles, pairs, triangles_left,
+// same (input, output, objective, algorithm, triangle_cost, flow_weight, vertices, faces_in,
+// triangles, pairs, triangles_left, quality_median, quality_p95, nonconvex_quads,
 // maximum_certified, objective_total, optimality_certified, total_seconds), and the parts' own.
 void write_stats_json(const std::string& path, const OutOfCoreArgs& args, const OutOfCoreStats& s) {
   const Objective objective = args.costs.objective;
@@ -70,18 +71,27 @@ void write_stats_json(const std::string& path, const OutOfCoreArgs& args, const 
     std::snprintf(text, sizeof text, format, value);
     add(key, text);
   };
-  if (objective == Objective::quads) d("triangle_cost", args.costs.triangle_cost, "%.17g");
+  add("input", json_string(args.input));
+  add("output", json_string(args.output));
+  if (objective == Objective::quads) {
+    d("triangle_cost", args.costs.triangle_cost, "%.17g");
+    d("flow_weight", 0.0, "%.17g");  // shape alone: --flow-weight is refused out of core
+  }
   if (args.costs.max_corner_deviation) {
     d("max_corner_deviation", *args.costs.max_corner_deviation, "%.17g");
   }
   if (args.costs.sharp_angle_degrees) d("sharp_angle", *args.costs.sharp_angle_degrees, "%.17g");
   u("vertices", s.vertices);
+  u("faces_in", s.triangles);  // out of core takes triangles only
   u("triangles", s.triangles);
   u("parts", s.parts);
   u("part_triangles", s.part_triangles);
   u("pairs", s.pairs);
   u("triangles_left", s.triangles_left);
   u("unpaired_after_parts", s.unpaired_after_parts);
+  d("quality_median", s.quality_median, "%.17g");
+  d("quality_p95", s.quality_p95, "%.17g");
+  u("nonconvex_quads", s.nonconvex_quads);
   u("cut_adjacencies", s.cut_adjacencies);
   if (objective == Objective::pairs) {
     u("repaired", s.repaired);
@@ -260,6 +270,8 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
         : s.parts_certified ? "every pair checked; each part's and the band's pairing maximum"
                             : "every pair checked");
   }
+  std::printf("quality: median %.2f, 95th percentile %.2f degrees, %llu non-convex\n",
+              s.quality_median, s.quality_p95, (unsigned long long)s.nonconvex_quads);
   if (args.all_quad) {
     std::printf(
         "all-quad: %llu faces, all quads%s; %llu vertices added (%llu midpoints, %llu centres) in "

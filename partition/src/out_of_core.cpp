@@ -14,12 +14,14 @@
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/partition/all_quad.hpp"
 #include "petersen/partition/partition.hpp"
+#include "quality_histogram.hpp"
 #include "temp_face_array.hpp"
 
 namespace petersen {
 
 namespace {
 
+using partition_detail::QualityHistogram;
 using partition_detail::TempFaceArray;
 
 // What a part costs per triangle at the part step's peak, its corners read from the file
@@ -236,18 +238,49 @@ void for_each_output_face(const PlyTriangleStream& in, TempFaceArray& partner, s
   partner.release(first, count);
 }
 
-// The faces of one part, written and checked: every pair from both of its sides.
+// The worst corner of each of these quads (4 corners each) into `histogram`, their positions read
+// from the file in chunks of kQuadChunk, so that the buffers stay small beside a part.
+void measure_quads(const PlyTriangleStream& in, std::span<const VertexId> quad_corners,
+                   std::pmr::vector<std::array<double, 3>>& positions,
+                   QualityHistogram& histogram) {
+  constexpr std::size_t kQuadChunk = std::size_t{1} << 18;
+  for (std::size_t first = 0; first < quad_corners.size(); first += 4 * kQuadChunk) {
+    const std::span<const VertexId> chunk =
+        quad_corners.subspan(first, std::min(4 * kQuadChunk, quad_corners.size() - first));
+    positions.resize(chunk.size());
+    in.read_positions(chunk, positions);
+    for (std::size_t q = 0; q < chunk.size(); q += 4) {
+      histogram.add(quad_corner_deviation(positions[q], positions[q + 1], positions[q + 2],
+                                          positions[q + 3]));
+    }
+  }
+  in.release_vertices(0, in.vertex_count());
+}
+
+// The faces of one part, written and checked: every pair from both of its sides; its quads
+// measured into `histogram`.
 void write_part(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t first,
                 std::uint64_t count, std::pmr::vector<VertexId>& corners, PlyStreamWriter& out,
-                OutOfCoreStats& stats) {
+                QualityHistogram& histogram, OutOfCoreStats& stats) {
+  std::pmr::vector<VertexId> quad_corners(corners.get_allocator());
   for_each_output_face(in, partner, first, count, corners, [&](std::span<const VertexId> face) {
     if (face.size() == 3) {
       out.write_triangle(face[0], face[1], face[2]);
       ++stats.triangles_left;
     } else {
       out.write_quad(face[0], face[1], face[2], face[3]);
+      quad_corners.insert(quad_corners.end(), face.begin(), face.end());
     }
   });
+  std::pmr::vector<std::array<double, 3>> positions(corners.get_allocator());
+  measure_quads(in, quad_corners, positions, histogram);
+}
+
+void set_quality(const QualityHistogram& histogram, OutOfCoreStats& stats) {
+  const QualityFigures figures = histogram.figures();
+  stats.quality_median = figures.median;
+  stats.quality_p95 = figures.p95;
+  stats.nonconvex_quads = figures.nonconvex;
 }
 
 void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std::string& output,
@@ -260,10 +293,13 @@ void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std
     in.release_vertices(first, count);
   }
   std::pmr::vector<VertexId> corners;
+  QualityHistogram histogram;
   for (std::uint64_t first = 0; first < in.face_count(); first += size) {
-    write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out, stats);
+    write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out,
+               histogram, stats);
   }
   out.commit();
+  set_quality(histogram, stats);
   stats.temp_bytes += out.bytes_written();
 }
 
@@ -300,6 +336,19 @@ PartFaces part_faces(const PlyTriangleStream& in, TempFaceArray& partner, std::u
   return faces;
 }
 
+// The worst corner of the pairs' quads of a part's faces (read with their positions) into
+// `histogram`, as in memory, where the figures are the pairing's before the all-quad splits.
+void add_pair_quads(const PartFaces& faces, QualityHistogram& histogram) {
+  std::size_t corner = 0;
+  for (const std::uint8_t arity : faces.arity) {
+    if (arity == 4) {
+      const auto* p = faces.corner_positions.data() + corner;
+      histogram.add(quad_corner_deviation(p[0], p[1], p[2], p[3]));
+    }
+    corner += arity;
+  }
+}
+
 // --all-quad (all_quad.hpp): the parities, the seams, the plan part by part in face order, and
 // the output: the input's vertex records, the midpoints' and centres' records, the quads.
 void write_all_quad(const PlyTriangleStream& in, TempFaceArray& partner, const std::string& output,
@@ -329,11 +378,13 @@ void write_all_quad(const PlyTriangleStream& in, TempFaceArray& partner, const s
   std::vector<std::array<VertexId, 4>> centres;
   std::vector<double> quality;
   std::vector<std::uint64_t> first_centre;
+  QualityHistogram histogram;
   stats.all_quad_parts_certified = true;
   std::uint64_t index = 0;
   for (std::uint64_t first = 0; first < n; first += part, ++index) {
     const PartFaces faces =
         part_faces(in, partner, first, std::min(part, n - first), corners, true, left);
+    add_pair_quads(faces, histogram);
     PartSplitPlan plan = plan_part_all_quad(faces, static_cast<std::uint32_t>(index), seams,
                                             cut_midpoints, quad_options);
     midpoints.insert(midpoints.end(), plan.midpoints.begin(), plan.midpoints.end());
@@ -351,6 +402,7 @@ void write_all_quad(const PlyTriangleStream& in, TempFaceArray& partner, const s
   stats.split_edges = midpoints.size();
   stats.centre_vertices = centres.size();
   stats.added_vertices = stats.split_edges + stats.centre_vertices;
+  set_quality(histogram, stats);
   stats.split_quads = quality.size();
   const QualityFigures figures = quality_figures_in_place(quality);
   stats.split_quality_median = figures.median;

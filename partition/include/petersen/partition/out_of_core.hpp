@@ -74,6 +74,12 @@ struct OutOfCoreStats {
   double split_quality_median = 0, split_quality_p95 = 0;
   bool all_quad_parts_certified = false;
   double all_quad_seconds = 0;
+  /// The written quads' worst corners (quad_quality.hpp), as quadrangulate's figures: the count
+  /// of non-convex ones exact, the median and 95th percentile those of the costs rounded down to
+  /// 1/1024° (within 0.001° below the exact figures), the quads being too many to hold. With
+  /// all_quad, the pairs' quads before the splits, as in memory.
+  double quality_median = 0, quality_p95 = 0;
+  std::uint64_t nonconvex_quads = 0;
   std::uint64_t temp_bytes = 0;  ///< the temporary files' size at their largest
   double read_pair_seconds = 0, cut_seconds = 0, repair_seconds = 0, write_seconds = 0;
   double total_seconds = 0;
