@@ -295,8 +295,8 @@ void write_output(const PlyTriangleStream& in, TempFaceArray& partner, const std
   std::pmr::vector<VertexId> corners;
   QualityHistogram histogram;
   for (std::uint64_t first = 0; first < in.face_count(); first += size) {
-    write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out,
-               histogram, stats);
+    write_part(in, partner, first, std::min(size, in.face_count() - first), corners, out, histogram,
+               stats);
   }
   out.commit();
   set_quality(histogram, stats);

@@ -38,6 +38,7 @@ any part whose result was lost with its worker.
 
 from __future__ import annotations
 
+import math
 import os
 import time
 from dataclasses import dataclass
@@ -83,8 +84,8 @@ def _read_faces(layout: PlyLayout, lo: int, hi: int) -> np.ndarray:
 
 
 def _corner_positions(layout: PlyLayout, F: np.ndarray) -> np.ndarray:
-    """The positions of the corners of faces F, (m, 3, 3) float64, as the in-memory reader gives
-    them: only the vertex records F names are read."""
+    """The positions of the corners of faces F ((m, k) vertex ids), (m, k, 3) float64, as the
+    in-memory reader gives them: only the vertex records F names are read."""
     return _petersen.read_corner_positions(layout.path, F)
 
 
@@ -274,6 +275,44 @@ def _pwrite(data, out_tmp: str, offset: int) -> int:
     return len(data)
 
 
+# The written quads' worst corners as `petersen quad --memory-limit` counts them
+# (partition/src/quality_histogram.hpp): per 1/1024 degree, 0 to 270, summed over the parts.
+_QUALITY_BINS_PER_DEGREE = 1024
+_QUALITY_BINS = 270 * _QUALITY_BINS_PER_DEGREE + 1
+
+
+def _quality_counts(layout: PlyLayout, plan: Dict[str, np.ndarray]) -> Tuple[np.ndarray, int]:
+    """On a part's worker: its quads' worst corners (petersen.quad_quality) counted per bin,
+    and how many are non-convex (over 90 degrees). O(part) besides the positions' reads."""
+    quads = plan["quads"]
+    if len(quads) == 0:
+        return np.zeros(_QUALITY_BINS, np.int64), 0
+    corners = _corner_positions(layout, quads).reshape(-1, 3)
+    cost = _petersen.quad_quality(corners, np.arange(len(corners), dtype=np.int64).reshape(-1, 4))
+    bins = np.floor(np.clip(cost, 0, 270) * _QUALITY_BINS_PER_DEGREE).astype(np.int64)
+    return np.bincount(bins, minlength=_QUALITY_BINS), int((cost > 90).sum())
+
+
+def _quality(client, layout, plans, retries) -> Dict[str, Any]:
+    """The output's quality keys from the parts' counts: the median and 95th percentile by nearest
+    rank over the binned costs (as out of core: within 0.001 degree below the exact figures), the
+    non-convex count exact."""
+    counts = client.gather([_submit(client, _quality_counts, layout, plan, retries=retries)
+                            for plan in plans])
+    total = np.sum([c[0] for c in counts], axis=0)
+    cumulative = np.cumsum(total)
+    quads = int(cumulative[-1])
+
+    def rank(p):
+        if quads == 0:
+            return 0.0
+        k = max(1, math.ceil(p * quads))
+        return float(np.searchsorted(cumulative, k)) / _QUALITY_BINS_PER_DEGREE
+
+    return {"quality_median": rank(0.5), "quality_p95": rank(0.95),
+            "nonconvex_quads": sum(c[1] for c in counts)}
+
+
 def _mixed_face_bytes(corners: np.ndarray, arity: np.ndarray) -> bytes:
     """Faces of 3 or 4 corners (flat corners, one arity per face) as PLY records. O(corners)."""
     if (arity == 4).all():
@@ -397,6 +436,7 @@ def _write_all_quad(client, layout, parts, bounds, repair, out_path, retries, ob
     vertices' records and each part's quads at offsets the client computes. Returns the pairing's
     quads and triangles left and the all-quad figures."""
     plans, counts = _plans(client, parts, bounds, repair, retries)
+    quality = _quality(client, layout, plans, retries)
     faces = [_submit(client, _all_quad_faces, p, plan, retries=retries)
              for p, plan in zip(parts, plans)]
     seams = _submit(client, _split_seams,
@@ -443,7 +483,7 @@ def _write_all_quad(client, layout, parts, bounds, repair, out_path, retries, ob
         if os.path.exists(tmp):
             os.remove(tmp)
     figures.update(faces_out=faces_out, added_vertices=added,
-                   kept_triangles=sum(s[2] for s in sizes))
+                   kept_triangles=sum(s[2] for s in sizes), quality=quality)
     return sum(c[0] for c in counts), sum(c[1] for c in counts), figures
 
 
@@ -550,6 +590,7 @@ def _cost_stats(costs, layout, bounds, cut, seamed, quads, left) -> Dict[str, An
     stats: Dict[str, Any] = {"objective": objective, "algorithm": "min-cost"}
     if objective == "quads":
         stats["triangle_cost"] = seamed["triangle_cost"]
+        stats["flow_weight"] = 0.0  # shape alone: flow_weight is refused on parts
     for key in ("max_corner_deviation", "sharp_angle"):
         if key in costs:
             stats[key] = costs[key]
@@ -613,9 +654,12 @@ def _start_output(layout: PlyLayout, tmp: str, vertex_count: int, face_count: in
     return len(header) + vertex_bytes
 
 
-def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> Tuple[int, int]:
-    """Stage 4: the header and vertex block by the client, each part's faces by its worker."""
+def _write_output(client, layout, parts, bounds, repair, out_path, retries
+                  ) -> Tuple[int, int, Dict[str, Any]]:
+    """Stage 4: the header and vertex block by the client, each part's faces by its worker.
+    Returns the quads, the triangles left and the quads' quality keys."""
     plans, counts = _plans(client, parts, bounds, repair, retries)
+    quality = _quality(client, layout, plans, retries)
     quads = sum(c[0] for c in counts)
     left = sum(c[1] for c in counts)
     tmp = f"{out_path}.tmp-{os.getpid()}"
@@ -629,7 +673,7 @@ def _write_output(client, layout, parts, bounds, repair, out_path, retries) -> T
     finally:
         if os.path.exists(tmp):
             os.remove(tmp)
-    return quads, left
+    return quads, left, quality
 
 
 def _part_bounds(face_count: int, parts: Union[int, Sequence[int]]) -> np.ndarray:
@@ -672,9 +716,10 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     mesh's optimum (the parts' certified duals stitched across the cuts), ``gap`` and
     ``gap_relative``, and ``optimality_certified`` when the gap is 0.
 
-    Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``faces_in``,
-    ``vertices``, ``triangles``, ``pairs``, ``triangles_left``, ``maximum_certified``,
-    ``total_seconds``, ...) and the distributed figures (``parts``, ``part_cut_edges``,
+    Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``input``,
+    ``output``, ``faces_in``, ``vertices``, ``triangles``, ``pairs``, ``triangles_left``,
+    ``quality_median`` and ``quality_p95``, as out of core of the costs binned per 1/1024 degree,
+    ``nonconvex_quads``, ``maximum_certified``, ``total_seconds``, ...) and the distributed figures (``parts``, ``part_cut_edges``,
     ``unpaired_after_parts``, ``repair_*``, each stage's seconds); with ``all_quad`` the keys of
     the out-of-core ``--stats-json`` (``added_vertices``, ``split_edges``, ``centre_vertices``,
     ``faces_out``, ``all_quad_parts_certified``, ``all_quad_certified`` False: no whole-mesh
@@ -709,9 +754,9 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
                                                    out_path, retries, costs["objective"],
                                                    keep_polygons)
         else:
-            figures = None
-            quads, left = _write_output(client, layout, part_futures, bounds, repair, out_path,
-                                        retries)
+            quads, left, quality = _write_output(client, layout, part_futures, bounds, repair,
+                                                 out_path, retries)
+            figures = {"quality": quality}
         if quads * 2 + left != layout.face_count:
             raise RuntimeError("verification failed: the parts' faces do not add up to the "
                                "input's")
@@ -721,7 +766,9 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         part_futures, cut, seamed, seam = _pair_and_seam(client, layout, bounds, band_radius,
                                                          costs, retries)
         quads, left, figures, seconds = write(part_futures, seam)
-        stats = _cost_stats(costs, layout, bounds, cut, seamed, quads, left)
+        stats = {"input": in_path, "output": out_path,
+                 **_cost_stats(costs, layout, bounds, cut, seamed, quads, left),
+                 **figures["quality"]}
         if all_quad:
             stats["objective"] = options.get("objective", "quads")
             _all_quad_stats(stats, figures, seconds)
@@ -733,6 +780,7 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     quads, left, figures, write_seconds = write(part_futures, repair)
     per_part = cut["figures"]
     stats = {
+        "input": in_path, "output": out_path,
         "objective": "pairs", "algorithm": "auto", "augment": options.get("augment", "local"),
         "vertices": layout.vertex_count, "faces_in": layout.face_count,
         "triangles": layout.face_count, "polygons_kept": 0, "maximum_certified": left == 0,
@@ -755,7 +803,7 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         "repair_maximum_in_band_certified": repaired["maximum_in_band_certified"],
         "repair_matching_seconds": repaired["seconds"],
         "parts_seconds": repaired["parts_seconds"], "repair_seconds": repaired["repair_seconds"],
-        "write_seconds": write_seconds,
+        "write_seconds": write_seconds, **figures["quality"],
     }
     if all_quad:
         _all_quad_stats(stats, figures, write_seconds)

@@ -54,18 +54,20 @@ py::array_t<std::int64_t> read_triangles_py(const std::string& path, std::uint64
   return out;
 }
 
-// The positions of the corners of faces F ((m, 3) vertex ids), (m, 3, 3) float64: the values
-// the in-memory reader gives, read only where F names them.
+// The positions of the corners of faces F ((m, k) vertex ids: triangles, quads), (m, k, 3)
+// float64: the values the in-memory reader gives, read only where F names them.
 py::array_t<double> read_corner_positions_py(const std::string& path, const Int64Array& faces) {
-  if (faces.ndim() != 2 || faces.shape(1) != 3) throw py::value_error("F: an (m, 3) array");
+  if (faces.ndim() != 2 || faces.shape(1) < 1) throw py::value_error("F: an (m, k) array");
   const std::size_t m = static_cast<std::size_t>(faces.shape(0));
-  py::array_t<double> out({static_cast<py::ssize_t>(m), py::ssize_t{3}, py::ssize_t{3}});
+  const std::size_t k = static_cast<std::size_t>(faces.shape(1));
+  py::array_t<double> out(
+      {static_cast<py::ssize_t>(m), static_cast<py::ssize_t>(k), py::ssize_t{3}});
   const std::int64_t* ids = faces.data();
   auto* positions = reinterpret_cast<std::array<double, 3>*>(out.mutable_data());
   py::gil_scoped_release release;
   const PlyTriangleStream in(path);
-  std::vector<VertexId> corners(3 * m);
-  for (std::size_t i = 0; i < 3 * m; ++i) {
+  std::vector<VertexId> corners(k * m);
+  for (std::size_t i = 0; i < k * m; ++i) {
     if (ids[i] < 0 || static_cast<std::uint64_t>(ids[i]) >= in.vertex_count()) {
       throw FileError(path, 0,
                       "vertex " + std::to_string(ids[i]) + " out of range (" +
@@ -73,7 +75,7 @@ py::array_t<double> read_corner_positions_py(const std::string& path, const Int6
     }
     corners[i] = static_cast<VertexId>(ids[i]);
   }
-  in.read_positions(corners, {positions, 3 * m});
+  in.read_positions(corners, {positions, k * m});
   return out;
 }
 

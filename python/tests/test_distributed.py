@@ -3,6 +3,7 @@ triangles, its output checked here with numpy alone, and a worker killed while t
 
 import json
 import logging
+import math
 import os
 import pathlib
 import signal
@@ -228,6 +229,15 @@ def test_the_default_objective_is_bounded_by_the_in_memory_optimum(which, reques
     check_faces(quads, triangles, F)
     assert len(quads) == stats["pairs"] and len(triangles) == stats["triangles_left"]
     assert stats["objective"] == "quads" and stats["costs_certified"] is True
+    assert stats["input"] == str(path) and stats["output"] == str(out)
+    # The written quads' worst corners, measured here on the positions as read: the nearest
+    # rank of the costs binned per 1/1024 degree, the non-convex count exact.
+    cost = np.sort(petersen.quad_quality(petersen.read_mesh(str(path)).V, quads))
+    binned = np.floor(cost * 1024) / 1024
+    rank = lambda p: max(1, math.ceil(p * len(cost))) - 1  # noqa: E731
+    assert stats["quality_median"] == binned[rank(0.5)] > 0
+    assert stats["quality_p95"] == binned[rank(0.95)]
+    assert stats["nonconvex_quads"] == int((cost > 90).sum())
     memory = petersen.quadrangulate(V, F)
     assert memory.stats["optimality_certified"]
     optimum = memory.stats["objective_total"]
@@ -396,6 +406,9 @@ def test_all_quad_part_by_part_is_the_out_of_core_conversion(which, options, req
         assert stats[key] == ooc[key], key
     for key in ("split_quality_median", "split_quality_p95"):
         assert stats[key] == pytest.approx(ooc[key], abs=1e-3), key
+    # The pairing's quads measured as out of core measures them: the same binned figures.
+    for key in ("quality_median", "quality_p95", "nonconvex_quads"):
+        assert stats[key] == ooc[key], key
 
     memory = petersen.quadrangulate(V, F, all_quad=True, **options)
     print(f"{which} {options}: added vertices dask {stats['added_vertices']}, out of core "
