@@ -23,7 +23,9 @@ class QualityHistogram {
     ++figures_.quads;
     figures_.total += cost;
     figures_.nonconvex += cost > 90;
-    const double bin = std::floor(std::clamp(cost, 0.0, kMostDegrees) * kBinsPerDegree);
+    // A cost that is not a number counts as the worst (the comparison is false for NaN).
+    const double clamped = cost < kMostDegrees ? std::max(cost, 0.0) : kMostDegrees;
+    const double bin = std::floor(clamped * kBinsPerDegree);
     ++counts_[static_cast<std::size_t>(bin)];
   }
 

@@ -289,7 +289,8 @@ def _quality_counts(layout: PlyLayout, plan: Dict[str, np.ndarray]) -> Tuple[np.
         return np.zeros(_QUALITY_BINS, np.int64), 0
     corners = _corner_positions(layout, quads).reshape(-1, 3)
     cost = _petersen.quad_quality(corners, np.arange(len(corners), dtype=np.int64).reshape(-1, 4))
-    bins = np.floor(np.clip(cost, 0, 270) * _QUALITY_BINS_PER_DEGREE).astype(np.int64)
+    clamped = np.clip(np.nan_to_num(cost, nan=270.0), 0, 270)  # as out of core: NaN the worst
+    bins = np.floor(clamped * _QUALITY_BINS_PER_DEGREE).astype(np.int64)
     return np.bincount(bins, minlength=_QUALITY_BINS), int((cost > 90).sum())
 
 
