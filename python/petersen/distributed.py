@@ -720,8 +720,9 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
     Returns the statistics: the keys of ``petersen.quadrangulate``'s that apply (``input``,
     ``output``, ``faces_in``, ``vertices``, ``triangles``, ``pairs``, ``triangles_left``,
     ``quality_median`` and ``quality_p95``, as out of core of the costs binned per 1/1024 degree,
-    ``nonconvex_quads``, ``maximum_certified``, ``total_seconds``, ...) and the distributed figures (``parts``, ``part_cut_edges``,
-    ``unpaired_after_parts``, ``repair_*``, each stage's seconds); with ``all_quad`` the keys of
+    ``nonconvex_quads``, ``maximum_certified``, ``total_seconds``, ...) and the distributed
+    figures (``parts``, ``part_cut_edges``, ``unpaired_after_parts``, ``repair_*``, each stage's
+    seconds); with ``all_quad`` the keys of
     the out-of-core ``--stats-json`` (``added_vertices``, ``split_edges``, ``centre_vertices``,
     ``faces_out``, ``all_quad_parts_certified``, ``all_quad_certified`` False: no whole-mesh
     minimum is proved part by part). ``maximum_certified`` is True
