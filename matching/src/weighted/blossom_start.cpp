@@ -13,19 +13,26 @@ BlossomSolver::BlossomSolver(const BreadthFirstAdjacency& graph, MinCostStats& s
       stats_(stats),
       n_(graph.node_count()),
       ids_(std::size_t{n_} + n_ / 2 + 1),
-      rec_(n_, memory),
-      base_(n_, memory),
-      link_(n_, memory),
-      mark_(n_, 0, memory),
-      up_(n_, memory) {
+      rec_(memory),
+      base_(memory),
+      link_(memory),
+      mark_(memory),
+      up_(memory) {
   // Blossom ids get their entries when first handed out (new_blossom): reserving leaves the
   // pages untouched, and few of the n/2 ids are ever used (freed ids are reused first), where
-  // filling them all up front would first-touch 116 bytes per id.
+  // filling them all up front would first-touch 116 bytes per id. Reserved before the nodes'
+  // entries are made, so that these are not made, then moved into the larger block (two blocks
+  // first-touched and a copy, most of the set-up's time on fresh pages).
   rec_.reserve(ids_);
   base_.reserve(ids_);
   link_.reserve(ids_);
   mark_.reserve(ids_);
   up_.reserve(ids_);
+  rec_.resize(n_);
+  base_.resize(n_);
+  link_.resize(n_);
+  mark_.resize(n_, 0);
+  up_.resize(n_);
   children_.reserve(ids_ - n_);
   conn_.reserve(ids_ - n_);
   for (NodeId v = 0; v < n_; ++v) {

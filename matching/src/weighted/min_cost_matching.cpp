@@ -11,6 +11,7 @@
 
 #include "blossom_solver.hpp"
 #include "breadth_first_order.hpp"
+#include "doubled_order.hpp"
 #include "petersen/graph/connectivity.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/augment.hpp"
@@ -49,13 +50,10 @@ Cost fitting_total(WideCost total) {
 // The solver runs on the breadth-first renumbering (breadth_first_order.hpp says why: 4x fewer
 // cache misses per scanned neighbour on subdivided meshes); it writes the matching and the node
 // duals in the input's ids, the odd sets need no mapping. Returns the total cost exact, beside
-// the result, whose total_cost it leaves to the caller.
-template <class Graph>
-WideCost solve(const Graph& graph, std::span<const Cost> costs, const MinCostOptions& options,
-               MinCostResult& result) {
-  Stopwatch init;
-  const weighted_detail::BreadthFirstAdjacency order =
-      weighted_detail::breadth_first_adjacency(graph, costs, options.memory);
+// the result, whose total_cost it leaves to the caller. `init` runs from before the rows were
+// made: the start's time includes them.
+WideCost solve_on(const weighted_detail::BreadthFirstAdjacency& order,
+                  const MinCostOptions& options, Stopwatch init, MinCostResult& result) {
   weighted_detail::BlossomSolver solver(order, result.stats, options.memory);
   if (options.greedy_start) solver.greedy_start();
   if (options.short_searches) {
@@ -72,6 +70,14 @@ WideCost solve(const Graph& graph, std::span<const Cost> costs, const MinCostOpt
   const WideCost total = solver.write_result(order.new_node, result);
   result.stats.certificate_seconds = certificate.seconds();
   return total;
+}
+
+template <class Graph>
+WideCost solve(const Graph& graph, std::span<const Cost> costs, const MinCostOptions& options,
+               MinCostResult& result) {
+  Stopwatch init;
+  return solve_on(weighted_detail::breadth_first_adjacency(graph, costs, options.memory), options,
+                  init, result);
 }
 
 template <class Graph>
@@ -102,22 +108,14 @@ FirstCopy solve_doubled(const CsrGraph& graph, std::span<const Cost> costs,
   if (n > 0x7FFFFFFFu || std::uint64_t{2} * m + n > 0xFFFFFFFEu) {
     throw std::invalid_argument("min-cost matching: the doubled graph needs 32-bit ids");
   }
-  std::vector<std::array<NodeId, 2>> edges;
-  edges.reserve(std::size_t{2} * m + n);
-  for (EdgeId e = 0; e < m; ++e) edges.push_back(graph.endpoints(e));
-  for (EdgeId e = 0; e < m; ++e) {
-    const auto [a, b] = graph.endpoints(e);
-    edges.push_back({n + a, n + b});
-  }
-  for (NodeId v = 0; v < n; ++v) edges.push_back({v, n + v});
-  const CsrGraph doubled = CsrGraph::from_edges(2 * n, edges, options.memory);
-  std::vector<Cost> doubled_costs(costs.begin(), costs.end());
-  doubled_costs.insert(doubled_costs.end(), costs.begin(), costs.end());
-  doubled_costs.insert(doubled_costs.end(), pair_costs.begin(), pair_costs.end());
-
   // The doubled graph's own total (up to n edges of cost K) is not needed: the first copy's is.
+  // Its rows are made from G's (doubled_order.hpp); the matching and the certificate come back in
+  // its ids (v, n + v; edges e, m + e, 2m + v).
+  Stopwatch init;
   MinCostResult inner{.matching = Matching(0, options.memory)};
-  solve(doubled, doubled_costs, options, inner);
+  solve_on(
+      weighted_detail::doubled_breadth_first_adjacency(graph, costs, pair_costs, options.memory),
+      options, init, inner);
   FirstCopy first{.matching = Matching(n, options.memory)};
   // Both copies are optimal halves of equal objective (else the cheaper one, doubled, would
   // beat the optimum), so the first copy is optimal.
