@@ -4,11 +4,13 @@
 #include "petersen/partition/out_of_core.hpp"
 
 #include <algorithm>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
 #include "petersen/dualize/quad_of.hpp"
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/graph/parallel.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/io/file_error.hpp"
 #include "petersen/io/ply_stream.hpp"
@@ -42,6 +44,11 @@ constexpr std::uint32_t kCostBandRadius = 4;
 // parts, the buffers and the program itself.
 constexpr std::uint64_t kFixedBytes = std::uint64_t{256} << 20;
 
+// The cost objectives' parts paired at once (run_parts_at_cost), one per thread: the automatic
+// part size leaves each this share of the limit, on any number of threads, so that the parts, and
+// so the answer, do not depend on the threads.
+constexpr std::uint32_t kCostPartsInFlight = 2;
+
 // The smallest part: below it the open edges outweigh the triangles.
 constexpr std::uint64_t kMinPartTriangles = 64;
 
@@ -54,8 +61,10 @@ std::uint64_t part_size(const OutOfCoreOptions& options, std::uint64_t triangles
                               : objective == Objective::quads ? kQuadsBytesPerTriangle
                                                               : kQualityBytesPerTriangle;
     const std::uint64_t fixed = std::min(kFixedBytes, options.memory_limit / 2);
-    // A part with the end of the previous one it carries holds at most 1.5 parts (next_carry).
-    part = std::max(kMinPartTriangles, (options.memory_limit - fixed) / per * 2 / 3);
+    // A part with the end of the previous one it carries holds at most 1.5 parts (next_carry);
+    // the cost objectives' parts are paired kCostPartsInFlight at once.
+    const std::uint64_t share = objective == Objective::pairs ? 1 : kCostPartsInFlight;
+    part = std::max(kMinPartTriangles, (options.memory_limit - fixed) / per * 2 / 3 / share);
   }
   const std::uint64_t parts = std::max<std::uint64_t>(1, (triangles + part - 1) / part);
   // Parts of equal, even size: a part of odd size leaves a triangle unpaired for the repair.
@@ -127,37 +136,57 @@ struct CostPartsOutcome {
   bool certified = true;
 };
 
-// The part step over every part alone, with its corners' positions read from the vertex block.
+// One part of a cost objective paired alone, with its corners' positions read from the vertex
+// block. Reads the file only (PlyTriangleStream is safe to read from several threads).
+PartPairing pair_cost_part(const PlyTriangleStream& in, std::uint64_t first, std::uint64_t count,
+                           const OutOfCoreOptions& options, std::uint32_t threads) {
+  std::pmr::vector<VertexId> corners(3 * count, options.memory);
+  std::pmr::vector<std::array<double, 3>> positions(3 * count, options.memory);
+  in.read_faces(first, count, corners);
+  in.release_faces(first, count);
+  in.read_positions(corners, positions);
+  in.release_vertices(0, in.vertex_count());
+  return pair_part({.first_face = static_cast<FaceId>(first),
+                    .corners = corners,
+                    .corner_positions = positions},
+                   {.costs = options.costs,
+                    .augment = options.augment,
+                    .threads = threads,
+                    .memory = options.memory});
+}
+
+// The part step over every part alone. The parts are independent: up to kCostPartsInFlight of
+// them are paired at once, one per thread, and merged in part order, so that the result is the
+// same on any number of threads (part_size leaves each its share of the memory limit).
 CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& partner,
                                    std::uint64_t size, const OutOfCoreOptions& options,
                                    OutOfCoreStats& stats) {
   CostPartsOutcome out;
   const std::uint64_t n = in.face_count();
-  std::pmr::vector<VertexId> corners(options.memory);
-  std::pmr::vector<std::array<double, 3>> positions(options.memory);
-  for (std::uint64_t first = 0; first < n; first += size) {
-    const std::uint64_t count = std::min(size, n - first);
-    corners.resize(3 * count);
-    positions.resize(3 * count);
-    in.read_faces(first, count, corners);
-    in.release_faces(first, count);
-    in.read_positions(corners, positions);
-    in.release_vertices(0, in.vertex_count());
-    const PartPairing part = pair_part({.first_face = static_cast<FaceId>(first),
-                                        .corners = corners,
-                                        .corner_positions = positions},
-                                       {.costs = options.costs,
-                                        .augment = options.augment,
-                                        .threads = options.threads,
-                                        .memory = options.memory});
-    std::copy(part.partner.begin(), part.partner.end(), &partner[first]);
-    partner.release(first, count);
-    out.open_edges.insert(out.open_edges.end(), part.open_edges.begin(), part.open_edges.end());
-    out.seam.insert(out.seam.end(), part.seam.begin(), part.seam.end());
-    out.units += part.objective_units;
-    out.inner_structural_cuts += part.inner_structural_cuts;
-    out.certified = out.certified && part.optimality_certified;
-    ++stats.parts;
+  const std::uint32_t threads = resolve_threads(options.threads);
+  const std::uint32_t in_flight = std::min(threads, kCostPartsInFlight);
+  std::vector<std::optional<PartPairing>> batch(in_flight);
+  for (std::uint64_t start = 0; start < n; start += in_flight * size) {
+    run_parallel(in_flight, in_flight, [&](std::uint32_t slot) {
+      const std::uint64_t first = start + slot * size;
+      if (first >= n) return;
+      batch[slot].emplace(pair_cost_part(in, first, std::min(size, n - first), options,
+                                         std::max<std::uint32_t>(1, threads / in_flight)));
+    });
+    for (std::optional<PartPairing>& part : batch) {
+      if (!part) continue;
+      const std::uint64_t first = part->first_face;
+      std::copy(part->partner.begin(), part->partner.end(), &partner[first]);
+      partner.release(first, part->partner.size());
+      out.open_edges.insert(out.open_edges.end(), part->open_edges.begin(),
+                            part->open_edges.end());
+      out.seam.insert(out.seam.end(), part->seam.begin(), part->seam.end());
+      out.units += part->objective_units;
+      out.inner_structural_cuts += part->inner_structural_cuts;
+      out.certified = out.certified && part->optimality_certified;
+      ++stats.parts;
+      part.reset();
+    }
   }
   return out;
 }
