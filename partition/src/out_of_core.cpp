@@ -146,13 +146,12 @@ PartPairing pair_cost_part(const PlyTriangleStream& in, std::uint64_t first, std
   in.release_faces(first, count);
   in.read_positions(corners, positions);
   in.release_vertices(0, in.vertex_count());
-  return pair_part({.first_face = static_cast<FaceId>(first),
-                    .corners = corners,
-                    .corner_positions = positions},
-                   {.costs = options.costs,
-                    .augment = options.augment,
-                    .threads = threads,
-                    .memory = options.memory});
+  return pair_part(
+      {.first_face = static_cast<FaceId>(first), .corners = corners, .corner_positions = positions},
+      {.costs = options.costs,
+       .augment = options.augment,
+       .threads = threads,
+       .memory = options.memory});
 }
 
 // The part step over every part alone. The parts are independent: up to kCostPartsInFlight of
@@ -178,8 +177,7 @@ CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& p
       const std::uint64_t first = part->first_face;
       std::copy(part->partner.begin(), part->partner.end(), &partner[first]);
       partner.release(first, part->partner.size());
-      out.open_edges.insert(out.open_edges.end(), part->open_edges.begin(),
-                            part->open_edges.end());
+      out.open_edges.insert(out.open_edges.end(), part->open_edges.begin(), part->open_edges.end());
       out.seam.insert(out.seam.end(), part->seam.begin(), part->seam.end());
       out.units += part->objective_units;
       out.inner_structural_cuts += part->inner_structural_cuts;
