@@ -137,7 +137,7 @@ struct CostPartsOutcome {
 };
 
 // One part of a cost objective paired alone, with its corners' positions read from the vertex
-// block. Reads the file only (PlyTriangleStream is safe to read from several threads).
+// block. Reads the file only, so parts can be paired on several threads (ply_stream.hpp).
 PartPairing pair_cost_part(const PlyTriangleStream& in, std::uint64_t first, std::uint64_t count,
                            const OutOfCoreOptions& options, std::uint32_t threads) {
   std::pmr::vector<VertexId> corners(3 * count, options.memory);

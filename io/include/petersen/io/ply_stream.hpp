@@ -18,7 +18,9 @@ namespace petersen {
 /// A binary little-endian PLY whose elements are a vertex element of scalar properties and then
 /// a face element of one list, the corners, with an integer count and 32-bit indices. Mapped, not
 /// read: a range is read where it is asked for, and released() gives its pages back, so that
-/// the process holds only what it is working on. Not copyable.
+/// the process holds only what it is working on. Not copyable. Its const members may run on
+/// several threads at once: they only read the mapping (a range one thread releases, another
+/// faults in again from the page cache).
 class PlyTriangleStream {
  public:
   /// Maps the file and reads its header. Throws FileError naming the file (and the header line)
