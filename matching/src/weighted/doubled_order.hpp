@@ -10,75 +10,75 @@
 
 #include <cstdint>
 #include <span>
+#include <utility>
 
 #include "breadth_first_order.hpp"
 #include "petersen/graph/csr_graph.hpp"
 
 namespace petersen::weighted_detail {
 
-/// G's breadth-first order, component by component from the smallest unvisited id (a node
-/// without edges is a component of its own): the old id of each new id. O(n + m), iterative.
-inline std::pmr::vector<NodeId> breadth_first_visit(const CsrGraph& graph,
-                                                    std::pmr::memory_resource* memory) {
-  const std::uint32_t n = graph.node_count();
-  std::pmr::vector<NodeId> old_node(n, memory);
-  std::pmr::vector<std::uint8_t> seen(n, 0, memory);
-  std::uint32_t visited = 0;
-  for (NodeId root = 0; root < n; ++root) {
-    if (seen[root]) continue;
-    seen[root] = 1;
-    old_node[visited++] = root;
-    for (std::uint32_t head = visited - 1; head < visited; ++head) {
-      const NodeId v = old_node[head];
-      for (EdgeId e : graph.incident_edges(v)) {
-        const NodeId w = graph.other_end(e, v);
-        if (!seen[w]) {
-          seen[w] = 1;
-          old_node[visited++] = w;
-        }
-      }
-    }
-  }
-  return old_node;
-}
-
 /// The rows of the doubled graph (see the top) with `costs` by G's edge id and `pair_costs[v]`
-/// for the edge v–v'. Rows sorted by edge id, as breadth_first_adjacency's: a node's edges of G
-/// (or G') in G's edge order, then its twin's edge, whose id is the largest. O(n + m).
+/// for the edge v–v'. G's breadth-first order is taken component by component from the smallest
+/// unvisited id (a node without edges is a component of its own), and the rows are written as the
+/// search visits each node, as breadth_first_adjacency's are (it has just read the node's edges),
+/// sorted by edge id: a node's edges of G (or G') in G's edge order, then its twin's edge, whose
+/// id is the largest. O(n + m), iterative.
 inline BreadthFirstAdjacency doubled_breadth_first_adjacency(const CsrGraph& graph,
                                                              std::span<const Cost> costs,
                                                              std::span<const Cost> pair_costs,
                                                              std::pmr::memory_resource* memory) {
   const std::uint32_t n = graph.node_count(), m = graph.edge_count();
-  BreadthFirstAdjacency order{.new_node = std::pmr::vector<NodeId>(2 * std::size_t{n}, memory),
-                              .slots = std::pmr::vector<Slot>(memory),
-                              .first_slot = std::pmr::vector<std::size_t>(memory)};
-  const std::pmr::vector<NodeId> old_node = breadth_first_visit(graph, memory);
+  BreadthFirstAdjacency order{
+      .new_node = std::pmr::vector<NodeId>(2 * std::size_t{n}, kNoNode, memory),
+      .slots = std::pmr::vector<Slot>(memory),
+      .first_slot = std::pmr::vector<std::size_t>(memory)};
   bool uniform = true;
   for (NodeId v = 0; v < n; ++v) uniform = uniform && graph.degree(v) == graph.degree(0);
   order.uniform_degree = uniform && n > 0 ? graph.degree(0) + 1 : 0;
-  for (std::uint32_t i = 0; i < n; ++i) {
-    order.new_node[old_node[i]] = 2 * i;
-    order.new_node[n + old_node[i]] = 2 * i + 1;
-  }
   order.slots.resize(2 * (std::size_t{m} * 2 + n));
   if (order.uniform_degree == 0) order.first_slot.resize(2 * std::size_t{n} + 1);
+  // By new id of G: the visiting order, the search's queue; new_node[v] is 2·σ(v) once seen.
+  std::pmr::vector<NodeId> old_node(n, memory);
+  std::uint32_t visited = 0;
+  constexpr std::uint32_t kAhead = 8;  // as breadth_first_adjacency's prefetch
   Slot* last = order.slots.data();
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const NodeId v = old_node[i];
-    const std::span<const EdgeId> edges = graph.incident_edges(v);
-    for (NodeId twin = 0; twin < 2; ++twin) {
-      if (order.uniform_degree == 0) order.first_slot[2 * i + twin] = last - order.slots.data();
-      Slot* const first = last;
-      for (EdgeId e : edges) {
-        const NodeId w = order.new_node[graph.other_end(e, v)] + twin;
-        *last++ = {2 * costs[e], twin == 0 ? e : m + e, w};
-        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
-          std::swap(at[-1], *at);
+  for (NodeId root = 0; root < n; ++root) {
+    if (order.new_node[root] != kNoNode) continue;
+    order.new_node[root] = 2 * visited;
+    old_node[visited++] = root;
+    for (std::uint32_t head = visited - 1; head < visited; ++head) {
+      if (head + kAhead < visited) {
+        const NodeId ahead = old_node[head + kAhead];
+        for (EdgeId e : graph.incident_edges(ahead)) {
+          __builtin_prefetch(&costs[e]);
+          __builtin_prefetch(&order.new_node[graph.other_end(e, ahead)]);
+        }
       }
-      *last++ = {2 * pair_costs[v], 2 * m + v, 2 * i + 1 - twin};
+      const NodeId v = old_node[head];
+      Slot* const own = last;
+      for (EdgeId e : graph.incident_edges(v)) {
+        const NodeId w = graph.other_end(e, v);
+        if (order.new_node[w] == kNoNode) {
+          order.new_node[w] = 2 * visited;
+          old_node[visited++] = w;
+        }
+        *last++ = {2 * costs[e], e, order.new_node[w]};
+        for (Slot* at = last - 1; at != own && at[-1].edge > at->edge; --at) std::swap(at[-1], *at);
+      }
+      const std::size_t degree = last - own;
+      *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head + 1};
+      // The twin's row: the same edges in G', then the same edge v–v'.
+      for (std::size_t k = 0; k < degree; ++k) {
+        *last++ = {own[k].cost2, m + own[k].edge, own[k].other + 1};
+      }
+      *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head};
+      if (order.uniform_degree == 0) {
+        order.first_slot[2 * head] = own - order.slots.data();
+        order.first_slot[2 * head + 1] = own - order.slots.data() + degree + 1;
+      }
     }
   }
+  for (NodeId v = 0; v < n; ++v) order.new_node[n + v] = order.new_node[v] + 1;
   if (order.uniform_degree == 0) order.first_slot[2 * std::size_t{n}] = order.slots.size();
   return order;
 }
