@@ -7,6 +7,7 @@
 #include <string>
 
 #include "petersen/dualize/quad_quality.hpp"
+#include "petersen/graph/component_forest.hpp"
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/partition/partition.hpp"
@@ -260,6 +261,92 @@ Cost current_total(const SeamGraph& g, const CsrGraph& graph, std::span<const Co
   return total;
 }
 
+// The seam graph's components in batches of whole components, each at least `batch_faces`
+// nodes but the last (SeamInput::batch_faces): the whole optimum is the union of the components'
+// optima, and each solve holds only its batch (every cut's band at once, at 10^9 triangles, would
+// hold tens of millions of faces). Components in the order of their first nodes, their nodes
+// ascending, so the batches do not depend on the threads. O(s + e).
+template <class Visit>
+void for_each_batch(const CsrGraph& graph, std::uint32_t batch_faces, Visit visit) {
+  const std::uint32_t n = graph.node_count();
+  ComponentForest forest(n, graph.edge_ends());
+  std::vector<NodeId> root_of(n);
+  std::vector<std::uint32_t> size(n, 0), begin(n, 0);  // by root (0 for the other nodes)
+  for (NodeId v = 0; v < n; ++v) ++size[root_of[v] = forest.find(v)];
+  for (NodeId r = 0, at = 0; r < n; at += size[r], ++r) begin[r] = at;
+  std::vector<NodeId> order(n);
+  std::vector<std::uint32_t> next = begin;
+  for (NodeId v = 0; v < n; ++v) order[next[root_of[v]]++] = v;
+  std::size_t first = 0, last = 0;
+  for (NodeId r = 0; r < n; ++r) {
+    if (root_of[r] != r) continue;  // the roots, ascending: the components in order
+    last = begin[r] + size[r];
+    if (last - first >= batch_faces) {
+      visit(std::span<const NodeId>(order.data() + first, last - first));
+      first = last;
+    }
+  }
+  if (last > first) visit(std::span<const NodeId>(order.data() + first, last - first));
+}
+
+// One batch's minimum-cost matching (quads: leaving a face costs `price`; quality: the cheapest
+// maximum), its certificate checked, its pairs written into `matching` in the seam graph's edge
+// ids. Returns the batch's total in the solver's units.
+// `local` maps the seam graph's nodes to the batch's (any value outside the batch).
+Cost solve_batch(const CsrGraph& graph, std::span<const Cost> units, std::span<const NodeId> nodes,
+                 bool quads, Cost price, std::uint32_t threads, std::vector<NodeId>& local,
+                 Matching& matching) {
+  for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
+  std::vector<std::array<NodeId, 2>> edges;
+  std::vector<EdgeId> edge_of;
+  std::vector<Cost> batch_units;
+  for (const NodeId v : nodes) {
+    for (const EdgeId e : graph.incident_edges(v)) {
+      const NodeId w = graph.other_end(e, v);
+      if (v > w) continue;  // each edge once, from its lower end (a batch holds whole components)
+      edges.push_back({local[v], local[w]});
+      edge_of.push_back(e);
+      batch_units.push_back(units[e]);
+    }
+  }
+  const CsrGraph batch = CsrGraph::from_edges(static_cast<std::uint32_t>(nodes.size()), edges);
+  Matching found;
+  Cost total = 0;
+  if (quads) {
+    MinCostMatchingResult r =
+        min_cost_matching(batch, batch_units, {&price, 1}, {.threads = threads});
+    if (CertificateCheck check =
+            verify_min_cost_matching(batch.node_count(), batch.edge_ends(), batch_units,
+                                     {&price, 1}, r.matching, r.total, r.certificate);
+        !check.ok()) {
+      throw std::logic_error(
+          "internal error: the seams' least-cost pairing fails its "
+          "certificate: " +
+          check.problem);
+    }
+    total = r.total;
+    found = std::move(r.matching);
+  } else {
+    MinCostMaximumResult r = min_cost_maximum_matching(batch, batch_units, {.threads = threads});
+    if (CertificateCheck check = verify_min_cost_maximum_matching(
+            batch.node_count(), batch.edge_ends(), batch_units, r.matching, r.total_cost,
+            r.unmatched_cost, r.certificate);
+        !check.ok()) {
+      throw std::logic_error(
+          "internal error: the seams' cheapest maximum pairing fails its "
+          "certificate: " +
+          check.problem);
+    }
+    total = r.total_cost;
+    found = std::move(r.matching);
+  }
+  for (NodeId i = 0; i < nodes.size(); ++i) {
+    const EdgeId e = found.mate_edge[i];
+    matching.mate_edge[nodes[i]] = e == kNoEdge ? kNoEdge : edge_of[e];
+  }
+  return total;
+}
+
 }  // namespace
 
 SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint32_t threads) {
@@ -296,34 +383,13 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
   const Cost price =
       quads ? static_cast<Cost>(std::llround(costs.triangle_cost * kDefaultCostScale)) : 0;
   const Cost before = current_total(g, graph, g.units, price);
-  Matching matching;
-  if (quads) {
-    MinCostMatchingResult r = min_cost_matching(graph, g.units, {&price, 1}, {.threads = threads});
-    if (CertificateCheck check =
-            verify_min_cost_matching(graph.node_count(), graph.edge_ends(), g.units, {&price, 1},
-                                     r.matching, r.total, r.certificate);
-        !check.ok()) {
-      throw std::logic_error(
-          "internal error: the seams' least-cost pairing fails its "
-          "certificate: " +
-          check.problem);
-    }
-    result.objective_change = r.total - before;
-    matching = std::move(r.matching);
-  } else {
-    MinCostMaximumResult r = min_cost_maximum_matching(graph, g.units, {.threads = threads});
-    if (CertificateCheck check = verify_min_cost_maximum_matching(
-            graph.node_count(), graph.edge_ends(), g.units, r.matching, r.total_cost,
-            r.unmatched_cost, r.certificate);
-        !check.ok()) {
-      throw std::logic_error(
-          "internal error: the seams' cheapest maximum pairing fails its "
-          "certificate: " +
-          check.problem);
-    }
-    result.objective_change = r.total_cost - before;
-    matching = std::move(r.matching);
-  }
+  Matching matching(graph.node_count());
+  Cost after = 0;
+  std::vector<NodeId> local(graph.node_count());
+  for_each_batch(graph, input.batch_faces, [&](std::span<const NodeId> nodes) {
+    after += solve_batch(graph, g.units, nodes, quads, price, threads, local, matching);
+  });
+  result.objective_change = after - before;
   for (NodeId v = 0; v < graph.node_count(); ++v) {
     const EdgeId e = matching.mate_edge[v];
     const NodeId w = e == kNoEdge ? kNoNode : graph.other_end(e, v);

@@ -18,6 +18,7 @@
 #include "petersen/io/file_error.hpp"
 #include "petersen/io/ply_stream.hpp"
 #include "petersen/io/read_mesh.hpp"
+#include "petersen/partition/partition.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
 #include "petersen/quadrangulate/stages.hpp"
 #include "quad_mesh_check.hpp"
@@ -222,6 +223,42 @@ TEST(OutOfCore, CostObjectivesDoNotDependOnThreads) {
     }
     EXPECT_FALSE(bytes[0].empty());
     EXPECT_EQ(bytes[0], bytes[1]) << to_string(objective);
+  }
+}
+
+// The seam step solves its graph's components (the bands of the cuts between parts) in batches of
+// whole components: a component at a time gives the answer of all at once. Parts of 25 rows of
+// the grid, so that the bands of two cuts (4 steps deep) are apart.
+TEST(OutOfCore, SeamBatchesGiveTheAnswerOfOneBatch) {
+  const PolygonMesh mesh = jittered_grid({.nx = 60, .ny = 120, .jitter = 0.2});
+  const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+  std::vector<std::array<double, 3>> positions;
+  for (const VertexId c : corners) positions.push_back(mesh.positions[c]);
+  for (const Objective objective : {Objective::quads, Objective::quality}) {
+    const PartCosts costs{.objective = objective};
+    std::vector<SeamFace> seam;
+    std::vector<OpenEdge> open;
+    const std::uint64_t n = corners.size() / 3, part = 3000;
+    for (std::uint64_t first = 0; first < n; first += part) {
+      const std::uint64_t count = std::min(part, n - first);
+      const PartPairing p =
+          pair_part({.first_face = static_cast<FaceId>(first),
+                     .corners = std::span(corners).subspan(3 * first, 3 * count),
+                     .corner_positions = std::span(positions).subspan(3 * first, 3 * count)},
+                    {.costs = costs});
+      seam.insert(seam.end(), p.seam.begin(), p.seam.end());
+      open.insert(open.end(), p.open_edges.begin(), p.open_edges.end());
+    }
+    const CutPairing cut = pair_open_edges(std::move(open));
+    ASSERT_GT(cut.adjacencies.size(), 0u);
+    const SeamResult whole = pair_seams({seam, cut.adjacencies}, costs, 1);
+    const SeamResult each =
+        pair_seams({.faces = seam, .adjacencies = cut.adjacencies, .batch_faces = 0}, costs, 1);
+    EXPECT_TRUE(whole.certified && each.certified);
+    EXPECT_GT(whole.seam_graph_faces, 0u);
+    EXPECT_EQ(whole.objective_change, each.objective_change) << to_string(objective);
+    EXPECT_EQ(whole.partner, each.partner) << to_string(objective);
+    EXPECT_EQ(whole.pairs_across, each.pairs_across) << to_string(objective);
   }
 }
 
