@@ -128,9 +128,11 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
 }
 
 // What the cost objectives' part steps leave for the cut and seam steps.
+// The seam faces of all parts are held until the seam step (at 10^9 triangles, gigabytes): on the
+// default resource, which a program's pool serves, rather than beside what the pool keeps.
 struct CostPartsOutcome {
   std::vector<OpenEdge> open_edges;
-  std::vector<SeamFace> seam;
+  std::pmr::vector<SeamFace> seam;
   Cost units = 0;  // the sum of the parts' certified optima
   std::uint64_t inner_structural_cuts = 0;
   bool certified = true;

@@ -3,8 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory_resource>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/graph/component_forest.hpp"
@@ -20,7 +22,7 @@ constexpr std::uint32_t kAbsent = 0xFFFFFFFFu;
 
 // Seam face indices by face id. Throws std::invalid_argument for a face given twice.
 struct SeamIndex {
-  std::vector<std::uint32_t> by_face;
+  std::pmr::vector<std::uint32_t> by_face;
   std::span<const SeamFace> faces;
 
   explicit SeamIndex(std::span<const SeamFace> seam) : faces(seam) {
@@ -52,15 +54,15 @@ struct SeamIndex {
 
 // The candidate edges, each as two seam faces (the lower face first): the cut adjacencies, then
 // the pairable sides inside a part between two seam faces. O(s log s).
-std::vector<std::array<std::uint32_t, 2>> candidate_edges(
+std::pmr::vector<std::array<std::uint32_t, 2>> candidate_edges(
     const SeamIndex& index, std::span<const CutAdjacency> adjacencies) {
-  std::vector<std::array<std::uint32_t, 2>> ends;
+  std::pmr::vector<std::array<std::uint32_t, 2>> ends;
   for (const CutAdjacency& a : adjacencies) ends.push_back({index.at(a.first), index.at(a.second)});
   struct Side {
     VertexId low, high;
     std::uint32_t face;
   };
-  std::vector<Side> sides;
+  std::pmr::vector<Side> sides;
   for (std::uint32_t i = 0; i < index.faces.size(); ++i) {
     const SeamFace& f = index.faces[i];
     for (int k = 0; k < 3; ++k) {
@@ -87,11 +89,11 @@ std::vector<std::array<std::uint32_t, 2>> candidate_edges(
 // mesh of two triangles each, so that the cut and the measure are quadrangulate's own
 // (build_pairable_graph with the sharp angle, pairable_edge_quality from the lower face), then
 // the corner threshold.
-std::vector<double> measure(const SeamIndex& index,
-                            std::span<const std::array<std::uint32_t, 2>> ends,
-                            const PartCosts& costs, std::uint32_t threads) {
+std::pmr::vector<double> measure(const SeamIndex& index,
+                                 std::span<const std::array<std::uint32_t, 2>> ends,
+                                 const PartCosts& costs, std::uint32_t threads) {
   const std::size_t a = ends.size();
-  std::vector<double> degrees(a, std::nan(""));
+  std::pmr::vector<double> degrees(a, std::nan(""));
   PolygonMesh mesh;
   mesh.positions.resize(4 * a);
   mesh.corners.resize(6 * a);
@@ -129,7 +131,7 @@ std::vector<double> measure(const SeamIndex& index,
 std::int64_t dual_lowering(const SeamIndex& index,
                            std::span<const std::array<std::uint32_t, 2>> cross,
                            std::span<const double> degrees, std::span<const Cost> units) {
-  std::vector<std::array<std::int64_t, 2>> lowered(index.faces.size(), {0, 0});
+  std::pmr::vector<std::array<std::int64_t, 2>> lowered(index.faces.size(), {0, 0});
   std::int64_t total = 0;
   for (std::size_t i = 0; i < cross.size(); ++i) {
     if (std::isnan(degrees[i])) continue;
@@ -149,24 +151,24 @@ std::int64_t dual_lowering(const SeamIndex& index,
 // The seam graph: the seam faces near a cut and not held (paired outside the seams), the allowed
 // candidate edges between two of them, and each node's current partner node (kAbsent: unpaired).
 struct SeamGraph {
-  std::vector<std::uint32_t> face_of;  // seam face of each node
-  std::vector<std::uint32_t> mate;     // current partner node
-  std::vector<std::array<NodeId, 2>> edges;
-  std::vector<Cost> units;
-  std::vector<std::uint8_t> across;  // the edge is a cut adjacency
+  std::pmr::vector<std::uint32_t> face_of;  // seam face of each node
+  std::pmr::vector<std::uint32_t> mate;     // current partner node
+  std::pmr::vector<std::array<NodeId, 2>> edges;
+  std::pmr::vector<Cost> units;
+  std::pmr::vector<std::uint8_t> across;  // the edge is a cut adjacency
 };
 
 // The seam faces within the bands' depth of a cut adjacency, in steps across the allowed edges
 // (the bands also reach around the true boundary, whose faces no cut concerns), with the partners
 // of those reached, so that a pair is in or out whole: a breadth-first search from the
 // adjacencies' ends. O(s + e).
-std::vector<std::uint8_t> near_cuts(const SeamIndex& index,
-                                    std::span<const std::array<std::uint32_t, 2>> ends,
-                                    std::size_t cross, std::span<const double> degrees) {
+std::pmr::vector<std::uint8_t> near_cuts(const SeamIndex& index,
+                                         std::span<const std::array<std::uint32_t, 2>> ends,
+                                         std::size_t cross, std::span<const double> degrees) {
   const std::size_t s = index.faces.size();
   std::uint32_t depth = 0;
   for (const SeamFace& f : index.faces) depth = std::max(depth, f.distance);
-  std::vector<std::array<std::uint32_t, 3>> next(s, {kAbsent, kAbsent, kAbsent});
+  std::pmr::vector<std::array<std::uint32_t, 3>> next(s, {kAbsent, kAbsent, kAbsent});
   auto link = [&](std::uint32_t a, std::uint32_t b) {
     for (std::uint32_t& slot : next[a]) {
       if (slot == kAbsent) {
@@ -180,7 +182,7 @@ std::vector<std::uint8_t> near_cuts(const SeamIndex& index,
     link(ends[i][0], ends[i][1]);
     link(ends[i][1], ends[i][0]);
   }
-  std::vector<std::uint32_t> distance(s, kAbsent), queue;
+  std::pmr::vector<std::uint32_t> distance(s, kAbsent), queue;
   for (std::size_t i = 0; i < cross; ++i) {
     for (std::uint32_t f : ends[i]) {
       if (distance[f] == kAbsent) {
@@ -198,7 +200,7 @@ std::vector<std::uint8_t> near_cuts(const SeamIndex& index,
       queue.push_back(g);
     }
   }
-  std::vector<std::uint8_t> near(s, 0);
+  std::pmr::vector<std::uint8_t> near(s, 0);
   for (std::uint32_t f : queue) {
     near[f] = 1;
     const std::uint32_t p =
@@ -212,8 +214,8 @@ SeamGraph seam_graph(const SeamIndex& index, std::span<const std::array<std::uin
                      std::size_t cross, std::span<const double> degrees,
                      std::span<const Cost> units) {
   SeamGraph g;
-  const std::vector<std::uint8_t> near = near_cuts(index, ends, cross, degrees);
-  std::vector<std::uint32_t> node_of(index.faces.size(), kAbsent);
+  const std::pmr::vector<std::uint8_t> near = near_cuts(index, ends, cross, degrees);
+  std::pmr::vector<std::uint32_t> node_of(index.faces.size(), kAbsent);
   for (std::uint32_t i = 0; i < index.faces.size(); ++i) {
     const FaceId p = index.faces[i].partner;
     if (!near[i] || (p != kNoFace && index.find(p) == kAbsent)) continue;
@@ -270,12 +272,12 @@ template <class Visit>
 void for_each_batch(const CsrGraph& graph, std::uint32_t batch_faces, Visit visit) {
   const std::uint32_t n = graph.node_count();
   ComponentForest forest(n, graph.edge_ends());
-  std::vector<NodeId> root_of(n);
-  std::vector<std::uint32_t> size(n, 0), begin(n, 0);  // by root (0 for the other nodes)
+  std::pmr::vector<NodeId> root_of(n);
+  std::pmr::vector<std::uint32_t> size(n, 0), begin(n, 0);  // by root (0 for the other nodes)
   for (NodeId v = 0; v < n; ++v) ++size[root_of[v] = forest.find(v)];
   for (NodeId r = 0, at = 0; r < n; at += size[r], ++r) begin[r] = at;
-  std::vector<NodeId> order(n);
-  std::vector<std::uint32_t> next = begin;
+  std::pmr::vector<NodeId> order(n);
+  std::pmr::vector<std::uint32_t> next = begin;
   for (NodeId v = 0; v < n; ++v) order[next[root_of[v]]++] = v;
   std::size_t first = 0, last = 0;
   for (NodeId r = 0; r < n; ++r) {
@@ -294,12 +296,12 @@ void for_each_batch(const CsrGraph& graph, std::uint32_t batch_faces, Visit visi
 // ids. Returns the batch's total in the solver's units.
 // `local` maps the seam graph's nodes to the batch's (any value outside the batch).
 Cost solve_batch(const CsrGraph& graph, std::span<const Cost> units, std::span<const NodeId> nodes,
-                 bool quads, Cost price, std::uint32_t threads, std::vector<NodeId>& local,
+                 bool quads, Cost price, std::uint32_t threads, std::pmr::vector<NodeId>& local,
                  Matching& matching) {
   for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
-  std::vector<std::array<NodeId, 2>> edges;
-  std::vector<EdgeId> edge_of;
-  std::vector<Cost> batch_units;
+  std::pmr::vector<std::array<NodeId, 2>> edges;
+  std::pmr::vector<EdgeId> edge_of;
+  std::pmr::vector<Cost> batch_units;
   for (const NodeId v : nodes) {
     for (const EdgeId e : graph.incident_edges(v)) {
       const NodeId w = graph.other_end(e, v);
@@ -355,9 +357,10 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
     throw std::invalid_argument("pair_seams: Objective::pairs repairs by repair_cuts");
   }
   const SeamIndex index(input.faces);
-  const std::vector<std::array<std::uint32_t, 2>> ends = candidate_edges(index, input.adjacencies);
-  const std::vector<double> degrees = measure(index, ends, costs, threads);
-  std::vector<double> finite(degrees.size(), 0.0);
+  const std::pmr::vector<std::array<std::uint32_t, 2>> ends =
+      candidate_edges(index, input.adjacencies);
+  const std::pmr::vector<double> degrees = measure(index, ends, costs, threads);
+  std::pmr::vector<double> finite(degrees.size(), 0.0);
   for (std::size_t i = 0; i < degrees.size(); ++i)
     if (!std::isnan(degrees[i])) finite[i] = degrees[i];
   const std::pmr::vector<Cost> units = scale_costs(finite);
@@ -385,7 +388,7 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
   const Cost before = current_total(g, graph, g.units, price);
   Matching matching(graph.node_count());
   Cost after = 0;
-  std::vector<NodeId> local(graph.node_count());
+  std::pmr::vector<NodeId> local(graph.node_count());
   for_each_batch(graph, input.batch_faces, [&](std::span<const NodeId> nodes) {
     after += solve_batch(graph, g.units, nodes, quads, price, threads, local, matching);
   });
