@@ -229,11 +229,12 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
   if (!ends_with_nocase(args.output, ".ply")) {
     throw CLI::ValidationError("OUT", "the out-of-core conversion writes binary PLY (.ply)");
   }
-  // Each part's arrays are the next part's: kept in a pool up to the memory limit, they are not
-  // faulted in afresh for every part (memory_pool.hpp). It is the default resource for the run,
-  // in place of the program's, so that the run keeps no more than the limit.
+  // Each part's arrays are the next part's: kept in a pool, they are not faulted in afresh for
+  // every part (memory_pool.hpp). What it keeps and what it has handed out stay within the limit
+  // together (its footprint), so that kept memory never takes the run past it. It is the default
+  // resource for the run, in place of the program's, so that the run keeps no more than the limit.
   std::optional<HugePagePool> pool;
-  if (huge_page_pool_wanted()) pool.emplace(args.memory_limit);
+  if (huge_page_pool_wanted()) pool.emplace(args.memory_limit, args.memory_limit);
   std::pmr::memory_resource* const before = std::pmr::get_default_resource();
   if (pool) std::pmr::set_default_resource(&*pool);
   std::pmr::memory_resource* const memory = pool ? &*pool : before;

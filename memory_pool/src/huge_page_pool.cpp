@@ -74,9 +74,11 @@ void unmap(void* range, std::size_t) {
 }  // namespace
 
 #if defined(__linux__)
-HugePagePool::HugePagePool(std::size_t retained_bytes) : limit_(retained_bytes) {}
+HugePagePool::HugePagePool(std::size_t retained_bytes, std::size_t footprint_bytes)
+    : limit_(retained_bytes), footprint_(footprint_bytes) {}
 #else
-HugePagePool::HugePagePool(std::size_t) : limit_(0) {}
+HugePagePool::HugePagePool(std::size_t, std::size_t footprint_bytes)
+    : limit_(0), footprint_(footprint_bytes) {}
 #endif
 
 HugePagePool::~HugePagePool() {
@@ -158,6 +160,10 @@ void* HugePagePool::obtain(std::size_t bytes) {
 
 void* HugePagePool::acquire(std::size_t bytes, std::size_t used) {
   void* range = obtain(bytes);
+  {
+    const std::lock_guard lock(mutex_);
+    live_ += bytes;
+  }
 #if defined(__linux__) && defined(MADV_HUGEPAGE) && defined(MADV_NOHUGEPAGE)
   // Advice only (a refusal leaves ordinary pages). A kept range may hold a tail advised for an
   // earlier array: the whole range is advised afresh.
@@ -171,9 +177,10 @@ void* HugePagePool::acquire(std::size_t bytes, std::size_t used) {
 }
 
 void HugePagePool::release(void* range, std::size_t bytes) {
-  if (limit_ != 0) {
+  {
     const std::lock_guard lock(mutex_);
-    if (bytes_ + bytes <= limit_) {
+    live_ -= bytes;
+    if (limit_ != 0 && bytes_ + bytes <= limit_ && bytes_ + bytes + live_ <= footprint_) {
       ranges_.push_back({static_cast<char*>(range), bytes});
       bytes_ += bytes;
       return;

@@ -43,6 +43,22 @@ TEST(HugePagePool, KeepsNoMoreThanItsLimit) {
   EXPECT_EQ(pool.retained_limit(), kRange);
 }
 
+// Under a footprint, a range is kept only while the kept ranges and the live blocks fit in it:
+// with two blocks live, the first given back would take the pool past the footprint and is
+// unmapped; the second, with nothing live, is kept.
+TEST(HugePagePool, KeepsNothingPastItsFootprint) {
+  HugePagePool pool(4 * kRange, kRange + kRange / 2);
+  void* a = pool.allocate(kRange);
+  void* b = pool.allocate(kRange);
+  pool.deallocate(a, kRange);
+  EXPECT_EQ(pool.retained_bytes(), 0u);
+  pool.deallocate(b, kRange);
+  EXPECT_EQ(pool.retained_bytes(), kRange);
+  void* again = pool.allocate(kRange);
+  EXPECT_EQ(again, b);  // the kept range handed out again
+  pool.deallocate(again, kRange);
+}
+
 TEST(HugePagePool, MidSizeBlocksAreKeptRanges) {
   constexpr std::size_t kBlock = std::size_t{1} << 20;
   HugePagePool pool;

@@ -14,6 +14,7 @@
 // "madvise" mode; elsewhere the large blocks are plain aligned allocations and nothing is kept.
 
 #include <cstddef>
+#include <cstdint>
 #include <memory_resource>
 #include <mutex>
 #include <vector>
@@ -52,8 +53,12 @@ class HugePagePool final : public TailReleasingResource {
   static constexpr std::size_t kDefaultRetainedBytes = std::size_t{1} << 30;
 
   /// Keeps released ranges up to `retained_bytes` in all; 0 keeps none (large blocks are still
-  /// mapped on huge pages, and given back to the kernel at once).
-  explicit HugePagePool(std::size_t retained_bytes = kDefaultRetainedBytes);
+  /// mapped on huge pages, and given back to the kernel at once). A range is kept only while the
+  /// kept ranges and the blocks handed out from kPooledBytes up stay within `footprint_bytes`
+  /// too: a program under a memory limit passes it, so that what the pool keeps never adds to
+  /// what its live arrays hold past the limit.
+  explicit HugePagePool(std::size_t retained_bytes = kDefaultRetainedBytes,
+                        std::size_t footprint_bytes = SIZE_MAX);
   HugePagePool(const HugePagePool&) = delete;
   HugePagePool& operator=(const HugePagePool&) = delete;
   ~HugePagePool() override;
@@ -97,8 +102,10 @@ class HugePagePool final : public TailReleasingResource {
 
   const std::size_t limit_;
   mutable std::mutex mutex_;
+  const std::size_t footprint_;
   std::vector<Range> ranges_;  // under mutex_
-  std::size_t bytes_ = 0;      // under mutex_
+  std::size_t bytes_ = 0;      // under mutex_: kept
+  std::size_t live_ = 0;       // under mutex_: handed out as ranges (acquire), not yet released
 };
 
 }  // namespace petersen
