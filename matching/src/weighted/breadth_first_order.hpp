@@ -55,14 +55,63 @@ struct BreadthFirstAdjacency {
   }
 };
 
-/// Renumbers the nodes of `graph` in breadth-first order, component by component from the
-/// smallest unvisited id, and builds the rows with `costs` (by edge id). O(n + m), iterative.
-/// Throws GraphError, naming the input's node, when a node has no edge: no perfect matching.
+/// The breadth-first search both row builders run (this one and doubled_order.hpp's), component
+/// by component from the smallest unvisited id. A node seen first gets number[v] = step · (its
+/// place in the visiting order) (number starts all kNoNode); visit(place, v) then runs for each
+/// node in that order, its neighbours numbered by then, so that a builder writes the node's row
+/// from the edges the search has just read. O(n + m), iterative.
+template <class Graph, class Visit>
+void breadth_first_search(const Graph& graph, std::span<const Cost> costs, std::span<NodeId> number,
+                          std::uint32_t step, std::pmr::memory_resource* memory, Visit visit) {
+  const std::uint32_t n = graph.node_count();
+  std::pmr::vector<NodeId> old_node(n, memory);  // by place: the visiting order, the queue
+  std::uint32_t visited = 0;
+  constexpr std::uint32_t kAhead = 8;
+  for (NodeId root = 0; root < n; ++root) {
+    if (number[root] != kNoNode) continue;
+    number[root] = step * visited;
+    old_node[visited++] = root;
+    for (std::uint32_t head = visited - 1; head < visited; ++head) {
+      // The node 8 places ahead in the queue has its costs and its neighbours' numbers requested
+      // now, which the visit below would otherwise wait for one miss at a time: the search takes
+      // 0.077 s on rocker-arm-sub3's dual against 0.095 without, 4.5 ms on armadillo's against
+      // 5.5 (medians of five; 4, 16 and 32 places ahead do about as well).
+      if (head + kAhead < visited) {
+        const NodeId ahead = old_node[head + kAhead];
+        for (EdgeId e : graph.incident_edges(ahead)) {
+          __builtin_prefetch(&costs[e]);
+          __builtin_prefetch(&number[graph.other_end(e, ahead)]);
+        }
+      }
+      const NodeId v = old_node[head];
+      for (EdgeId e : graph.incident_edges(v)) {
+        const NodeId w = graph.other_end(e, v);
+        if (number[w] == kNoNode) {
+          number[w] = step * visited;
+          old_node[visited++] = w;
+        }
+      }
+      visit(head, v);
+    }
+  }
+}
+
+/// A node's slots sorted by edge id, in place (a node has a handful). O(d²).
+inline void sort_by_edge(Slot* first, Slot* last) {
+  for (Slot* at = first + 1; at < last; ++at) {
+    for (Slot* back = at; back != first && back[-1].edge > back->edge; --back)
+      std::swap(back[-1], *back);
+  }
+}
+
+/// Renumbers the nodes of `graph` in breadth-first order (breadth_first_search) and builds the
+/// rows with `costs` (by edge id). O(n + m), iterative. Throws GraphError, naming the input's
+/// node, when a node has no edge: no perfect matching.
 template <class Graph>
 BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<const Cost> costs,
                                               std::pmr::memory_resource* memory) {
   const std::uint32_t n = graph.node_count();
-  BreadthFirstAdjacency order{.new_node = std::pmr::vector<NodeId>(memory),
+  BreadthFirstAdjacency order{.new_node = std::pmr::vector<NodeId>(n, kNoNode, memory),
                               .slots = std::pmr::vector<Slot>(memory),
                               .first_slot = std::pmr::vector<std::size_t>(memory)};
   std::size_t slot_count = 0;
@@ -78,43 +127,15 @@ BreadthFirstAdjacency breadth_first_adjacency(const Graph& graph, std::span<cons
   order.uniform_degree = uniform && n > 0 ? static_cast<std::uint32_t>(slot_count / n) : 0;
   if (order.uniform_degree == 0) order.first_slot.resize(std::size_t{n} + 1);
   order.slots.resize(slot_count);
-  order.new_node.assign(n, kNoNode);
-  std::pmr::vector<NodeId> old_node(n,
-                                    memory);  // by new id: the visiting order, the search's queue
-  std::uint32_t visited = 0;
-  constexpr std::uint32_t kAhead = 8;
   Slot* last = order.slots.data();
-  for (NodeId root = 0; root < n; ++root) {
-    if (order.new_node[root] != kNoNode) continue;
-    order.new_node[root] = visited;
-    old_node[visited++] = root;
-    for (NodeId head = order.new_node[root]; head < visited; ++head) {
-      // The node 8 places ahead in the queue has its costs and its neighbours' new ids
-      // requested now, which the visit below would otherwise wait for one miss at a time:
-      // the search takes 0.077 s on rocker-arm-sub3's dual against 0.095 without, 4.5 ms on
-      // armadillo's against 5.5 (medians of five; 4, 16 and 32 places ahead do about as well).
-      if (head + kAhead < visited) {
-        const NodeId ahead = old_node[head + kAhead];
-        for (EdgeId e : graph.incident_edges(ahead)) {
-          __builtin_prefetch(&costs[e]);
-          __builtin_prefetch(&order.new_node[graph.other_end(e, ahead)]);
-        }
-      }
-      const NodeId v = old_node[head];
-      if (order.uniform_degree == 0) order.first_slot[head] = last - order.slots.data();
-      Slot* const first = last;
-      for (EdgeId e : graph.incident_edges(v)) {
-        const NodeId w = graph.other_end(e, v);
-        if (order.new_node[w] == kNoNode) {
-          order.new_node[w] = visited;
-          old_node[visited++] = w;
-        }
-        *last++ = {2 * costs[e], e, order.new_node[w]};
-        for (Slot* at = last - 1; at != first && at[-1].edge > at->edge; --at)
-          std::swap(at[-1], *at);
-      }
+  breadth_first_search(graph, costs, order.new_node, 1, memory, [&](NodeId head, NodeId v) {
+    if (order.uniform_degree == 0) order.first_slot[head] = last - order.slots.data();
+    Slot* const first = last;
+    for (EdgeId e : graph.incident_edges(v)) {
+      *last++ = {2 * costs[e], e, order.new_node[graph.other_end(e, v)]};
     }
-  }
+    sort_by_edge(first, last);
+  });
   if (order.uniform_degree == 0) order.first_slot[n] = slot_count;
   return order;
 }

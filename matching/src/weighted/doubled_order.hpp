@@ -37,47 +37,27 @@ inline BreadthFirstAdjacency doubled_breadth_first_adjacency(const CsrGraph& gra
   order.uniform_degree = uniform && n > 0 ? graph.degree(0) + 1 : 0;
   order.slots.resize(2 * (std::size_t{m} * 2 + n));
   if (order.uniform_degree == 0) order.first_slot.resize(2 * std::size_t{n} + 1);
-  // By new id of G: the visiting order, the search's queue; new_node[v] is 2·σ(v) once seen.
-  std::pmr::vector<NodeId> old_node(n, memory);
-  std::uint32_t visited = 0;
-  constexpr std::uint32_t kAhead = 8;  // as breadth_first_adjacency's prefetch
+  // G's search numbers v with 2·σ(v); its twin's number, one more, is set after.
   Slot* last = order.slots.data();
-  for (NodeId root = 0; root < n; ++root) {
-    if (order.new_node[root] != kNoNode) continue;
-    order.new_node[root] = 2 * visited;
-    old_node[visited++] = root;
-    for (std::uint32_t head = visited - 1; head < visited; ++head) {
-      if (head + kAhead < visited) {
-        const NodeId ahead = old_node[head + kAhead];
-        for (EdgeId e : graph.incident_edges(ahead)) {
-          __builtin_prefetch(&costs[e]);
-          __builtin_prefetch(&order.new_node[graph.other_end(e, ahead)]);
-        }
-      }
-      const NodeId v = old_node[head];
-      Slot* const own = last;
-      for (EdgeId e : graph.incident_edges(v)) {
-        const NodeId w = graph.other_end(e, v);
-        if (order.new_node[w] == kNoNode) {
-          order.new_node[w] = 2 * visited;
-          old_node[visited++] = w;
-        }
-        *last++ = {2 * costs[e], e, order.new_node[w]};
-        for (Slot* at = last - 1; at != own && at[-1].edge > at->edge; --at) std::swap(at[-1], *at);
-      }
-      const std::size_t degree = last - own;
-      *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head + 1};
-      // The twin's row: the same edges in G', then the same edge v–v'.
-      for (std::size_t k = 0; k < degree; ++k) {
-        *last++ = {own[k].cost2, m + own[k].edge, own[k].other + 1};
-      }
-      *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head};
-      if (order.uniform_degree == 0) {
-        order.first_slot[2 * head] = own - order.slots.data();
-        order.first_slot[2 * head + 1] = own - order.slots.data() + degree + 1;
-      }
+  const std::span<NodeId> number(order.new_node.data(), n);
+  breadth_first_search(graph, costs, number, 2, memory, [&](NodeId head, NodeId v) {
+    Slot* const own = last;
+    for (EdgeId e : graph.incident_edges(v)) {
+      *last++ = {2 * costs[e], e, order.new_node[graph.other_end(e, v)]};
     }
-  }
+    sort_by_edge(own, last);
+    const std::size_t degree = last - own;
+    *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head + 1};
+    // The twin's row: the same edges in G', then the same edge v–v'.
+    for (std::size_t k = 0; k < degree; ++k) {
+      *last++ = {own[k].cost2, m + own[k].edge, own[k].other + 1};
+    }
+    *last++ = {2 * pair_costs[v], 2 * m + v, 2 * head};
+    if (order.uniform_degree == 0) {
+      order.first_slot[2 * head] = own - order.slots.data();
+      order.first_slot[2 * head + 1] = own - order.slots.data() + degree + 1;
+    }
+  });
   for (NodeId v = 0; v < n; ++v) order.new_node[n + v] = order.new_node[v] + 1;
   if (order.uniform_degree == 0) order.first_slot[2 * std::size_t{n}] = order.slots.size();
   return order;
