@@ -312,33 +312,28 @@ Cost solve_batch(const CsrGraph& graph, std::span<const Cost> units, std::span<c
     }
   }
   const CsrGraph batch = CsrGraph::from_edges(static_cast<std::uint32_t>(nodes.size()), edges);
+  auto checked = [](const CertificateCheck& check, const char* pairing) {
+    if (!check.ok()) {
+      throw std::logic_error(std::string("internal error: the seams' ") + pairing +
+                             " fails its certificate: " + check.problem);
+    }
+  };
   Matching found;
   Cost total = 0;
   if (quads) {
     MinCostMatchingResult r =
         min_cost_matching(batch, batch_units, {&price, 1}, {.threads = threads});
-    if (CertificateCheck check =
-            verify_min_cost_matching(batch.node_count(), batch.edge_ends(), batch_units,
-                                     {&price, 1}, r.matching, r.total, r.certificate);
-        !check.ok()) {
-      throw std::logic_error(
-          "internal error: the seams' least-cost pairing fails its "
-          "certificate: " +
-          check.problem);
-    }
+    checked(verify_min_cost_matching(batch.node_count(), batch.edge_ends(), batch_units,
+                                     {&price, 1}, r.matching, r.total, r.certificate),
+            "least-cost pairing");
     total = r.total;
     found = std::move(r.matching);
   } else {
     MinCostMaximumResult r = min_cost_maximum_matching(batch, batch_units, {.threads = threads});
-    if (CertificateCheck check = verify_min_cost_maximum_matching(
-            batch.node_count(), batch.edge_ends(), batch_units, r.matching, r.total_cost,
-            r.unmatched_cost, r.certificate);
-        !check.ok()) {
-      throw std::logic_error(
-          "internal error: the seams' cheapest maximum pairing fails its "
-          "certificate: " +
-          check.problem);
-    }
+    checked(
+        verify_min_cost_maximum_matching(batch.node_count(), batch.edge_ends(), batch_units,
+                                         r.matching, r.total_cost, r.unmatched_cost, r.certificate),
+        "cheapest maximum pairing");
     total = r.total_cost;
     found = std::move(r.matching);
   }
