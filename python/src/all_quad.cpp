@@ -111,6 +111,18 @@ QuadOptions quad_options_of(const std::string& objective, bool keep_polygons,
   return options;
 }
 
+// An (n, 4) int64 array whose row i is row(items[i]).
+template <class Items, class Row>
+py::array_t<std::int64_t> rows_of_four(const Items& items, Row row) {
+  py::array_t<std::int64_t> out({items.size(), std::size_t{4}});
+  std::int64_t* at = out.mutable_data();
+  for (const auto& item : items) {
+    const std::array<std::int64_t, 4> r = row(item);
+    at = std::copy(r.begin(), r.end(), at);
+  }
+  return out;
+}
+
 // Step 1: the part's open edges as (low, high, component, kept) rows, each component's parity.
 py::dict part_parity_py(const Int64Array& corners, const UInt8Array& arity) {
   const PartFaces faces = part_faces_of(corners, arity);
@@ -120,13 +132,9 @@ py::dict part_parity_py(const Int64Array& corners, const UInt8Array& arity) {
     parity = part_parity(faces);
   }
   py::dict d;
-  py::array_t<std::int64_t> border({parity.border.size(), std::size_t{4}});
-  std::int64_t* b = border.mutable_data();
-  for (std::size_t i = 0; i < parity.border.size(); ++i) {
-    const SplitBorderEdge& e = parity.border[i];
-    b[4 * i] = e.low, b[4 * i + 1] = e.high, b[4 * i + 2] = e.component, b[4 * i + 3] = e.kept;
-  }
-  d["border"] = border;
+  d["border"] = rows_of_four(parity.border, [](const SplitBorderEdge& e) {
+    return std::array<std::int64_t, 4>{e.low, e.high, e.component, e.kept};
+  });
   d["component_odd"] =
       py::array_t<std::uint8_t>(parity.component_odd.size(), parity.component_odd.data());
   d["faces"] = parity.faces;
@@ -162,13 +170,9 @@ py::dict split_seams_py(const std::vector<Int64Array>& borders,
     seams = split_seams(parts);
   }
   py::dict d;
-  py::array_t<std::int64_t> edges({seams.edges.size(), std::size_t{4}});
-  std::int64_t* e = edges.mutable_data();
-  for (std::size_t i = 0; i < seams.edges.size(); ++i) {
-    const SplitSeams::Edge& s = seams.edges[i];
-    e[4 * i] = s.low, e[4 * i + 1] = s.high, e[4 * i + 2] = s.a, e[4 * i + 3] = s.b;
-  }
-  d["edges"] = edges;
+  d["edges"] = rows_of_four(seams.edges, [](const SplitSeams::Edge& e) {
+    return std::array<std::int64_t, 4>{e.low, e.high, e.a, e.b};
+  });
   d["node_start"] = py::array_t<std::int64_t>(
       seams.node_start.size(),
       std::vector<std::int64_t>(seams.node_start.begin(), seams.node_start.end()).data());
