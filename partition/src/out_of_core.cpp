@@ -17,7 +17,7 @@
 #include "petersen/partition/all_quad.hpp"
 #include "petersen/partition/partition.hpp"
 #include "quality_histogram.hpp"
-#include "temp_face_array.hpp"
+#include "temp_files.hpp"
 
 namespace petersen {
 
@@ -25,6 +25,7 @@ namespace {
 
 using partition_detail::QualityHistogram;
 using partition_detail::TempFaceArray;
+using partition_detail::TempRecords;
 
 // What a part costs per triangle at the part step's peak, its corners read from the file
 // included: 125 bytes per triangle of the largest part, measured on the closed 10^8 plate
@@ -127,12 +128,13 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
   return out;
 }
 
-// What the cost objectives' part steps leave for the cut and seam steps.
-// The seam faces of all parts are held until the seam step (at 10^9 triangles, gigabytes): on the
-// default resource, which a program's pool serves, rather than beside what the pool keeps.
+// What the cost objectives' part steps leave for the cut and seam steps. The seam faces of all
+// parts (at 10^9 triangles, gigabytes: 2.7 % of the triangles at 120 bytes each) wait for the
+// seam step in a temporary file, so that the parts have the whole limit.
 struct CostPartsOutcome {
+  explicit CostPartsOutcome(const std::string& beside) : seam(beside) {}
   std::vector<OpenEdge> open_edges;
-  std::pmr::vector<SeamFace> seam;
+  TempRecords<SeamFace> seam;
   Cost units = 0;  // the sum of the parts' certified optima
   std::uint64_t inner_structural_cuts = 0;
   bool certified = true;
@@ -160,9 +162,9 @@ PartPairing pair_cost_part(const PlyTriangleStream& in, std::uint64_t first, std
 // them are paired at once, one per thread, and merged in part order, so that the result is the
 // same on any number of threads (part_size leaves each its share of the memory limit).
 CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& partner,
-                                   std::uint64_t size, const OutOfCoreOptions& options,
-                                   OutOfCoreStats& stats) {
-  CostPartsOutcome out;
+                                   std::uint64_t size, const std::string& output,
+                                   const OutOfCoreOptions& options, OutOfCoreStats& stats) {
+  CostPartsOutcome out(output);
   const std::uint64_t n = in.face_count();
   const std::uint32_t threads = resolve_threads(options.threads);
   const std::uint32_t in_flight = std::min(threads, kCostPartsInFlight);
@@ -180,7 +182,7 @@ CostPartsOutcome run_parts_at_cost(const PlyTriangleStream& in, TempFaceArray& p
       std::copy(part->partner.begin(), part->partner.end(), &partner[first]);
       partner.release(first, part->partner.size());
       out.open_edges.insert(out.open_edges.end(), part->open_edges.begin(), part->open_edges.end());
-      out.seam.insert(out.seam.end(), part->seam.begin(), part->seam.end());
+      out.seam.append(part->seam);
       out.units += part->objective_units;
       out.inner_structural_cuts += part->inner_structural_cuts;
       out.certified = out.certified && part->optimality_certified;
@@ -517,21 +519,24 @@ void pair_maximum(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
 
 // The cost objectives' parts, cut and seams: the pairing in `partner`, the figures in `stats`.
 void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t size,
-                  const OutOfCoreOptions& options, OutOfCoreStats& stats, Stopwatch& clock) {
-  CostPartsOutcome parts = run_parts_at_cost(in, partner, size, options, stats);
+                  const std::string& output, const OutOfCoreOptions& options, OutOfCoreStats& stats,
+                  Stopwatch& clock) {
+  // The seam file is gone before the output is written, and is smaller than it: temp_bytes, the
+  // largest the temporary files get, is the pairing's and the output's.
+  CostPartsOutcome parts = run_parts_at_cost(in, partner, size, output, options, stats);
   stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
   stats.read_pair_seconds = clock.lap();
   const CutPairing cut = pair_open_edges(std::move(parts.open_edges));
   stats.cut_adjacencies = cut.adjacencies.size();
   stats.closed = cut.closed() && parts.inner_structural_cuts == 0;
   stats.cut_seconds = clock.lap();
-  const SeamResult seams =
-      pair_seams({parts.seam, cut.adjacencies}, options.costs, options.threads);
-  for (std::size_t i = 0; i < parts.seam.size(); ++i)
-    partner[parts.seam[i].face] = seams.partner[i];
+  std::pmr::vector<SeamFace> seam;  // on the default resource, which a program's pool serves
+  parts.seam.read_all(seam);
+  const SeamResult seams = pair_seams({seam, cut.adjacencies}, options.costs, options.threads);
+  for (std::size_t i = 0; i < seam.size(); ++i) partner[seam[i].face] = seams.partner[i];
   stats.pairs = count_pairing(partner, stats.triangles).first;
   stats.seam_pairs = seams.pairs_across;
-  stats.band_faces = parts.seam.size();
+  stats.band_faces = seam.size();
   stats.seam_graph_faces = seams.seam_graph_faces;
   const Cost total = parts.units + seams.objective_change;
   stats.objective_total = double(total) / kDefaultCostScale;
@@ -570,7 +575,7 @@ OutOfCoreStats quad_out_of_core(const std::string& input, const std::string& out
   TempFaceArray partner(output, stats.triangles);
   stats.temp_bytes = partner.bytes();
   if (options.costs.objective != Objective::pairs) {
-    pair_at_cost(in, partner, size, options, stats, clock);
+    pair_at_cost(in, partner, size, output, options, stats, clock);
   } else {
     pair_maximum(in, partner, size, options, stats, clock);
   }

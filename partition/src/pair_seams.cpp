@@ -88,38 +88,42 @@ std::pmr::vector<std::array<std::uint32_t, 2>> candidate_edges(
 // Each candidate edge's quad cost in degrees, or NaN where the pair is refused: the edges as a
 // mesh of two triangles each, so that the cut and the measure are quadrangulate's own
 // (build_pairable_graph with the sharp angle, pairable_edge_quality from the lower face), then
-// the corner threshold.
+// the corner threshold. The edges are independent, so they are measured kMeasureChunk at a time:
+// the meshes of all at once would outweigh the seam faces. O(a).
 std::pmr::vector<double> measure(const SeamIndex& index,
                                  std::span<const std::array<std::uint32_t, 2>> ends,
                                  const PartCosts& costs, std::uint32_t threads) {
-  const std::size_t a = ends.size();
-  std::pmr::vector<double> degrees(a, std::nan(""));
-  PolygonMesh mesh;
-  mesh.positions.resize(4 * a);
-  mesh.corners.resize(6 * a);
-  for (std::size_t i = 0; i < a; ++i) {
-    const SeamFace& low = index.faces[ends[i][0]];
-    const SeamFace& high = index.faces[ends[i][1]];
-    const VertexId base = static_cast<VertexId>(4 * i);
-    for (int k = 0; k < 3; ++k) {
-      mesh.corners[6 * i + k] = base + k;
-      mesh.positions[base + k] = low.positions[k];
-    }
-    for (int k = 0; k < 3; ++k) {
-      const auto* shared = std::find(low.corners.begin(), low.corners.end(), high.corners[k]);
-      const VertexId local =
-          shared != low.corners.end() ? base + VertexId(shared - low.corners.begin()) : base + 3;
-      mesh.corners[6 * i + 3 + k] = local;
-      mesh.positions[local] = high.positions[k];
-    }
-  }
+  constexpr std::size_t kMeasureChunk = std::size_t{1} << 20;
+  std::pmr::vector<double> degrees(ends.size(), std::nan(""));
   CutOptions cuts;
   cuts.sharp_angle_degrees = costs.sharp_angle_degrees;
-  const PairableGraph graph = build_pairable_graph(mesh, cuts, threads);
-  const std::pmr::vector<double> measured = pairable_edge_quality(graph, mesh, threads);
-  for (EdgeId e = 0; e < graph.edge_count(); ++e) {
-    if (!costs.max_corner_deviation || measured[e] <= *costs.max_corner_deviation) {
-      degrees[graph.edge_ends[2 * e] / 2] = measured[e];
+  PolygonMesh mesh;
+  for (std::size_t first = 0; first < ends.size(); first += kMeasureChunk) {
+    const std::size_t a = std::min(kMeasureChunk, ends.size() - first);
+    mesh.positions.resize(4 * a);
+    mesh.corners.resize(6 * a);
+    for (std::size_t i = 0; i < a; ++i) {
+      const SeamFace& low = index.faces[ends[first + i][0]];
+      const SeamFace& high = index.faces[ends[first + i][1]];
+      const VertexId base = static_cast<VertexId>(4 * i);
+      for (int k = 0; k < 3; ++k) {
+        mesh.corners[6 * i + k] = base + k;
+        mesh.positions[base + k] = low.positions[k];
+      }
+      for (int k = 0; k < 3; ++k) {
+        const auto* shared = std::find(low.corners.begin(), low.corners.end(), high.corners[k]);
+        const VertexId local =
+            shared != low.corners.end() ? base + VertexId(shared - low.corners.begin()) : base + 3;
+        mesh.corners[6 * i + 3 + k] = local;
+        mesh.positions[local] = high.positions[k];
+      }
+    }
+    const PairableGraph graph = build_pairable_graph(mesh, cuts, threads);
+    const std::pmr::vector<double> measured = pairable_edge_quality(graph, mesh, threads);
+    for (EdgeId e = 0; e < graph.edge_count(); ++e) {
+      if (!costs.max_corner_deviation || measured[e] <= *costs.max_corner_deviation) {
+        degrees[first + graph.edge_ends[2 * e] / 2] = measured[e];
+      }
     }
   }
   return degrees;

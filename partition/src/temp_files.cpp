@@ -1,4 +1,4 @@
-#include "temp_face_array.hpp"
+#include "temp_files.hpp"
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -24,7 +24,7 @@ int open_unnamed(const std::string& beside) {
   const std::string dir = folder.empty() ? "." : folder.string();
   int fd = ::open(dir.c_str(), O_TMPFILE | O_RDWR | O_CLOEXEC, 0600);
   if (fd >= 0) return fd;
-  std::string name = dir + "/.petersen-pairing-XXXXXX";
+  std::string name = dir + "/.petersen-temporary-XXXXXX";
   fd = ::mkostemp(name.data(), O_CLOEXEC);
   if (fd < 0) fail(beside, "cannot create a temporary file in its folder");
   ::unlink(name.c_str());
@@ -63,6 +63,43 @@ void TempFaceArray::release(std::uint64_t first, std::uint64_t count) {
   char* base = reinterpret_cast<char*>(data_);
   ::msync(base + begin, end - begin, MS_ASYNC);
   ::madvise(base + begin, end - begin, MADV_DONTNEED);
+}
+
+TempByteFile::TempByteFile(const std::string& beside) : beside_(beside) {
+  fd_ = open_unnamed(beside);
+}
+
+TempByteFile::~TempByteFile() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void TempByteFile::append(const void* bytes, std::uint64_t count) {
+  const char* from = static_cast<const char*>(bytes);
+  while (count > 0) {
+    const ssize_t written = ::pwrite(fd_, from, count, static_cast<off_t>(bytes_));
+    if (written < 0 && errno == EINTR) continue;
+    if (written == 0) errno = ENOSPC;
+    if (written <= 0) fail(beside_, "cannot write a temporary file");
+    from += written;
+    bytes_ += static_cast<std::uint64_t>(written);
+    count -= static_cast<std::uint64_t>(written);
+  }
+}
+
+void TempByteFile::read(std::uint64_t offset, std::uint64_t count, void* into) const {
+  char* to = static_cast<char*>(into);
+  const std::uint64_t first = offset;
+  while (count > 0) {
+    const ssize_t got = ::pread(fd_, to, count, static_cast<off_t>(offset));
+    if (got < 0 && errno == EINTR) continue;
+    if (got == 0) errno = EIO;
+    if (got <= 0) fail(beside_, "cannot read back a temporary file");
+    to += got;
+    offset += static_cast<std::uint64_t>(got);
+    count -= static_cast<std::uint64_t>(got);
+  }
+  ::posix_fadvise(fd_, static_cast<off_t>(first), static_cast<off_t>(offset - first),
+                  POSIX_FADV_DONTNEED);
 }
 
 }  // namespace petersen::partition_detail
