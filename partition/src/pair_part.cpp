@@ -305,8 +305,10 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
                                             PartPairing& result) {
   const std::pmr::vector<double> degrees =
       pairable_edge_quality(graph, mesh, options.threads, options.memory);
-  std::vector<std::array<NodeId, 2>> edges;
-  std::vector<double> kept;
+  std::pmr::vector<std::array<NodeId, 2>> edges(options.memory);
+  std::pmr::vector<double> kept(options.memory);
+  edges.reserve(graph.edge_count());
+  kept.reserve(graph.edge_count());
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     if (options.costs.max_corner_deviation && degrees[e] > *options.costs.max_corner_deviation)
       continue;
@@ -322,8 +324,9 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
         static_cast<Cost>(std::llround(options.costs.triangle_cost * kDefaultCostScale));
     MinCostMatchingResult r = min_cost_matching(
         csr, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
-    if (CertificateCheck check = verify_min_cost_matching(n, csr.edge_ends(), costs, {&price, 1},
-                                                          r.matching, r.total, r.certificate);
+    if (CertificateCheck check =
+            verify_min_cost_matching(n, csr.edge_ends(), costs, {&price, 1}, r.matching, r.total,
+                                     r.certificate, options.memory);
         !check.ok()) {
       throw std::logic_error("internal error: a part's least-cost pairing fails its certificate: " +
                              check.problem);
@@ -343,8 +346,9 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
   } else {
     MinCostMaximumResult r = min_cost_maximum_matching(
         csr, costs, {.threads = options.threads, .memory = options.memory});
-    if (CertificateCheck check = verify_min_cost_maximum_matching(
-            n, csr.edge_ends(), costs, r.matching, r.total_cost, r.unmatched_cost, r.certificate);
+    if (CertificateCheck check =
+            verify_min_cost_maximum_matching(n, csr.edge_ends(), costs, r.matching, r.total_cost,
+                                             r.unmatched_cost, r.certificate, options.memory);
         !check.ok()) {
       throw std::logic_error(
           "internal error: a part's cheapest maximum pairing fails its "

@@ -127,9 +127,9 @@ Matching cheapest_perfect_matching(const CubicGraph& cubic, std::span<const Cost
       cubic, costs, {.threads = options.threads, .memory = options.memory});
   add_min_cost_run(stats.matching, result.stats);
   clock.lap();
-  if (CertificateCheck check =
-          verify_min_cost_perfect_matching(cubic.node_count(), cubic.edge_ends(), costs,
-                                           result.matching, result.total_cost, result.certificate);
+  if (CertificateCheck check = verify_min_cost_perfect_matching(
+          cubic.node_count(), cubic.edge_ends(), costs, result.matching, result.total_cost,
+          result.certificate, options.memory);
       !check.ok()) {
     throw std::logic_error("internal error: the minimum-cost matching's certificate fails: " +
                            check.problem);
@@ -311,7 +311,7 @@ Matching cheapest_maximum_matching(const CsrGraph& open, std::span<const EdgeId>
   stats.matching.augment_seconds += clock.lap();
   if (CertificateCheck check = verify_min_cost_maximum_matching(
           open.node_count(), open.edge_ends(), local_costs, cheapest.matching, cheapest.total_cost,
-          cheapest.unmatched_cost, cheapest.certificate);
+          cheapest.unmatched_cost, cheapest.certificate, options.memory);
       !check.ok()) {
     throw std::logic_error(
         "internal error: the minimum-cost maximum matching's certificate fails: " + check.problem);
@@ -382,9 +382,9 @@ void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
       whole, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
   add_min_cost_run(stats.matching, result.stats);
   clock.lap();
-  if (CertificateCheck check =
-          verify_min_cost_matching(whole.node_count(), whole.edge_ends(), costs, {&price, 1},
-                                   result.matching, result.total, result.certificate);
+  if (CertificateCheck check = verify_min_cost_matching(
+          whole.node_count(), whole.edge_ends(), costs, {&price, 1}, result.matching, result.total,
+          result.certificate, options.memory);
       !check.ok()) {
     throw std::logic_error("internal error: the least-cost pairing's certificate fails: " +
                            check.problem);

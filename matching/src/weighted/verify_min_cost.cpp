@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory_resource>
 #include <numeric>
 #include <vector>
 
@@ -66,10 +67,12 @@ CertificateCheck check_matching(std::uint32_t n, std::span<const NodeId> edge_en
 // depth (parents before children), its node count, the values of it and every set above it,
 // and its outermost ancestor.
 struct Laminar {
-  std::vector<std::uint32_t> depth, order;
-  std::vector<std::uint64_t> size;
-  std::vector<Wide> chain;
-  std::vector<std::uint32_t> outermost;
+  explicit Laminar(std::pmr::memory_resource* memory)
+      : depth(memory), order(memory), size(memory), chain(memory), outermost(memory) {}
+  std::pmr::vector<std::uint32_t> depth, order;
+  std::pmr::vector<std::uint64_t> size;
+  std::pmr::vector<Wide> chain;
+  std::pmr::vector<std::uint32_t> outermost;
 };
 
 // The sets: a forest by their parents (any family of sets given this way is laminar), each
@@ -89,9 +92,9 @@ CertificateCheck check_sets(std::uint32_t n, const MatchingCertificate& c, Lamin
   // Depths, walking each set up to a set of known depth; a walk longer than the number of sets
   // is a cycle.
   constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
-  std::vector<std::uint32_t>& depth = family.depth;
+  std::pmr::vector<std::uint32_t>& depth = family.depth;
   depth.assign(sets, kUnknown);
-  std::vector<std::uint32_t> walk;
+  std::pmr::vector<std::uint32_t> walk(depth.get_allocator());
   for (std::size_t s = 0; s < sets; ++s) {
     walk.clear();
     std::uint32_t at = static_cast<std::uint32_t>(s);
@@ -104,14 +107,14 @@ CertificateCheck check_sets(std::uint32_t n, const MatchingCertificate& c, Lamin
     std::uint32_t d = at == kNoSet ? 0 : depth[at] + 1;
     for (std::size_t i = walk.size(); i-- > 0;) depth[walk[i]] = d++;
   }
-  std::vector<std::uint32_t>& order = family.order;
+  std::pmr::vector<std::uint32_t>& order = family.order;
   order.resize(sets);
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(),
                    [&](std::uint32_t a, std::uint32_t b) { return depth[a] < depth[b]; });
-  std::vector<std::uint64_t>& size = family.size;
+  std::pmr::vector<std::uint64_t>& size = family.size;
   size.assign(sets, 0);
-  std::vector<std::uint64_t> largest_child(sets, 0);
+  std::pmr::vector<std::uint64_t> largest_child(sets, 0, depth.get_allocator());
   for (NodeId v = 0; v < n; ++v) {
     if (innermost[v] == kNoSet) continue;
     if (innermost[v] >= sets)
@@ -130,9 +133,9 @@ CertificateCheck check_sets(std::uint32_t n, const MatchingCertificate& c, Lamin
       largest_child[parent[s]] = std::max(largest_child[parent[s]], size[s]);
     }
   }
-  std::vector<Wide>& chain = family.chain;
+  std::pmr::vector<Wide>& chain = family.chain;
   chain.assign(sets, 0);
-  std::vector<std::uint32_t>& outermost = family.outermost;
+  std::pmr::vector<std::uint32_t>& outermost = family.outermost;
   outermost.resize(sets);
   for (std::uint32_t s : order) {
     chain[s] = c.set_dual[s] + (parent[s] == kNoSet ? 0 : chain[parent[s]]);
@@ -169,7 +172,7 @@ CertificateCheck check_duals(std::uint32_t n, std::span<const NodeId> edge_ends,
     return Wide{c.node_dual[v]} + (innermost[v] == kNoSet ? 0 : chain[innermost[v]]);
   };
   // Reduced costs; matched edges are tight; count the matched edges inside each set.
-  std::vector<std::uint64_t> inside(sets, 0);
+  std::pmr::vector<std::uint64_t> inside(sets, 0, family.depth.get_allocator());
   for (std::size_t e = 0; e < m; ++e) {
     const NodeId u = edge_ends[2 * e], v = edge_ends[2 * e + 1];
     if (u >= n || v >= n || u == v) return fail("edge " + std::to_string(e) + " has bad ends");
@@ -205,12 +208,13 @@ CertificateCheck check_duals(std::uint32_t n, std::span<const NodeId> edge_ends,
 // The perfect-matching check with a 128-bit claimed total (the doubled graph's may pass 2^63).
 CertificateCheck check_perfect(std::uint32_t n, std::span<const NodeId> edge_ends,
                                std::span<const Cost> costs, const Matching& matching,
-                               Wide total_cost, const MatchingCertificate& certificate) {
+                               Wide total_cost, const MatchingCertificate& certificate,
+                               std::pmr::memory_resource* memory) {
   Wide primal = 0;
   if (CertificateCheck check = check_matching(n, edge_ends, costs, matching, total_cost, primal);
       !check.ok())
     return check;
-  Laminar family;
+  Laminar family(memory);
   if (CertificateCheck check = check_sets(n, certificate, family); !check.ok()) return check;
   return check_duals(n, edge_ends, costs, matching, primal, certificate, family);
 }
@@ -225,11 +229,12 @@ std::uint64_t free_count(const Matching& matching) {
 // pair_costs[v]; the perfect matching M ∪ M' ∪ {v–v' : v free in M}, checked with the certificate
 // at total h_total. The caller has checked the sizes of costs and matching.
 CertificateCheck check_doubled(std::uint32_t n, std::span<const NodeId> edge_ends,
-                               std::span<const Cost> costs, const std::vector<Cost>& pair_costs,
+                               std::span<const Cost> costs, std::span<const Cost> pair_costs,
                                const Matching& matching, Wide h_total,
-                               const MatchingCertificate& certificate) {
+                               const MatchingCertificate& certificate,
+                               std::pmr::memory_resource* memory) {
   const std::size_t m = edge_ends.size() / 2;
-  std::vector<NodeId> ends;
+  std::pmr::vector<NodeId> ends(memory);
   ends.reserve(4 * m + 2 * n);
   for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(edge_ends[i]);
   for (std::size_t i = 0; i < 2 * m; ++i) ends.push_back(n + edge_ends[i]);
@@ -237,10 +242,12 @@ CertificateCheck check_doubled(std::uint32_t n, std::span<const NodeId> edge_end
     ends.push_back(v);
     ends.push_back(n + v);
   }
-  std::vector<Cost> h_costs(costs.begin(), costs.end());
+  std::pmr::vector<Cost> h_costs(memory);
+  h_costs.reserve(2 * m + n);
+  h_costs.insert(h_costs.end(), costs.begin(), costs.end());
   h_costs.insert(h_costs.end(), costs.begin(), costs.end());
   h_costs.insert(h_costs.end(), pair_costs.begin(), pair_costs.end());
-  Matching h(2 * n);
+  Matching h(2 * n, memory);
   for (NodeId v = 0; v < n; ++v) {
     const EdgeId e = matching.mate_edge[v];
     if (e == kNoEdge) {
@@ -253,7 +260,7 @@ CertificateCheck check_doubled(std::uint32_t n, std::span<const NodeId> edge_end
       h.mate_edge[n + v] = static_cast<EdgeId>(m + e);
     }
   }
-  CertificateCheck check = check_perfect(2 * n, ends, h_costs, h, h_total, certificate);
+  CertificateCheck check = check_perfect(2 * n, ends, h_costs, h, h_total, certificate, memory);
   if (!check.ok()) check.problem = "doubled graph: " + check.problem;
   return check;
 }
@@ -264,16 +271,15 @@ CertificateCheck verify_min_cost_perfect_matching(std::uint32_t n,
                                                   std::span<const NodeId> edge_ends,
                                                   std::span<const Cost> costs,
                                                   const Matching& matching, Cost total_cost,
-                                                  const MatchingCertificate& certificate) {
-  return check_perfect(n, edge_ends, costs, matching, total_cost, certificate);
+                                                  const MatchingCertificate& certificate,
+                                                  std::pmr::memory_resource* memory) {
+  return check_perfect(n, edge_ends, costs, matching, total_cost, certificate, memory);
 }
 
-CertificateCheck verify_min_cost_maximum_matching(std::uint32_t n,
-                                                  std::span<const NodeId> edge_ends,
-                                                  std::span<const Cost> costs,
-                                                  const Matching& matching, Cost total_cost,
-                                                  Cost unmatched_cost,
-                                                  const MatchingCertificate& certificate) {
+CertificateCheck verify_min_cost_maximum_matching(
+    std::uint32_t n, std::span<const NodeId> edge_ends, std::span<const Cost> costs,
+    const Matching& matching, Cost total_cost, Cost unmatched_cost,
+    const MatchingCertificate& certificate, std::pmr::memory_resource* memory) {
   const std::size_t m = edge_ends.size() / 2;
   if (costs.size() != m) return fail("costs: wrong size");
   if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
@@ -284,30 +290,31 @@ CertificateCheck verify_min_cost_maximum_matching(std::uint32_t n,
   }
   // K must exceed the cost difference of any two matchings: at most ν·(most − least), ν their
   // size, at most half the nodes some edge (not a loop) touches and at most those edges.
-  std::vector<bool> touched(n, false);
+  std::pmr::vector<std::uint8_t> touched(n, 0, memory);
   std::uint64_t edges = 0;
   for (std::size_t e = 0; e < m; ++e) {
     const NodeId a = edge_ends[2 * e], b = edge_ends[2 * e + 1];
     if (a == b || a >= n || b >= n) continue;
-    touched[a] = touched[b] = true;
+    touched[a] = touched[b] = 1;
     ++edges;
   }
   const auto touched_count =
-      static_cast<std::uint64_t>(std::count(touched.begin(), touched.end(), true));
+      static_cast<std::uint64_t>(std::count(touched.begin(), touched.end(), 1));
   const Wide needed = 1 + Wide{std::min(touched_count / 2, edges)} * (most - least);
   if (Wide{unmatched_cost} < needed) {
     return fail("unmatched cost " + std::to_string(unmatched_cost) + " is below " + str(needed));
   }
   const Wide h_total = 2 * Wide{total_cost} + Wide{unmatched_cost} * free_count(matching);
-  return check_doubled(n, edge_ends, costs, std::vector<Cost>(n, unmatched_cost), matching, h_total,
-                       certificate);
+  const std::pmr::vector<Cost> pair_costs(n, unmatched_cost, memory);
+  return check_doubled(n, edge_ends, costs, pair_costs, matching, h_total, certificate, memory);
 }
 
 CertificateCheck verify_min_cost_matching(std::uint32_t n, std::span<const NodeId> edge_ends,
                                           std::span<const Cost> costs,
                                           std::span<const Cost> unmatched_cost,
                                           const Matching& matching, Cost total,
-                                          const MatchingCertificate& certificate) {
+                                          const MatchingCertificate& certificate,
+                                          std::pmr::memory_resource* memory) {
   const std::size_t m = edge_ends.size() / 2;
   if (costs.size() != m) return fail("costs: wrong size");
   if (matching.mate_edge.size() != n) return fail("matching has the wrong size");
@@ -315,7 +322,7 @@ CertificateCheck verify_min_cost_matching(std::uint32_t n, std::span<const NodeI
     return fail("unmatched costs: " + std::to_string(unmatched_cost.size()) + " for " +
                 std::to_string(n) + " nodes");
   // The objective: the matched edges (counted at their first end) and the free nodes' prices.
-  std::vector<Cost> pair_costs(n);
+  std::pmr::vector<Cost> pair_costs(n, memory);
   Wide objective = 0;
   for (NodeId v = 0; v < n; ++v) {
     const Cost price = unmatched_cost[unmatched_cost.size() == 1 ? 0 : v];
@@ -333,7 +340,8 @@ CertificateCheck verify_min_cost_matching(std::uint32_t n, std::span<const NodeI
   if (objective != total)
     return fail("the matched costs and unmatched prices sum to " + str(objective) + ", not " +
                 str(total));
-  return check_doubled(n, edge_ends, costs, pair_costs, matching, 2 * Wide{total}, certificate);
+  return check_doubled(n, edge_ends, costs, pair_costs, matching, 2 * Wide{total}, certificate,
+                       memory);
 }
 
 }  // namespace petersen

@@ -3,6 +3,7 @@
 // shares no code with the solver and proves optimality by weak duality, in exact arithmetic.
 
 #include <cstdint>
+#include <memory_resource>
 #include <span>
 #include <string>
 
@@ -18,6 +19,8 @@ struct CertificateCheck {
   bool ok() const { return problem.empty(); }
 };
 
+/// Each check's scratch (the doubled graph is as large as the solver's) comes from `memory`.
+
 /// Checks that `matching` is a perfect matching of the graph given by its edge ends (edge e
 /// joins edge_ends[2e] and edge_ends[2e+1]; CubicGraph::edge_ends and CsrGraph::edge_ends), that
 /// its cost is `total_cost`, and that `certificate` proves it minimum: the set forest has no
@@ -26,23 +29,21 @@ struct CertificateCheck {
 /// and 0 on matched edges; every set with a positive value holds (|S| − 1)/2 matched edges; and
 /// the values sum to 2·total_cost. In 128-bit integers. O(n + m·d + s log s) for s sets nested
 /// at most d deep.
-CertificateCheck verify_min_cost_perfect_matching(std::uint32_t node_count,
-                                                  std::span<const NodeId> edge_ends,
-                                                  std::span<const Cost> costs,
-                                                  const Matching& matching, Cost total_cost,
-                                                  const MatchingCertificate& certificate);
+CertificateCheck verify_min_cost_perfect_matching(
+    std::uint32_t node_count, std::span<const NodeId> edge_ends, std::span<const Cost> costs,
+    const Matching& matching, Cost total_cost, const MatchingCertificate& certificate,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Checks a min_cost_matching result: rebuilds the doubled graph H (see min_cost_matching.hpp)
 /// with v–v' at 2·price(v) (`unmatched_cost`: one price per node, or one for all) and its
 /// perfect matching M ∪ M' ∪ {v–v' : v free in M} from `matching`, checks that `total` is the
 /// matched costs plus the prices of the free nodes, and checks the certificate on H with total
 /// 2·total. Then no matching of any size has a smaller cost plus prices. In 128-bit integers.
-CertificateCheck verify_min_cost_matching(std::uint32_t node_count,
-                                          std::span<const NodeId> edge_ends,
-                                          std::span<const Cost> costs,
-                                          std::span<const Cost> unmatched_cost,
-                                          const Matching& matching, Cost total,
-                                          const MatchingCertificate& certificate);
+CertificateCheck verify_min_cost_matching(
+    std::uint32_t node_count, std::span<const NodeId> edge_ends, std::span<const Cost> costs,
+    std::span<const Cost> unmatched_cost, const Matching& matching, Cost total,
+    const MatchingCertificate& certificate,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 /// Checks a min_cost_maximum_matching result: rebuilds the doubled graph H and its perfect
 /// matching M ∪ M' ∪ {v–v' : v free in M} from `matching` (see min_cost_matching.hpp), checks
@@ -50,11 +51,10 @@ CertificateCheck verify_min_cost_matching(std::uint32_t node_count,
 /// lesser of half the nodes an edge (not a loop) touches and the number of such edges, and checks
 /// the certificate on H with total 2·total_cost + K·(free nodes). Then `matching` is of maximum
 /// size and, among those, of minimum cost.
-CertificateCheck verify_min_cost_maximum_matching(std::uint32_t node_count,
-                                                  std::span<const NodeId> edge_ends,
-                                                  std::span<const Cost> costs,
-                                                  const Matching& matching, Cost total_cost,
-                                                  Cost unmatched_cost,
-                                                  const MatchingCertificate& certificate);
+CertificateCheck verify_min_cost_maximum_matching(
+    std::uint32_t node_count, std::span<const NodeId> edge_ends, std::span<const Cost> costs,
+    const Matching& matching, Cost total_cost, Cost unmatched_cost,
+    const MatchingCertificate& certificate,
+    std::pmr::memory_resource* memory = std::pmr::get_default_resource());
 
 }  // namespace petersen
