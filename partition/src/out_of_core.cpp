@@ -37,10 +37,6 @@ constexpr std::uint64_t kBytesPerTriangle = 120;
 // price, and a search that leaves more trees open on a part's open border.
 constexpr std::uint64_t kQuadsBytesPerTriangle = 600;
 constexpr std::uint64_t kQualityBytesPerTriangle = 700;
-// The cost objectives' band depth: the seam step pairs again the faces this close to a cut. The
-// bands of all parts are held until then, and a band reaches around the true boundary (holes) as
-// around the cuts, so it is kept narrow.
-constexpr std::uint32_t kCostBandRadius = 4;
 // Kept back from the limit for what does not scale with the part: the bands and open edges of all
 // parts, the buffers and the program itself.
 constexpr std::uint64_t kFixedBytes = std::uint64_t{256} << 20;
