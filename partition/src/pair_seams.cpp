@@ -88,18 +88,18 @@ std::pmr::vector<std::array<std::uint32_t, 2>> candidate_edges(
 // Each candidate edge's quad cost in degrees, or NaN where the pair is refused: the edges as a
 // mesh of two triangles each, so that the cut and the measure are quadrangulate's own
 // (build_pairable_graph with the sharp angle, pairable_edge_quality from the lower face), then
-// the corner threshold. The edges are independent, so they are measured kMeasureChunk at a time:
-// the meshes of all at once would outweigh the seam faces. O(a).
+// the corner threshold. The edges are independent, so they are measured `batch` at a time (at
+// least one): the meshes of all at once would outweigh the seam faces. O(a).
 std::pmr::vector<double> measure(const SeamIndex& index,
                                  std::span<const std::array<std::uint32_t, 2>> ends,
-                                 const PartCosts& costs, std::uint32_t threads) {
-  constexpr std::size_t kMeasureChunk = std::size_t{1} << 20;
+                                 const PartCosts& costs, std::size_t batch, std::uint32_t threads) {
+  const std::size_t chunk = std::max<std::size_t>(1, batch);
   std::pmr::vector<double> degrees(ends.size(), std::nan(""));
   CutOptions cuts;
   cuts.sharp_angle_degrees = costs.sharp_angle_degrees;
   PolygonMesh mesh;
-  for (std::size_t first = 0; first < ends.size(); first += kMeasureChunk) {
-    const std::size_t a = std::min(kMeasureChunk, ends.size() - first);
+  for (std::size_t first = 0; first < ends.size(); first += chunk) {
+    const std::size_t a = std::min(chunk, ends.size() - first);
     mesh.positions.resize(4 * a);
     mesh.corners.resize(6 * a);
     for (std::size_t i = 0; i < a; ++i) {
@@ -358,7 +358,7 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
   const SeamIndex index(input.faces);
   const std::pmr::vector<std::array<std::uint32_t, 2>> ends =
       candidate_edges(index, input.adjacencies);
-  const std::pmr::vector<double> degrees = measure(index, ends, costs, threads);
+  const std::pmr::vector<double> degrees = measure(index, ends, costs, input.batch_faces, threads);
   std::pmr::vector<double> finite(degrees.size(), 0.0);
   for (std::size_t i = 0; i < degrees.size(); ++i)
     if (!std::isnan(degrees[i])) finite[i] = degrees[i];

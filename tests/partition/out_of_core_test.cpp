@@ -226,9 +226,10 @@ TEST(OutOfCore, CostObjectivesDoNotDependOnThreads) {
   }
 }
 
-// The seam step solves its graph's components (the bands of the cuts between parts) in batches of
-// whole components: a component at a time gives the answer of all at once. Parts of 25 rows of
-// the grid, so that the bands of two cuts (4 steps deep) are apart.
+// The seam step measures its candidate edges in batches and solves its graph's components (the
+// bands of the cuts between parts) in batches of whole components: an edge and a component at a
+// time give the answer of all at once. Parts of 25 rows of the grid, so that the bands of two
+// cuts (16 steps, about 8 rows deep) are apart.
 TEST(OutOfCore, SeamBatchesGiveTheAnswerOfOneBatch) {
   const PolygonMesh mesh = jittered_grid({.nx = 60, .ny = 120, .jitter = 0.2});
   const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());

@@ -230,9 +230,10 @@ RepairResult repair_cuts(const RepairInput& input, const RepairOptions& options 
 struct SeamInput {
   std::span<const SeamFace> faces;
   std::span<const CutAdjacency> adjacencies;
-  /// The seam graph's components (the bands of different cuts are apart) are solved in batches of
-  /// whole components, each of at least this many faces but the last: the answer is the same for
-  /// any batch size, the memory follows the largest batch.
+  /// The step works in batches: the candidate edges are measured this many at a time (at least
+  /// one), and the seam graph's components (the bands of different cuts are apart) are solved in
+  /// batches of whole components, each of at least this many faces but the last. The answer is
+  /// the same for any batch size; the memory follows the largest batch.
   std::uint32_t batch_faces = std::uint32_t{1} << 20;
 };
 
