@@ -230,11 +230,13 @@ int quad_out_of_core_command(const OutOfCoreArgs& args) {
     throw CLI::ValidationError("OUT", "the out-of-core conversion writes binary PLY (.ply)");
   }
   // Each part's arrays are the next part's: kept in a pool, they are not faulted in afresh for
-  // every part (memory_pool.hpp). What it keeps and what it has handed out stay within the limit
-  // together (its footprint), so that kept memory never takes the run past it. It is the default
-  // resource for the run, in place of the program's, so that the run keeps no more than the limit.
+  // every part (memory_pool.hpp). What it keeps and what it has handed out stay within seven
+  // eighths of the limit together (its footprint), so that kept memory never takes the run past
+  // it: the last eighth is for what the pool does not serve (small blocks, the matching's results,
+  // buffers, the program). It is the default resource for the run, in place of the program's.
   std::optional<HugePagePool> pool;
-  if (huge_page_pool_wanted()) pool.emplace(args.memory_limit, args.memory_limit);
+  const std::uint64_t footprint = args.memory_limit - args.memory_limit / 8;
+  if (huge_page_pool_wanted()) pool.emplace(footprint, footprint);
   std::pmr::memory_resource* const before = std::pmr::get_default_resource();
   if (pool) std::pmr::set_default_resource(&*pool);
   std::pmr::memory_resource* const memory = pool ? &*pool : before;

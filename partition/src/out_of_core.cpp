@@ -528,7 +528,11 @@ void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
   stats.cut_seconds = clock.lap();
   std::pmr::vector<SeamFace> seam;  // on the default resource, which a program's pool serves
   parts.seam.read_all(seam);
-  const SeamResult seams = pair_seams({seam, cut.adjacencies}, options.costs, options.threads);
+  // A batch of the seam graph as large as a part: what a part's pairing holds fits the limit.
+  const SeamResult seams = pair_seams({.faces = seam,
+                                       .adjacencies = cut.adjacencies,
+                                       .batch_faces = static_cast<std::uint32_t>(size)},
+                                      options.costs, options.threads);
   for (std::size_t i = 0; i < seam.size(); ++i) partner[seam[i].face] = seams.partner[i];
   stats.pairs = count_pairing(partner, stats.triangles).first;
   stats.seam_pairs = seams.pairs_across;
