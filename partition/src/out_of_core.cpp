@@ -125,7 +125,7 @@ PartsOutcome run_parts(const PlyTriangleStream& in, TempFaceArray& partner, std:
 }
 
 // What the cost objectives' part steps leave for the cut and seam steps. The seam faces of all
-// parts (at 10^9 triangles, gigabytes: 2.7 % of the triangles at 120 bytes each) wait for the
+// parts (a band along every cut, 120 bytes a face: at 10^9 triangles, gigabytes) wait for the
 // seam step in a temporary file, so that the parts have the whole limit.
 struct CostPartsOutcome {
   explicit CostPartsOutcome(const std::string& beside) : seam(beside) {}
@@ -517,8 +517,8 @@ void pair_maximum(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
 void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint64_t size,
                   const std::string& output, const OutOfCoreOptions& options, OutOfCoreStats& stats,
                   Stopwatch& clock) {
-  // The seam file is gone before the output is written, and is smaller than it: temp_bytes, the
-  // largest the temporary files get, is the pairing's and the output's.
+  // The seam file is gone before the output is written and is smaller than it, so temp_bytes (the
+  // largest the temporary files get together) stays the pairing's and the output's.
   CostPartsOutcome parts = run_parts_at_cost(in, partner, size, output, options, stats);
   stats.unpaired_after_parts = count_pairing(partner, stats.triangles).second;
   stats.read_pair_seconds = clock.lap();
@@ -528,11 +528,13 @@ void pair_at_cost(const PlyTriangleStream& in, TempFaceArray& partner, std::uint
   stats.cut_seconds = clock.lap();
   std::pmr::vector<SeamFace> seam;  // on the default resource, which a program's pool serves
   parts.seam.read_all(seam);
-  // A batch of the seam graph as large as a part: what a part's pairing holds fits the limit.
-  const SeamResult seams = pair_seams({.faces = seam,
-                                       .adjacencies = cut.adjacencies,
-                                       .batch_faces = static_cast<std::uint32_t>(size)},
-                                      options.costs, options.threads);
+  // A batch of the seam graph no larger than a part (whose pairing fits the limit beside another)
+  // nor than the default batch: the seam step holds every seam face beside its batch's solve.
+  const std::uint32_t batch =
+      static_cast<std::uint32_t>(std::min<std::uint64_t>(size, SeamInput{}.batch_faces));
+  const SeamResult seams =
+      pair_seams({.faces = seam, .adjacencies = cut.adjacencies, .batch_faces = batch},
+                 options.costs, options.threads);
   for (std::size_t i = 0; i < seam.size(); ++i) partner[seam[i].face] = seams.partner[i];
   stats.pairs = count_pairing(partner, stats.triangles).first;
   stats.seam_pairs = seams.pairs_across;

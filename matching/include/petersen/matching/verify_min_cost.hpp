@@ -19,7 +19,7 @@ struct CertificateCheck {
   bool ok() const { return problem.empty(); }
 };
 
-/// Each check's scratch (the doubled graph is as large as the solver's) comes from `memory`.
+// Each check's scratch (its doubled graph is as large as the solver's) comes from `memory`.
 
 /// Checks that `matching` is a perfect matching of the graph given by its edge ends (edge e
 /// joins edge_ends[2e] and edge_ends[2e+1]; CubicGraph::edge_ends and CsrGraph::edge_ends), that
