@@ -72,10 +72,9 @@ void breadth_first_search(const Graph& graph, std::span<const Cost> costs, std::
     number[root] = step * visited;
     old_node[visited++] = root;
     for (std::uint32_t head = visited - 1; head < visited; ++head) {
-      // The node 8 places ahead in the queue has its costs and its neighbours' numbers requested
-      // now, which the visit below would otherwise wait for one miss at a time: the search takes
-      // 0.077 s on rocker-arm-sub3's dual against 0.095 without, 4.5 ms on armadillo's against
-      // 5.5 (medians of five; 4, 16 and 32 places ahead do about as well).
+      // The node kAhead places ahead in the queue has its costs and its neighbours' numbers
+      // requested now, which the visit below would otherwise wait for one cache miss at a time
+      // (the queue's nodes are scattered over the input's arrays); a few places ahead is enough.
       if (head + kAhead < visited) {
         const NodeId ahead = old_node[head + kAhead];
         for (EdgeId e : graph.incident_edges(ahead)) {
