@@ -206,10 +206,11 @@ def quadrangulate(
     C-ordered float64); ``F`` an (m, k) integer array or a list of faces (sequences of vertex
     indices, any length >= 3, mixed lengths allowed). By default (``objective="quads"``) the
     pairing is the exact least-cost one, certified (``stats["optimality_certified"]``): each quad
-    costs its shape (``quad_quality``) plus ``flow_weight`` times its edge flow (how closely the
-    edge it removes runs along a smooth cross field; 0, the default, weighs shape alone), and each
-    triangle left unpaired ``triangle_cost`` degrees (90 when not given), so a triangle stays
-    where pairing it would break better quads; both weights are read by ``objective="quads"``
+    costs its shape (the square of its ``quad_quality`` over 90: 90° off costs 90, 30° off 10)
+    plus ``flow_weight`` times its edge flow (how closely the edge it removes runs along a smooth
+    cross field; 0, the default, weighs shape alone), and each triangle left unpaired
+    ``triangle_cost`` (110 when not given, as a quad about 99.5° off), so a triangle stays where
+    pairing it would break better quads; both weights are read by ``objective="quads"``
     only, and ``triangle_cost`` not with ``all_quad`` (which pairs the cheapest maximum), so
     giving one where it would not be read raises ``TypeError``. ``objective="pairs"`` gives a
     certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,
@@ -265,7 +266,8 @@ def quadrangulate(
         _degrees("sharp_angle", sharp_angle, 180.0), keep_edges,
         _degrees("max_corner_deviation", max_corner_deviation, 270.0), attributes,
         [str(c) for c in cross], _threads(threads), bool(keep_polygons),
-        _number("triangle_cost", 90.0 if triangle_cost is None else triangle_cost, 10000.0),
+        _number("triangle_cost", _petersen.DEFAULT_TRIANGLE_COST if triangle_cost is None
+                else triangle_cost, 10000.0),
         _number("flow_weight", 0.0 if flow_weight is None else flow_weight, 100.0),
         bool(drop_duplicate_faces))
     return QuadResult(**r)

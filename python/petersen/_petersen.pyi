@@ -5,6 +5,7 @@ import numpy as np
 import numpy.typing as npt
 
 CROSSABLE: List[str]
+DEFAULT_TRIANGLE_COST: float
 
 def quadrangulate(
     V: npt.ArrayLike,

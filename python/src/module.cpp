@@ -358,6 +358,7 @@ PYBIND11_MODULE(_petersen, m) {
   m.def("min_cost_matching", &min_cost_matching_py, py::arg("n"), py::arg("edges"),
         py::arg("costs"), py::arg("threads"));
   m.attr("CROSSABLE") = crossable_names();
+  m.attr("DEFAULT_TRIANGLE_COST") = kDefaultTriangleCost;
   add_render(m);
   add_partition(m);
   add_ply_stream(m);

@@ -30,6 +30,16 @@ inline constexpr double kDegenerateQuadCost = 270.0;
 double quad_corner_deviation(const std::array<double, 3>& a, const std::array<double, 3>& b,
                              const std::array<double, 3>& c, const std::array<double, 3>& d);
 
+/// The quads objective's shape cost of a quad whose worst corner is `degrees` off a right angle
+/// (quad_corner_deviation): degrees² / 90, so a quad 90° off still costs 90 but one 30° off costs
+/// 10. Squared, one poor quad weighs more than two middling ones: the cheapest pairing keeps a
+/// model's good quads whole rather than trading each for two fair ones, and spreads a scan's
+/// unavoidable distortion over many quads instead of piling it into a few. Increasing, so each
+/// quad's rank among the others is the deviation's. O(1).
+inline double quad_shape_cost(double degrees) {
+  return degrees * degrees / 90.0;
+}
+
 /// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
 /// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b
 /// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F), on `threads` threads (0:
