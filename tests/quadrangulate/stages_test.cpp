@@ -57,9 +57,10 @@ RC_GTEST_PROP(PairableMeshStage, OneNodePerTriangleAndEachPairsOwnCost, ()) {
     std::set<VertexId> both = corners_of(mesh.face(a));
     for (VertexId v : mesh.face(b)) both.insert(v);
     RC_ASSERT(both.size() == 4u);
-    // The default objective's shape cost: the worst corner's deviation squared over 90.
+    // The default objective's shape cost: half the worst corner's deviation plus half its square
+    // over 90.
     const double degrees = deviation_of_pair(mesh, a, b);
-    RC_ASSERT(std::abs(pairable.costs[e] - degrees * degrees / 90) < 1e-9);
+    RC_ASSERT(std::abs(pairable.costs[e] - degrees * (90 + degrees) / 180) < 1e-9);
   }
   // Quality, and the quads objective with all_quad (the cheapest maximum), weigh the deviation.
   for (const QuadOptions& options :

@@ -37,7 +37,7 @@ inline constexpr double kFlatShadingCosine = 0.9999;
 /// What the pairing optimises.
 enum class Objective {
   /// The quads people keep (the default): the least total of every quad's cost, its shape
-  /// (quad_shape_cost: the square of quad_corner_deviation over 90) plus QuadOptions::flow_weight
+  /// (quad_shape_cost of its quad_corner_deviation, convex) plus QuadOptions::flow_weight
   /// times its edge flow (how far its sides lie from a smooth cross field,
   /// petersen/dualize/cross_field.hpp), plus QuadOptions::triangle_cost for every triangle left
   /// unpaired. Not the maximum pairing: a triangle stays where every quad it could join costs
@@ -65,16 +65,15 @@ std::string_view to_string(const PairingAlgorithm& algorithm);
 std::optional<PairingAlgorithm> parse_pairing_algorithm(std::string_view name);
 
 /// Objective::quads' defaults, chosen on the recovery bench (bench/quad_recovery.py: quad models
-/// exported triangulated and converted back) and the scans of ../shared/meshes. A quad costs its
-/// worst corner's deviation squared over 90 (quad_shape_cost: 90° off costs 90, 30° off 10);
-/// leaving a triangle costs as much as a quad about 99.5° off (√(110·90)), so a pair of cost c
-/// saves 220 − c over its two triangles. The price is about the least that keeps the closed scans
-/// within the 1 % of their triangles left that the bench allows, so that a model's own triangles
-/// stay wherever pairing them would turn its quads. The edge flow is off by default: a
-/// cross field made from the triangles' own sides points the wrong way often enough on the
-/// bench's models (whose quads meet at many irregular vertices) that every weight tried brought
-/// fewer quads back than shape alone.
-inline constexpr double kDefaultTriangleCost = 110.0;
+/// exported triangulated and converted back) and the scans of ../shared/meshes. A quad costs
+/// quad_shape_cost (90° off costs 90, 30° off 20); leaving a triangle costs as much as a quad
+/// about 96.5° off, so a pair of cost c saves 200 − c over its two triangles. A higher price
+/// leaves fewer of a scan's triangles but pairs more of a model's own through its quads,
+/// turning them; 100 balances the two on the bench. The edge
+/// flow is off by default: a cross field made from the triangles' own sides points the wrong way
+/// often enough on the bench's models (whose quads meet at many irregular vertices) that every
+/// weight tried brought fewer quads back than shape alone.
+inline constexpr double kDefaultTriangleCost = 100.0;
 inline constexpr double kDefaultFlowWeight = 0.0;
 /// Their largest values: far above what any quad costs, inside the solver's range once scaled.
 inline constexpr double kMaxTriangleCost = 10000.0;
@@ -94,7 +93,7 @@ struct QuadOptions {
   /// other two do not use: an algorithm other than automatic with them is refused.
   Objective objective = Objective::quads;
   /// Objective::quads: what a triangle left unpaired costs, in the quads' cost units
-  /// (quad_shape_cost, degrees² / 90). A pair is made where its quad costs less than the two
+  /// (quad_shape_cost, degrees). A pair is made where its quad costs less than the two
   /// triangles it takes (twice this) and the pairs it displaces allow; 0 would pair nothing that
   /// costs. Finite and at least 0.
   double triangle_cost = kDefaultTriangleCost;
