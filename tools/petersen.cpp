@@ -469,8 +469,8 @@ CLI::App* add_quad_command(CLI::App& app, QuadArgs& quad_args) {
       ->capture_default_str();
   quad_cmd
       ->add_option("--triangle-cost", quad_args.triangle_cost,
-                   "--objective quads: what leaving a triangle costs, in quad cost (a quad "
-                   "costs its worst corner's deviation squared over 90; higher pairs more)")
+                   "--objective quads: what leaving a triangle costs, in degrees of quad cost "
+                   "(higher pairs more)")
       ->check(finite_in(0, petersen::kMaxTriangleCost))
       ->capture_default_str();
   quad_cmd

@@ -309,18 +309,17 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
   std::pmr::vector<double> kept(options.memory);
   edges.reserve(graph.edge_count());
   kept.reserve(graph.edge_count());
-  const bool quads = options.costs.objective == Objective::quads;
   for (EdgeId e = 0; e < graph.edge_count(); ++e) {
     if (options.costs.max_corner_deviation && degrees[e] > *options.costs.max_corner_deviation)
       continue;
     edges.push_back({graph.edge_ends[2 * e], graph.edge_ends[2 * e + 1]});
-    kept.push_back(quads ? quad_shape_cost(degrees[e]) : degrees[e]);
+    kept.push_back(degrees[e]);
   }
   const CsrGraph csr = CsrGraph::from_edges(graph.node_count, edges, options.memory);
   const std::pmr::vector<Cost> costs = scale_costs(kept, kDefaultCostScale, options.memory);
   const std::uint32_t n = graph.node_count;
   Matching matching(0, options.memory);  // the results' are moved in, on the same resource
-  if (quads) {
+  if (options.costs.objective == Objective::quads) {
     const Cost price =
         static_cast<Cost>(std::llround(options.costs.triangle_cost * kDefaultCostScale));
     MinCostMatchingResult r = min_cost_matching(

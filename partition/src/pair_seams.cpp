@@ -360,13 +360,12 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
       candidate_edges(index, input.adjacencies);
   const std::pmr::vector<double> degrees = measure(index, ends, costs, input.batch_faces, threads);
   std::pmr::vector<double> finite(degrees.size(), 0.0);
-  const bool quads = costs.objective == Objective::quads;
   for (std::size_t i = 0; i < degrees.size(); ++i)
-    if (!std::isnan(degrees[i])) finite[i] = quads ? quad_shape_cost(degrees[i]) : degrees[i];
+    if (!std::isnan(degrees[i])) finite[i] = degrees[i];
   const std::pmr::vector<Cost> units = scale_costs(finite);
   const std::size_t cross = input.adjacencies.size();
   SeamResult result;
-  if (quads) {
+  if (costs.objective == Objective::quads) {
     result.dual_lowering = dual_lowering(index, {ends.data(), cross}, degrees, units);
   }
   result.partner.resize(index.faces.size());
@@ -382,6 +381,7 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
     result.seconds = clock.seconds();
     return result;
   }
+  const bool quads = costs.objective == Objective::quads;
   const Cost price =
       quads ? static_cast<Cost>(std::llround(costs.triangle_cost * kDefaultCostScale)) : 0;
   const Cost before = current_total(g, graph, g.units, price);

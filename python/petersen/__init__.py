@@ -206,11 +206,10 @@ def quadrangulate(
     C-ordered float64); ``F`` an (m, k) integer array or a list of faces (sequences of vertex
     indices, any length >= 3, mixed lengths allowed). By default (``objective="quads"``) the
     pairing is the exact least-cost one, certified (``stats["optimality_certified"]``): each quad
-    costs its shape (its ``quad_quality`` d as d·(90 + d)/180: 90° off costs 90, 30° off 20)
-    plus ``flow_weight`` times its edge flow (how closely the edge it removes runs along a smooth
-    cross field; 0, the default, weighs shape alone), and each triangle left unpaired
-    ``triangle_cost`` (100 when not given, as a quad about 96.5° off), so a triangle stays where
-    pairing it would break better quads; both weights are read by ``objective="quads"``
+    costs its shape (``quad_quality``) plus ``flow_weight`` times its edge flow (how closely the
+    edge it removes runs along a smooth cross field; 0, the default, weighs shape alone), and each
+    triangle left unpaired ``triangle_cost`` degrees (90 when not given), so a triangle stays
+    where pairing it would break better quads; both weights are read by ``objective="quads"``
     only, and ``triangle_cost`` not with ``all_quad`` (which pairs the cheapest maximum), so
     giving one where it would not be read raises ``TypeError``. ``objective="pairs"`` gives a
     certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,

@@ -126,11 +126,6 @@ PairableMesh pairable_mesh(const PolygonMesh& mesh, const QuadOptions& options, 
     quad_detail::cut_by_shape(graph, mesh, pairable.costs, *options.max_corner_deviation,
                               flow.empty() ? nullptr : &flow);
   }
-  // The quads objective weighs shape convexly (quad_shape_cost); with all_quad it pairs the
-  // cheapest maximum by the deviation itself, as quality does, out of core and on Dask too.
-  if (options.objective == Objective::quads && !options.all_quad) {
-    for (double& cost : pairable.costs) cost = quad_shape_cost(cost);
-  }
   for (EdgeId e = 0; e < flow.size(); ++e) pairable.costs[e] += options.flow_weight * flow[e];
   record_graph_figures(mesh, graph, referenced_vertices, stats);
   genus_across_chosen_cuts(graph, stats);

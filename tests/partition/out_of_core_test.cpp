@@ -154,10 +154,10 @@ PolygonMesh write_mesh_ply(const PolygonMesh& mesh, const std::string& path) {
 }
 
 // The total of a pairing as Objective::quads counts it, from the output file alone: each quad's
-// worst corner's deviation d as d·(90 + d)/180, plus the price of each triangle left.
+// worst corner plus the price of each triangle left.
 double total_of(const PolygonMesh& output, double triangle_cost) {
   double total = 0;
-  for (double degrees : quad_costs(output)) total += degrees * (90 + degrees) / 180;
+  for (double cost : quad_costs(output)) total += cost;
   for (FaceId f = 0; f < output.face_count(); ++f)
     total += output.arity(f) == 3 ? triangle_cost : 0;
   return total;

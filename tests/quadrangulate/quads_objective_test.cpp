@@ -1,8 +1,8 @@
 // The quads objective (the default) against a brute force: on small meshes of every class, no
 // matching of any size has a lower total of quad costs plus the price of the triangles left. The
 // brute force finds the pairable pairs and their costs on its own (edges of exactly two triangles
-// with four distinct vertices, quad_of's corners, half quad_corner_deviation plus half its square
-// over 90) and enumerates every matching.
+// with four distinct vertices, quad_of's corners, quad_corner_deviation) and enumerates every
+// matching.
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -57,9 +57,7 @@ std::vector<Pair> pairable_pairs(const PolygonMesh& mesh) {
     const auto q = quad_of(mesh.face(lower), mesh.face(upper));
     const auto& p = mesh.positions;
     const double degrees = quad_corner_deviation(p[q[0]], p[q[1]], p[q[2]], p[q[3]]);
-    // The objective's shape cost, written out here rather than taken from the library.
-    pairs.push_back(
-        {lower, upper, std::llround(degrees * (90 + degrees) / 180 * kDefaultCostScale)});
+    pairs.push_back({lower, upper, std::llround(degrees * kDefaultCostScale)});
   }
   return pairs;
 }
@@ -128,8 +126,8 @@ TEST(QuadsObjective, GivesBackTheSquaresOfATriangulatedGrid) {
 
 // A triangle whose every quad is bad stays when its price is low, and is paired when it is high.
 TEST(QuadsObjective, TheTrianglePriceDecidesWhatStays) {
-  // Two triangles folded onto each other (a degenerate quad, 270° off, costing 270 · 360 / 180 =
-  // 540): cheaper to leave both at any price under 270.
+  // Two triangles folded onto each other (a quad of cost 270, degenerate): cheaper to leave both
+  // at any price under 135.
   PolygonMesh mesh;
   mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, 0.2, 0}};
   mesh.add_face(std::array<VertexId, 3>{0, 1, 2});

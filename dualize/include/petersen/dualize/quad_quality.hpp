@@ -30,19 +30,6 @@ inline constexpr double kDegenerateQuadCost = 270.0;
 double quad_corner_deviation(const std::array<double, 3>& a, const std::array<double, 3>& b,
                              const std::array<double, 3>& c, const std::array<double, 3>& d);
 
-/// The quads objective's shape cost of a quad whose worst corner is `degrees` off a right angle
-/// (quad_corner_deviation): half the deviation plus half its square over 90, degrees·(90 +
-/// degrees)/180, so a quad 90° off still costs 90, one 30° off 20 and one 10° off 5.6. The square
-/// makes it convex: one poor quad weighs more than two fair ones, so the optimum spreads a scan's
-/// unavoidable distortion and, where a lattice of triangles pairs equally well several ways, picks
-/// the even one that the model's quads were. The linear half keeps the slope at 0° at 1/2, where
-/// the square alone has none: turning a model's right-angled quads into slightly skewed ones
-/// still costs, so they are not traded to pair its own triangles. Increasing, so each quad's rank
-/// among the others is the deviation's. O(1).
-inline double quad_shape_cost(double degrees) {
-  return degrees * (90.0 + degrees) / 180.0;
-}
-
 /// For each edge of `graph` (the pairable graph of `mesh`), the cost of the quad its two triangles
 /// make, with the corners quadrangulate gives it: the lower face t1 = (a, b, c) sharing edge a-b
 /// with t2 = {a, b, d} forms (a, d, b, c), whichever way t2 runs. O(F), on `threads` threads (0:

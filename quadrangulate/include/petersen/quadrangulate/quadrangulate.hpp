@@ -37,13 +37,11 @@ inline constexpr double kFlatShadingCosine = 0.9999;
 /// What the pairing optimises.
 enum class Objective {
   /// The quads people keep (the default): the least total of every quad's cost, its shape
-  /// (quad_shape_cost of its quad_corner_deviation, convex) plus QuadOptions::flow_weight
-  /// times its edge flow (how far its sides lie from a smooth cross field,
-  /// petersen/dualize/cross_field.hpp), plus QuadOptions::triangle_cost for every triangle left
-  /// unpaired. Not the maximum pairing: a triangle stays where every quad it could join costs
-  /// more than leaving it, so a model's own triangles stay where pairing them would break good
-  /// quads. Exact, its dual certificate checked. With all_quad, which splits every triangle left,
-  /// it pairs the cheapest maximum by quad_corner_deviation, as quality does.
+  /// (quad_corner_deviation) plus QuadOptions::flow_weight times its edge flow (how far its sides
+  /// lie from a smooth cross field, petersen/dualize/cross_field.hpp), plus
+  /// QuadOptions::triangle_cost for every triangle left unpaired. Not the maximum pairing: a
+  /// triangle stays where every quad it could join costs more than leaving it, so a model's own
+  /// triangles stay where pairing them would break good quads. Exact, its dual certificate checked.
   quads,
   pairs,    ///< the maximum pairing by the algorithm, nothing else weighed: fastest
   quality,  ///< the maximum pairing of least total quad_corner_deviation, exact and certified
@@ -65,15 +63,14 @@ std::string_view to_string(const PairingAlgorithm& algorithm);
 std::optional<PairingAlgorithm> parse_pairing_algorithm(std::string_view name);
 
 /// Objective::quads' defaults, chosen on the recovery bench (bench/quad_recovery.py: quad models
-/// exported triangulated and converted back) and the scans of ../shared/meshes. A quad costs
-/// quad_shape_cost (90° off costs 90, 30° off 20); leaving a triangle costs as much as a quad
-/// about 96.5° off, so a pair of cost c saves 200 − c over its two triangles. A higher price
-/// leaves fewer of a scan's triangles but pairs more of a model's own through its quads,
-/// turning them; 100 balances the two on the bench. The edge
+/// exported triangulated and converted back) and the scans of ../shared/meshes. Leaving a triangle
+/// costs as much as a quad whose worst corner is 90° off a right angle, so a pair of cost c saves
+/// 180 − c over its two triangles: scans keep all but a fraction of a percent of their triangles
+/// paired, while a model's own triangles stay where pairing them would turn its quads. The edge
 /// flow is off by default: a cross field made from the triangles' own sides points the wrong way
 /// often enough on the bench's models (whose quads meet at many irregular vertices) that every
 /// weight tried brought fewer quads back than shape alone.
-inline constexpr double kDefaultTriangleCost = 100.0;
+inline constexpr double kDefaultTriangleCost = 90.0;
 inline constexpr double kDefaultFlowWeight = 0.0;
 /// Their largest values: far above what any quad costs, inside the solver's range once scaled.
 inline constexpr double kMaxTriangleCost = 10000.0;
@@ -92,10 +89,9 @@ struct QuadOptions {
   /// by its dual certificate. Objective::pairs runs `algorithm`, `augment` and `seed`, which the
   /// other two do not use: an algorithm other than automatic with them is refused.
   Objective objective = Objective::quads;
-  /// Objective::quads: what a triangle left unpaired costs, in the quads' cost units
-  /// (quad_shape_cost, degrees). A pair is made where its quad costs less than the two
-  /// triangles it takes (twice this) and the pairs it displaces allow; 0 would pair nothing that
-  /// costs. Finite and at least 0.
+  /// Objective::quads: what a triangle left unpaired costs, in the quads' cost units (degrees). A
+  /// pair is made where its quad costs less than the two triangles it takes (twice this) and the
+  /// pairs it displaces allow; 0 would pair nothing that costs. Finite and at least 0.
   double triangle_cost = kDefaultTriangleCost;
   /// Objective::quads: degrees of shape cost per degree of edge flow (pairable_edge_flow in
   /// petersen/dualize/cross_field.hpp: how closely the edge a pair removes runs along the cross

@@ -29,9 +29,9 @@ namespace petersen {
 /// sharp, kept-edge and shape), and each pairable edge's cost when one is wanted.
 struct PairableMesh {
   PairableGraph graph;
-  /// Per pairable edge: its quad's quad_corner_deviation; with Objective::quads (not all_quad)
-  /// its quad_shape_cost plus QuadOptions::flow_weight times its edge flow; empty with
-  /// Objective::pairs and no max_corner_deviation, which need none.
+  /// Per pairable edge: its quad's quad_corner_deviation, plus QuadOptions::flow_weight times
+  /// its edge flow with Objective::quads; empty with Objective::pairs and no
+  /// max_corner_deviation, which need none.
   std::pmr::vector<double> costs;
 };
 
