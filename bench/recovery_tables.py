@@ -13,6 +13,8 @@ regular vertices, triangles left and the worst corner per operator.
 import argparse
 import statistics
 
+# The operators' labels as quad_recovery.py's OPERATORS print them (it imports bpy, so it is not
+# imported here).
 BLENDER_40 = "Blender, defaults (40°, 40°)"
 BLENDER_OFF = "Blender, limits off"
 DEFAULT = "petersen add-on, defaults"
@@ -35,7 +37,7 @@ def recovery(path, held_out):
     lines, shares = [], {op: [] for op in (BLENDER_40, BLENDER_OFF, DEFAULT, PAIRS, QUALITY)}
     ahead, runs, behind = 0, 0, []
     for model, entry in models.items():
-        def pair(op):
+        def pair(op, entry=entry):
             return f"{entry['random'][op][0]:.1f} / {entry['short'][op][0]:.1f}"
         left = f"({entry['random'][DEFAULT][1]} / {entry['short'][DEFAULT][1]})"
         name = model + (" (held out)" if model.split("-")[0] in held_out else "")
