@@ -222,4 +222,64 @@ PolygonMesh flat_shaded(PolygonMesh mesh, const FlatShading& spec) {
   return mesh;
 }
 
+PolygonMesh chamfered_cube() {
+  PolygonMesh mesh;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int corner = 0; corner < 8; ++corner) {
+      if (corner & (1 << axis)) continue;  // the other two signs vary; the axis' own below
+      for (double sign : {-1.0, 1.0}) {
+        std::array<double, 3> p{};
+        for (int k = 0; k < 3; ++k) p[k] = (corner & (1 << k) ? 0.6 : -0.6);
+        p[axis] = sign;
+        mesh.positions.push_back(p);
+      }
+    }
+  }
+  // Each face: the points that go furthest along one of the 26 directions (±1, 0)^3 \ 0 (a
+  // square's, a bevel's or a corner's normal), ordered by angle about it.
+  for (int x = -1; x <= 1; ++x) {
+    for (int y = -1; y <= 1; ++y) {
+      for (int z = -1; z <= 1; ++z) {
+        if (!x && !y && !z) continue;
+        const Point n{double(x), double(y), double(z)};
+        double most = -1e9;
+        for (const Point& p : mesh.positions) most = std::max(most, vec3::dot(p, n));
+        std::vector<VertexId> face;
+        Point centre{};
+        for (VertexId v = 0; v < mesh.positions.size(); ++v) {
+          if (vec3::dot(mesh.positions[v], n) < most - 1e-9) continue;
+          face.push_back(v);
+          for (int k = 0; k < 3; ++k) centre[k] += mesh.positions[v][k];
+        }
+        for (double& c : centre) c /= double(face.size());
+        const Point u = vec3::sub(mesh.positions[face[0]], centre), w = vec3::cross(n, u);
+        auto angle = [&](VertexId v) {
+          const Point d = vec3::sub(mesh.positions[v], centre);
+          return std::atan2(vec3::dot(d, w), vec3::dot(d, u));
+        };
+        std::sort(face.begin(), face.end(),
+                  [&](VertexId a, VertexId b) { return angle(a) < angle(b); });
+        mesh.add_face(face);
+      }
+    }
+  }
+  return mesh;
+}
+
+PolygonMesh split_quads(const PolygonMesh& mesh, bool first_diagonal) {
+  PolygonMesh out;
+  out.positions.assign(mesh.positions.begin(), mesh.positions.end());
+  const int k = first_diagonal ? 0 : 1;
+  for (FaceId f = 0; f < mesh.face_count(); ++f) {
+    const std::span<const VertexId> c = mesh.face(f);
+    if (c.size() != 4) {
+      out.add_face(c);
+      continue;
+    }
+    out.add_face(std::array<VertexId, 3>{c[k], c[k + 1], c[(k + 2) % 4]});
+    out.add_face(std::array<VertexId, 3>{c[k], c[(k + 2) % 4], c[(k + 3) % 4]});
+  }
+  return out;
+}
+
 }  // namespace petersen

@@ -14,6 +14,7 @@
 #include "petersen/matching/tutte_berge.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/partition/partition.hpp"
+#include "petersen/quadrangulate/triangle_prices.hpp"
 
 namespace petersen {
 
@@ -320,13 +321,13 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
   const std::uint32_t n = graph.node_count;
   Matching matching(0, options.memory);  // the results' are moved in, on the same resource
   if (options.costs.objective == Objective::quads) {
-    const Cost price =
-        static_cast<Cost>(std::llround(options.costs.triangle_cost * kDefaultCostScale));
+    const std::pmr::vector<Cost> prices = triangle_prices(
+        n, csr.edge_ends(), costs, std::llround(options.costs.triangle_cost * kDefaultCostScale),
+        options.memory);
     MinCostMatchingResult r = min_cost_matching(
-        csr, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
-    if (CertificateCheck check =
-            verify_min_cost_matching(n, csr.edge_ends(), costs, {&price, 1}, r.matching, r.total,
-                                     r.certificate, options.memory);
+        csr, costs, prices, {.threads = options.threads, .memory = options.memory});
+    if (CertificateCheck check = verify_min_cost_matching(
+            n, csr.edge_ends(), costs, prices, r.matching, r.total, r.certificate, options.memory);
         !check.ok()) {
       throw std::logic_error("internal error: a part's least-cost pairing fails its certificate: " +
                              check.problem);
@@ -338,9 +339,20 @@ std::pmr::vector<NodeId> match_part_at_cost(const PairableGraph& graph, const Po
       const std::uint32_t s = r.certificate.node_set[v];
       return r.certificate.node_dual[v] + (s == kNoSet ? 0 : sums[s]);
     };
+    std::vector<std::uint32_t> mark(r.certificate.set_count(), kNoNode);
     for (SeamFace& face : result.seam) {
       const NodeId v = face.face - result.first_face;
       face.dual = {dual(v), dual(n + v)};
+      face.price = prices[v];
+      // The stay edge v–v' counts the sets holding exactly one of its ends: those holding both,
+      // the common chain above their lowest common set, count twice in dual(v) + dual(v').
+      // O(depth of the two chains).
+      for (std::uint32_t s = r.certificate.node_set[v]; s != kNoSet;
+           s = r.certificate.set_parent[s])
+        mark[s] = v;
+      std::uint32_t common = r.certificate.node_set[n + v];
+      while (common != kNoSet && mark[common] != v) common = r.certificate.set_parent[common];
+      face.stay_dual = face.dual[0] + face.dual[1] - (common == kNoSet ? 0 : 2 * sums[common]);
     }
     matching = std::move(r.matching);
   } else {
@@ -396,6 +408,13 @@ PartPairing pair_part_at_cost(const PartTriangles& part, const PartPairingOption
     throw std::invalid_argument("pair_part: the cost objectives need a position per corner: " +
                                 std::to_string(part.corner_positions.size()) + " for " +
                                 std::to_string(part.corners.size()) + " corners");
+  }
+  if (options.costs.objective == Objective::quads && options.band_radius < 3) {
+    // The seams price a face beside a cut from its two rings (pair_seams), which must lie in
+    // the bands.
+    throw std::invalid_argument(
+        "pair_part: the quads objective needs a band radius of 3 or more, not " +
+        std::to_string(options.band_radius));
   }
   PartPairing result{.first_face = part.first_face,
                      .partner = std::pmr::vector<FaceId>(options.memory)};

@@ -13,6 +13,7 @@
 #include "petersen/graph/stopwatch.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/partition/partition.hpp"
+#include "petersen/quadrangulate/triangle_prices.hpp"
 
 namespace petersen {
 
@@ -129,14 +130,48 @@ std::pmr::vector<double> measure(const SeamIndex& index,
   return degrees;
 }
 
-// The stitched duals' loss: each cut adjacency's constraint in each copy of the doubled graph,
-// violated by the parts' duals, lowers its lower face's node dual by what is left of the
-// violation after the lowerings already made at its two ends.
+// Each seam face's price for staying unpaired in the whole mesh. triangle_prices reads a face's
+// two rings: a face within one step of an open side may have pairs or neighbours across the cut
+// that its part did not see, so it is priced again over the seam faces and the allowed candidate
+// edges, which hold its two rings whole (the band reaches 3 steps, see pair_part); any other
+// face's rings lie inside its part, which priced it as the whole mesh does. O(s + a).
+std::pmr::vector<Cost> whole_mesh_prices(const SeamIndex& index,
+                                         std::span<const std::array<std::uint32_t, 2>> ends,
+                                         std::span<const double> degrees,
+                                         std::span<const Cost> units, Cost price) {
+  std::pmr::vector<NodeId> allowed;
+  std::pmr::vector<Cost> allowed_units;
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    if (std::isnan(degrees[i])) continue;
+    allowed.insert(allowed.end(), ends[i].begin(), ends[i].end());
+    allowed_units.push_back(units[i]);
+  }
+  std::pmr::vector<Cost> prices = triangle_prices(static_cast<std::uint32_t>(index.faces.size()),
+                                                  allowed, allowed_units, price);
+  for (std::size_t i = 0; i < index.faces.size(); ++i) {
+    if (index.faces[i].distance > 1) prices[i] = index.faces[i].price;
+  }
+  return prices;
+}
+
+// The stitched duals' loss. First each stay edge v–v' whose whole-mesh price is below its part's,
+// violated by the part's duals (SeamFace::stay_dual against 4·price, the certificate's units),
+// lowers v's node dual by the violation; then each cut adjacency's constraint in each copy of the
+// doubled graph, violated by the parts' duals, lowers its lower face's node dual by what is left
+// of the violation after the lowerings already made at its two ends.
 std::int64_t dual_lowering(const SeamIndex& index,
                            std::span<const std::array<std::uint32_t, 2>> cross,
-                           std::span<const double> degrees, std::span<const Cost> units) {
+                           std::span<const double> degrees, std::span<const Cost> units,
+                           std::span<const Cost> prices) {
   std::pmr::vector<std::array<std::int64_t, 2>> lowered(index.faces.size(), {0, 0});
   std::int64_t total = 0;
+  for (std::size_t i = 0; i < index.faces.size(); ++i) {
+    const std::int64_t left = index.faces[i].stay_dual - 4 * prices[i];
+    if (left > 0) {
+      lowered[i][0] = left;
+      total += left;
+    }
+  }
   for (std::size_t i = 0; i < cross.size(); ++i) {
     if (std::isnan(degrees[i])) continue;
     const auto [x, y] = cross[i];
@@ -241,15 +276,16 @@ SeamGraph seam_graph(const SeamIndex& index, std::span<const std::array<std::uin
   return g;
 }
 
-// The current pairs' total in the seam graph (quads: with the price of each unpaired node).
-// Throws std::logic_error for a pair that is no edge of it: the parts paired only allowed edges.
+// The current pairs' total in the seam graph (quads: with the price of each unpaired node, by
+// seam graph node; empty for quality). Throws std::logic_error for a pair that is no edge of it:
+// the parts paired only allowed edges.
 Cost current_total(const SeamGraph& g, const CsrGraph& graph, std::span<const Cost> units,
-                   Cost price) {
+                   std::span<const Cost> prices) {
   Cost total = 0;
   for (NodeId v = 0; v < graph.node_count(); ++v) {
     const std::uint32_t w = g.mate[v];
     if (w == kAbsent) {
-      total += price;
+      total += prices.empty() ? 0 : prices[v];
       continue;
     }
     if (w < v) continue;
@@ -295,14 +331,19 @@ void for_each_batch(const CsrGraph& graph, std::uint32_t batch_faces, Visit visi
   if (last > first) visit(std::span<const NodeId>(order.data() + first, last - first));
 }
 
-// One batch's minimum-cost matching (quads: leaving a face costs `price`; quality: the cheapest
-// maximum), its certificate checked, its pairs written into `matching` in the seam graph's edge
-// ids. Returns the batch's total in the solver's units.
+// One batch's minimum-cost matching (quads: leaving node v costs prices[v], by seam graph node;
+// quality, `prices` empty: the cheapest maximum), its certificate checked, its pairs written into
+// `matching` in the seam graph's edge ids. Returns the batch's total in the solver's units.
 // `local` maps the seam graph's nodes to the batch's (any value outside the batch).
 Cost solve_batch(const CsrGraph& graph, std::span<const Cost> units, std::span<const NodeId> nodes,
-                 bool quads, Cost price, std::uint32_t threads, std::pmr::vector<NodeId>& local,
-                 Matching& matching) {
-  for (NodeId i = 0; i < nodes.size(); ++i) local[nodes[i]] = i;
+                 std::span<const Cost> prices, std::uint32_t threads,
+                 std::pmr::vector<NodeId>& local, Matching& matching) {
+  const bool quads = !prices.empty();
+  std::pmr::vector<Cost> batch_prices;
+  for (NodeId i = 0; i < nodes.size(); ++i) {
+    local[nodes[i]] = i;
+    if (quads) batch_prices.push_back(prices[nodes[i]]);
+  }
   std::pmr::vector<std::array<NodeId, 2>> edges;
   std::pmr::vector<EdgeId> edge_of;
   std::pmr::vector<Cost> batch_units;
@@ -326,9 +367,9 @@ Cost solve_batch(const CsrGraph& graph, std::span<const Cost> units, std::span<c
   Cost total = 0;
   if (quads) {
     MinCostMatchingResult r =
-        min_cost_matching(batch, batch_units, {&price, 1}, {.threads = threads});
+        min_cost_matching(batch, batch_units, batch_prices, {.threads = threads});
     checked(verify_min_cost_matching(batch.node_count(), batch.edge_ends(), batch_units,
-                                     {&price, 1}, r.matching, r.total, r.certificate),
+                                     batch_prices, r.matching, r.total, r.certificate),
             "least-cost pairing");
     total = r.total;
     found = std::move(r.matching);
@@ -365,8 +406,12 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
   const std::pmr::vector<Cost> units = scale_costs(finite);
   const std::size_t cross = input.adjacencies.size();
   SeamResult result;
+  // Objective::quads: each face's price in the whole mesh (quality: none).
+  std::pmr::vector<Cost> prices;
   if (costs.objective == Objective::quads) {
-    result.dual_lowering = dual_lowering(index, {ends.data(), cross}, degrees, units);
+    prices = whole_mesh_prices(index, ends, degrees, units,
+                               std::llround(costs.triangle_cost * kDefaultCostScale));
+    result.dual_lowering = dual_lowering(index, {ends.data(), cross}, degrees, units, prices);
   }
   result.partner.resize(index.faces.size());
   for (std::size_t i = 0; i < index.faces.size(); ++i) result.partner[i] = index.faces[i].partner;
@@ -381,15 +426,21 @@ SeamResult pair_seams(const SeamInput& input, const PartCosts& costs, std::uint3
     result.seconds = clock.seconds();
     return result;
   }
-  const bool quads = costs.objective == Objective::quads;
-  const Cost price =
-      quads ? static_cast<Cost>(std::llround(costs.triangle_cost * kDefaultCostScale)) : 0;
-  const Cost before = current_total(g, graph, g.units, price);
+  // The parts counted each face they left at their own price; the step pairs at the whole
+  // mesh's, so that the change takes the total from the former to the latter.
+  std::pmr::vector<Cost> part_prices, node_prices;
+  if (costs.objective == Objective::quads) {
+    for (std::uint32_t face : g.face_of) {
+      part_prices.push_back(index.faces[face].price);
+      node_prices.push_back(prices[face]);
+    }
+  }
+  const Cost before = current_total(g, graph, g.units, part_prices);
   Matching matching(graph.node_count());
   Cost after = 0;
   std::pmr::vector<NodeId> local(graph.node_count());
   for_each_batch(graph, input.batch_faces, [&](std::span<const NodeId> nodes) {
-    after += solve_batch(graph, g.units, nodes, quads, price, threads, local, matching);
+    after += solve_batch(graph, g.units, nodes, node_prices, threads, local, matching);
   });
   result.objective_change = after - before;
   for (NodeId v = 0; v < graph.node_count(); ++v) {

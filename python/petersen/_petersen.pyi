@@ -70,6 +70,8 @@ def pair_seams(
     distance: np.ndarray,
     partner: np.ndarray,
     dual: np.ndarray,
+    price: np.ndarray,
+    stay_dual: np.ndarray,
     adjacencies: np.ndarray,
     parts_units: int,
     objective: str,

@@ -121,6 +121,8 @@ py::dict seam_dict(const std::vector<SeamFace>& seam) {
   d["dual"] = rows_array(seam.size(), 2, [&](std::size_t i, std::int64_t* row) {
     row[0] = seam[i].dual[0], row[1] = seam[i].dual[1];
   });
+  d["price"] = column(seam, [](const SeamFace& f) { return std::int64_t{f.price}; });
+  d["stay_dual"] = column(seam, [](const SeamFace& f) { return f.stay_dual; });
   return d;
 }
 
@@ -274,8 +276,9 @@ py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
                        const DoubleArray& positions,
                        const py::array_t<std::uint8_t, py::array::c_style>& sides,
                        const Int64Array& distance, const Int64Array& partner,
-                       const Int64Array& dual, const Int64Array& adjacencies,
-                       std::int64_t parts_units, const std::string& objective, double triangle_cost,
+                       const Int64Array& dual, const Int64Array& price, const Int64Array& stay_dual,
+                       const Int64Array& adjacencies, std::int64_t parts_units,
+                       const std::string& objective, double triangle_cost,
                        std::optional<double> max_corner_deviation,
                        std::optional<double> sharp_angle, std::uint32_t threads) {
   const std::vector<BandFace> band = band_from(faces, corners, sides, distance);
@@ -283,8 +286,10 @@ py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
   const std::int64_t* y = rows_of(dual, 2, "seam dual");
   const std::vector<std::array<double, 3>> at = corner_positions_of(positions, k);
   if (static_cast<std::size_t>(partner.size()) != k ||
-      static_cast<std::size_t>(dual.shape(0)) != k) {
-    throw py::value_error("seam: faces, positions, partner and dual of different lengths");
+      static_cast<std::size_t>(dual.shape(0)) != k || static_cast<std::size_t>(price.size()) != k ||
+      static_cast<std::size_t>(stay_dual.size()) != k) {
+    throw py::value_error(
+        "seam: faces, positions, partner, dual, price and stay_dual of different lengths");
   }
   std::vector<SeamFace> seam(k);
   for (std::size_t i = 0; i < k; ++i) {
@@ -296,6 +301,8 @@ py::dict pair_seams_py(const Int64Array& faces, const Int64Array& corners,
     const std::int64_t p = partner.data()[i];
     seam[i].partner = p < 0 ? kNoFace : id_of(p, "partner");
     seam[i].dual = {y[2 * i], y[2 * i + 1]};
+    seam[i].price = price.data()[i];
+    seam[i].stay_dual = stay_dual.data()[i];
   }
   const std::vector<CutAdjacency> adjacent = records_of<CutAdjacency>(adjacencies, "adjacencies");
   const PartCosts costs = costs_of(objective, triangle_cost, max_corner_deviation, sharp_angle);
@@ -375,8 +382,8 @@ void add_partition(py::module_& m) {
         py::arg("positions") = py::none());
   m.def("pair_seams", &pair_seams_py, py::arg("faces"), py::arg("corners"), py::arg("positions"),
         py::arg("sides"), py::arg("distance"), py::arg("partner"), py::arg("dual"),
-        py::arg("adjacencies"), py::arg("parts_units"), py::arg("objective"),
-        py::arg("triangle_cost") = kDefaultTriangleCost,
+        py::arg("price"), py::arg("stay_dual"), py::arg("adjacencies"), py::arg("parts_units"),
+        py::arg("objective"), py::arg("triangle_cost") = kDefaultTriangleCost,
         py::arg("max_corner_deviation") = py::none(), py::arg("sharp_angle") = py::none(),
         py::arg("threads") = 1);
   m.def("pair_open_edges", &pair_open_edges_py, py::arg("open_edges"));

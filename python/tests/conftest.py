@@ -62,6 +62,45 @@ def open_grid(nx, ny):
     return V, F
 
 
+def chamfered_cubes(count):
+    """`count` cubes side by side, each with every edge chamfered (6 squares, 12 bevels, 8 corner
+    triangles) and exported triangulated, each quad cut along the diagonal from its first corner
+    (even cubes) or its second (odd): a hard-surface model whose own triangles are its corners."""
+    points = []
+    for axis in range(3):
+        for signs in np.ndindex(2, 2, 2):
+            if signs[axis]:
+                continue
+            for sign in (-1.0, 1.0):
+                p = [0.6 if s else -0.6 for s in signs]
+                p[axis] = sign
+                points.append(p)
+    P = np.array(points)
+    faces = []
+    for n in np.ndindex(3, 3, 3):
+        n = np.array(n) - 1.0
+        if not n.any():
+            continue
+        along = P @ n
+        face = np.flatnonzero(along > along.max() - 1e-9)
+        centre = P[face].mean(0)
+        u = P[face[0]] - centre
+        w = np.cross(n, u)
+        d = P[face] - centre
+        faces.append(face[np.argsort(np.arctan2(d @ w, d @ u))])
+    V, F = [], []
+    for i in range(count):
+        V.append(P + [3.0 * i, 0, 0])
+        k = i % 2
+        for c in faces:
+            c = c + 24 * i
+            if len(c) == 3:
+                F.append(c)
+            else:
+                F += [[c[k], c[k + 1], c[(k + 2) % 4]], [c[k], c[(k + 2) % 4], c[(k + 3) % 4]]]
+    return np.concatenate(V), np.array(F, dtype=np.int64)
+
+
 @pytest.fixture
 def cli():
     """The petersen CLI: PETERSEN_CLI, else build/release/tools/petersen; skip (with the reason

@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 import petersen
-from conftest import open_grid, torus
+from conftest import chamfered_cubes, open_grid, torus
 
 distributed = pytest.importorskip("distributed")
 
@@ -437,3 +437,21 @@ def test_all_quad_without_parts_of_the_out_of_core_sizes_is_all_quads(jittered_o
     assert len(mesh.V) == len(V) + stats["added_vertices"]
     assert np.array_equal(mesh.V[:len(V)], petersen.read_mesh(str(path)).V)
     assert stats["all_quad_parts"] == 3 and stats["all_quad_parts_certified"] is True
+
+
+def test_own_triangles_beside_the_cuts_are_priced_as_in_memory(client, tmp_path):
+    # A model's own triangles (the cubes' corners) may stay for less than the price; a part sees
+    # the pairs across its cuts only in the seam step, which prices them again: every cube comes
+    # back whole with its corners left, at the in-memory optimum.
+    V, F = chamfered_cubes(12)
+    path, out = tmp_path / "cubes.ply", tmp_path / "quads.ply"
+    petersen.write_mesh(str(path), V, F)
+    memory = petersen.quadrangulate(V, F)
+    assert memory.stats["optimality_certified"] and memory.stats["triangles_left"] == 8 * 12
+    stats = finish(*run(pd.quadrangulate, str(path), str(out), client, parts=5))
+    _, quads, triangles = read_ply_faces(out)
+    check_faces(quads, triangles, F)
+    assert stats["parts"] == 5 and stats["part_cut_edges"] > 0
+    assert len(triangles) == stats["triangles_left"] == 8 * 12
+    assert stats["objective_total"] == pytest.approx(memory.stats["objective_total"], abs=1e-6)
+    assert stats["lower_bound"] <= memory.stats["objective_total"] + 1e-6

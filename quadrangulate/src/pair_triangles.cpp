@@ -14,6 +14,7 @@
 #include "petersen/matching/tutte_berge.hpp"
 #include "petersen/matching/verify_min_cost.hpp"
 #include "petersen/quadrangulate/stages.hpp"
+#include "petersen/quadrangulate/triangle_prices.hpp"
 
 namespace petersen::quad_detail {
 
@@ -362,10 +363,11 @@ void pair_open_components(PairableGraph& graph, std::vector<NodeId> open_nodes,
   stats.verify_seconds += clock.lap();
 }
 
-// Objective::quads: the cheapest matching of any size, each triangle left unpaired costing
-// options.triangle_cost, over the whole pairable graph at once (closed and open components alike:
-// the price makes every component's optimum a matching of any size); its certificate checked.
-// Maximum is certified only where nothing is left: a perfect pairing is maximum.
+// Objective::quads: the cheapest matching of any size, each triangle left unpaired costing its
+// price (triangle_prices: options.triangle_cost, or less for a model's own), over the whole
+// pairable graph at once (closed and open components alike: the price makes every component's
+// optimum a matching of any size); its certificate checked. Maximum is certified only where nothing
+// is left: a perfect pairing is maximum.
 void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
                         const QuadOptions& options, TrianglePairing& pairing, QuadStats& stats,
                         Stopwatch& clock) {
@@ -376,14 +378,16 @@ void pair_at_least_cost(PairableGraph& graph, std::span<const Cost> costs,
   }
   free_storage(graph.node_edges);
   const CsrGraph whole = csr_taking(graph.node_count, std::move(graph.edge_ends), options.memory);
-  const Cost price = static_cast<Cost>(std::llround(options.triangle_cost * kDefaultCostScale));
+  const std::pmr::vector<Cost> prices =
+      triangle_prices(whole.node_count(), whole.edge_ends(), costs,
+                      std::llround(options.triangle_cost * kDefaultCostScale), options.memory);
   stats.dual_seconds += clock.lap();
   MinCostMatchingResult result = min_cost_matching(
-      whole, costs, {&price, 1}, {.threads = options.threads, .memory = options.memory});
+      whole, costs, prices, {.threads = options.threads, .memory = options.memory});
   add_min_cost_run(stats.matching, result.stats);
   clock.lap();
   if (CertificateCheck check = verify_min_cost_matching(
-          whole.node_count(), whole.edge_ends(), costs, {&price, 1}, result.matching, result.total,
+          whole.node_count(), whole.edge_ends(), costs, prices, result.matching, result.total,
           result.certificate, options.memory);
       !check.ok()) {
     throw std::logic_error("internal error: the least-cost pairing's certificate fails: " +

@@ -69,6 +69,42 @@ TEST(QuadDominantGrid, MixesQuadsWithOddFacesAndKeepsTheGridsTopology) {
   }
 }
 
+TEST(ChamferedCube, IsAClosedConsistentCubeOfSquaresBevelsAndCorners) {
+  const PolygonMesh cube = chamfered_cube();
+  const MeshCensus c = census(cube);
+  EXPECT_EQ(c.vertices, 24u);
+  EXPECT_EQ(c.faces, 26u);
+  EXPECT_EQ(c.euler(), 2);
+  EXPECT_EQ(c.boundary_edges, 0u);
+  EXPECT_EQ(c.inconsistent_edges, 0u);
+  EXPECT_TRUE(c.orientable);
+  std::size_t by_arity[5] = {};
+  for (FaceId f = 0; f < cube.face_count(); ++f) ++by_arity[std::min(cube.arity(f), 4u)];
+  EXPECT_EQ(by_arity[3], 8u);
+  EXPECT_EQ(by_arity[4], 18u);
+  // Outward: each face's corners turn counter-clockwise about its centre's direction.
+  for (FaceId f = 0; f < cube.face_count(); ++f) {
+    const auto k = cube.face(f);
+    const auto& a = cube.positions[k[0]];
+    const auto& b = cube.positions[k[1]];
+    const auto& d = cube.positions[k[2]];
+    const std::array<double, 3> u = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const std::array<double, 3> v = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    const std::array<double, 3> n = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2],
+                                     u[0] * v[1] - u[1] * v[0]};
+    EXPECT_GT(n[0] * a[0] + n[1] * a[1] + n[2] * a[2], 0) << "face " << f;
+  }
+  // Split along either diagonal: every quad two triangles on its corners, the corners kept.
+  for (bool first : {true, false}) {
+    const PolygonMesh split = split_quads(cube, first);
+    const MeshCensus t = census(split);
+    EXPECT_EQ(t.faces, 8u + 2 * 18u);
+    EXPECT_EQ(t.non_triangles, 0u);
+    EXPECT_EQ(t.euler(), 2);
+    EXPECT_EQ(t.inconsistent_edges, 0u);
+  }
+}
+
 TEST(FlatShaded, GivesFaceNormalsTextureSeamsAndMaterials) {
   const PolygonMesh mesh =
       flat_shaded(random_closed_surface(0, 20, 20, 3), {.materials = 3, .seed = 5});

@@ -1,8 +1,8 @@
 // The quads objective (the default) against a brute force: on small meshes of every class, no
 // matching of any size has a lower total of quad costs plus the price of the triangles left. The
 // brute force finds the pairable pairs and their costs on its own (edges of exactly two triangles
-// with four distinct vertices, quad_of's corners, quad_corner_deviation) and enumerates every
-// matching.
+// with four distinct vertices, quad_of's corners, quad_corner_deviation), prices each triangle from
+// them by the rule triangle_prices.hpp states, and enumerates every matching.
 
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -20,6 +20,7 @@
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
 #include "petersen/quadrangulate/quadrangulate.hpp"
+#include "petersen/quadrangulate/triangle_prices.hpp"
 #include "petersen/testing/arbitrary.hpp"
 #include "petersen/testing/mesh_classes.hpp"
 #include "result_check.hpp"
@@ -62,9 +63,29 @@ std::vector<Pair> pairable_pairs(const PolygonMesh& mesh) {
   return pairs;
 }
 
-// The least total over every matching of `pairs`, each triangle left costing `price`: a dynamic
-// program over the set of triangles already decided (the lowest undecided one is left or paired
-// with an undecided neighbour), 2^t states at most.
+// What leaving each triangle (by its index among the triangles) costs, from its partners alone:
+// `price`, or kOwnTrianglePriceShare of it where every partner u would pay at least
+// kOwnTriangleRegretShare of it over u's own cheapest pair.
+std::vector<Cost> prices_of(const std::vector<std::vector<std::pair<int, Cost>>>& partners,
+                            Cost price) {
+  std::vector<Cost> prices(partners.size(), price);
+  for (std::size_t t = 0; t < partners.size(); ++t) {
+    if (partners[t].empty()) continue;
+    bool regrets = true;
+    for (const auto& [u, cost] : partners[t]) {
+      Cost cheapest = cost;
+      for (const auto& [w, other] : partners[u]) cheapest = std::min(cheapest, other);
+      regrets = regrets && static_cast<double>(cost - cheapest) >=
+                               kOwnTriangleRegretShare * static_cast<double>(price);
+    }
+    if (regrets) prices[t] = std::llround(kOwnTrianglePriceShare * static_cast<double>(price));
+  }
+  return prices;
+}
+
+// The least total over every matching of `pairs`, each triangle left costing its price
+// (prices_of): a dynamic program over the set of triangles already decided (the lowest undecided
+// one is left or paired with an undecided neighbour), 2^t states at most.
 Cost brute_force_optimum(const PolygonMesh& mesh, const std::vector<Pair>& pairs, Cost price) {
   std::vector<int> index_of(mesh.face_count(), -1);
   int triangles = 0;
@@ -75,13 +96,14 @@ Cost brute_force_optimum(const PolygonMesh& mesh, const std::vector<Pair>& pairs
     partners[index_of[pair.a]].push_back({index_of[pair.b], pair.cost});
     partners[index_of[pair.b]].push_back({index_of[pair.a], pair.cost});
   }
+  const std::vector<Cost> prices = prices_of(partners, price);
   const std::uint32_t all = (1u << triangles) - 1;
   std::map<std::uint32_t, Cost> memo;
   std::function<Cost(std::uint32_t)> best = [&](std::uint32_t decided) -> Cost {
     if (decided == all) return 0;
     if (const auto it = memo.find(decided); it != memo.end()) return it->second;
     const int t = std::countr_one(decided);
-    Cost least = price + best(decided | (1u << t));
+    Cost least = prices[t] + best(decided | (1u << t));
     for (const auto& [u, cost] : partners[t]) {
       if (decided & (1u << u)) continue;
       least = std::min(least, cost + best(decided | (1u << t) | (1u << u)));

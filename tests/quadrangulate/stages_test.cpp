@@ -18,6 +18,7 @@
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/matching/min_cost_matching.hpp"
+#include "petersen/quadrangulate/triangle_prices.hpp"
 #include "petersen/testing/mesh_classes.hpp"
 #include "result_check.hpp"
 
@@ -95,16 +96,18 @@ RC_GTEST_PROP(PairTrianglesStage, PairsNeighboursAtTheTotalItCertifies, ()) {
     costed.emplace_back(std::min(a, b), std::max(a, b), scaled[e]);
   }
   const NodeId nodes = pairable.graph.node_count;
+  const std::pmr::vector<Cost> prices =
+      triangle_prices(nodes, pairable.graph.edge_ends, scaled,
+                      std::llround(options.triangle_cost * kDefaultCostScale));
   const TrianglePairing pairing =
       pair_triangles(pairable.graph, mesh, nullptr, pairable.costs, options, stats);
   RC_ASSERT(stats.optimality_certified);
   RC_ASSERT(pairing.partner.size() == nodes);
-  const Cost price = std::llround(options.triangle_cost * kDefaultCostScale);
   Cost total = 0;
   for (NodeId v = 0; v < nodes; ++v) {
     const NodeId w = pairing.partner[v];
     if (w == kNoNode) {
-      total += price;
+      total += prices[v];
       continue;
     }
     RC_ASSERT(pairing.partner[w] == v);

@@ -50,4 +50,15 @@ struct FlatShading {
 };
 PolygonMesh flat_shaded(PolygonMesh mesh, const FlatShading& spec = {});
 
+/// A hard-surface model: the cube [-1, 1]^3 with every edge chamfered, the 24 points with one
+/// coordinate ±1 and the others ±0.6: 6 squares, 12 bevel rectangles and 8 corner triangles,
+/// each counter-clockwise seen from outside. Closed, V = 24, F = 26, χ = 2. A model's own
+/// triangles among quads: pairing one breaks a bevel. O(1).
+PolygonMesh chamfered_cube();
+
+/// The mesh as an exporter triangulates it: each quad cut along one diagonal, from its first
+/// corner (`first_diagonal`) or from its second; every other face kept. Attributes are dropped.
+/// O(corners).
+PolygonMesh split_quads(const PolygonMesh& mesh, bool first_diagonal);
+
 }  // namespace petersen

@@ -88,7 +88,11 @@ struct BandFace {
 /// positions, its sides' states and distance (as BandFace's), its partner after the part step,
 /// and, for Objective::quads, the part's dual at its two nodes of the doubled graph (v and its
 /// copy v', see min_cost_matching), each with the values of the odd sets holding the node: an edge
-/// across a cut from here has reduced cost 2·cost − dual[k] − the other end's dual[k] in copy k.
+/// across a cut from here has reduced cost 2·cost − dual[k] − the other end's dual[k] in copy k;
+/// its price for staying unpaired in the part's pairing (triangle_prices over the part's graph,
+/// which near a cut sees one side only) and the left side of its stay edge v–v''s constraint in
+/// the part's certificate (at most 4·price): pair_seams prices the faces beside a cut from both
+/// sides and lowers the duals where that price is less.
 struct SeamFace {
   FaceId face = kNoFace;
   std::array<VertexId, 3> corners{};
@@ -97,6 +101,8 @@ struct SeamFace {
   std::uint32_t distance = 0;
   FaceId partner = kNoFace;
   std::array<std::int64_t, 2> dual{};
+  Cost price = 0;
+  std::int64_t stay_dual = 0;
 };
 
 /// The costs of quadrangulate's cost objectives, for the parts and the seams alike.
@@ -240,9 +246,9 @@ struct SeamInput {
 struct SeamResult {
   /// Each seam face's partner after the seam step (same order as SeamInput::faces).
   std::vector<FaceId> partner;
-  /// The seam graph's total after the step minus before it, in the solver's units: added to the
-  /// parts' objective_units, the whole pairing's total. Never positive for Objective::quads (the
-  /// parts' pairs in the seam graph are one of its matchings).
+  /// The seam graph's total after the step (at the whole mesh's prices) minus before it (at the
+  /// parts' prices, as their objective_units count it), in the solver's units: added to the
+  /// parts' objective_units, the whole pairing's total.
   Cost objective_change = 0;
   /// Objective::quads: what stitching the parts' duals across the cuts lost, in the certificate's
   /// units (twice the doubled graph's costs): Σ parts' objective_units − dual_lowering / 4 is a
@@ -261,11 +267,14 @@ struct SeamResult {
 /// pairable sides inside a part and the cut adjacencies as edges, where the options allow them
 /// (the sharp angle, the corner threshold), each costing its quad as quadrangulate measures it
 /// (pairable_edge_quality, from the lower face). Its matching is solved again from scratch:
-/// Objective::quads by min_cost_matching at the triangle price, quality by
-/// min_cost_maximum_matching; each certificate is checked. The parts' pairs there are one of its
-/// matchings, so quads' total never rises and quality's pairs never fall.
-/// For Objective::quads it also stitches the parts' duals: every cut adjacency whose reduced cost
-/// (SeamFace::dual) is negative in a copy lowers its ends' node duals by that much, which keeps
+/// Objective::quads by min_cost_matching at the whole mesh's prices (triangle_prices: a face
+/// within one step of an open side priced again over the seam faces, whose candidate edges hold
+/// its two rings; the others at their part's price), quality by min_cost_maximum_matching; each
+/// certificate is checked. The parts' pairs there are one of its matchings, so quads' total never
+/// rises above theirs at the whole mesh's prices, and quality's pairs never fall.
+/// For Objective::quads it also stitches the parts' duals: every stay edge whose whole-mesh
+/// price leaves it violated (SeamFace::stay_dual), then every cut adjacency whose reduced cost
+/// (SeamFace::dual) is negative in a copy, lowers a node dual by the violation left, which keeps
 /// every other constraint of the whole mesh's doubled graph (a node's dual is free, lowering it
 /// only raises the reduced costs at it), so the stitched duals are feasible for the whole mesh.
 /// Throws std::invalid_argument naming a face given twice or an adjacency whose face is no seam
