@@ -21,12 +21,23 @@ namespace {
 
 constexpr std::uint32_t kAbsent = 0xFFFFFFFFu;
 
-// Seam face indices by face id. Throws std::invalid_argument for a face given twice.
+// Seam face indices by face id. Throws std::invalid_argument for a face given twice, and for
+// a price past kMaxCost or a dual past 2^61 in magnitude (the sums of two duals and a doubled
+// cost, or a dual and four prices, stay inside 64 bits).
 struct SeamIndex {
   std::pmr::vector<std::uint32_t> by_face;
   std::span<const SeamFace> faces;
 
   explicit SeamIndex(std::span<const SeamFace> seam) : faces(seam) {
+    constexpr std::int64_t kMaxDual = std::int64_t{1} << 61;
+    auto within = [](std::int64_t x, std::int64_t bound) { return x >= -bound && x <= bound; };
+    for (const SeamFace& f : faces) {
+      if (!within(f.price, kMaxCost) || !within(f.dual[0], kMaxDual) ||
+          !within(f.dual[1], kMaxDual) || !within(f.stay_dual, kMaxDual)) {
+        throw std::invalid_argument("pair_seams: face " + std::to_string(f.face) +
+                                    " has a price or dual out of range");
+      }
+    }
     by_face.resize(faces.size());
     for (std::uint32_t i = 0; i < faces.size(); ++i) by_face[i] = i;
     std::sort(by_face.begin(), by_face.end(),

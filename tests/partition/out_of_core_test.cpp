@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 
@@ -290,6 +291,38 @@ TEST(OutOfCore, SeamBatchesGiveTheAnswerOfOneBatch) {
     EXPECT_EQ(whole.objective_change, each.objective_change) << to_string(objective);
     EXPECT_EQ(whole.partner, each.partner) << to_string(objective);
     EXPECT_EQ(whole.pairs_across, each.pairs_across) << to_string(objective);
+  }
+}
+
+// What the seam step is handed comes from outside (a cluster's tasks, Python): a price or a dual
+// that would overflow its sums is refused naming the face, and a part whose band is too thin
+// for the seams to price its faces from both sides is refused before any work.
+TEST(OutOfCore, SeamStepRefusesValuesItCannotSum) {
+  const PolygonMesh mesh = jittered_grid({.nx = 12, .ny = 12, .jitter = 0.2});
+  const std::vector<VertexId> corners(mesh.corners.begin(), mesh.corners.end());
+  std::vector<std::array<double, 3>> positions;
+  for (const VertexId c : corners) positions.push_back(mesh.positions[c]);
+  const PartTriangles part{.corners = std::span(corners).first(150),
+                           .corner_positions = std::span(positions).first(150)};
+  EXPECT_THROW(pair_part(part, {.costs = {.objective = Objective::quads}, .band_radius = 2}),
+               std::invalid_argument);
+  const PartPairing p = pair_part(part, {.costs = {.objective = Objective::quads}});
+  ASSERT_FALSE(p.seam.empty());
+  const PartCosts costs{.objective = Objective::quads};
+  EXPECT_NO_THROW(pair_seams({p.seam, {}}, costs));
+  for (int field = 0; field < 3; ++field) {
+    std::vector<SeamFace> seam = p.seam;
+    if (field == 0) seam.back().price = kMaxCost + 1;
+    if (field == 1) seam.back().dual[1] = std::numeric_limits<std::int64_t>::min();
+    if (field == 2) seam.back().stay_dual = std::numeric_limits<std::int64_t>::max();
+    try {
+      pair_seams({seam, {}}, costs);
+      ADD_FAILURE() << "field " << field << " accepted";
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("face " + std::to_string(seam.back().face)),
+                std::string::npos)
+          << e.what();
+    }
   }
 }
 
