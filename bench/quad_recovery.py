@@ -12,7 +12,7 @@ by petersen.read_mesh) becomes quad models the way users meet them:
 - "cc1+tri": the level-1 model with 1 % of its edges collapsed (each collapse turns the two quads
   beside the edge into triangles of the model's own, as a quad-dominant artist mesh has them).
 Each model is triangulated as exporters do, one diagonal per quad: a random one ("random") and the
-shorter one ("short"). Every operator then runs on a fresh copy with all faces selected:
+shorter one ("short"); a larger polygon is fanned. Every operator then runs on a fresh copy with all faces selected:
 Blender's mesh.tris_convert_to_quads with its defaults (40°, 40°) and with both limits off (180°),
 and petersen's mesh.petersen_tris_to_quads with its defaults and with objective PAIRS and QUALITY.
 A row gives the share of the model's quads that come back (the same four vertices as one face),
@@ -146,12 +146,13 @@ def collapse_edges(V, faces, share, rng):
 
 
 def triangulate(V, faces, rule, rng):
-    """Every quad cut by one diagonal (rule "random" or "short"); other faces kept. Returns the
-    triangle mesh's faces and the set of the quads' vertex sets."""
+    """Every quad cut by one diagonal (rule "random" or "short"), every larger polygon fanned from
+    its first corner, as exporters do; triangles kept. Returns the triangle mesh's faces and the
+    set of the quads' vertex sets."""
     out, quads = [], set()
     for face in faces:
         if len(face) != 4:
-            out.append(list(face))
+            out += [[int(face[0]), int(face[k]), int(face[k + 1])] for k in range(1, len(face) - 1)]
             continue
         a, b, c, d = (int(v) for v in face)
         quads.add(frozenset((a, b, c, d)))

@@ -17,6 +17,7 @@
 #include "out_of_core_command.hpp"
 #include "petersen/dualize/quad_quality.hpp"
 #include "petersen/generators/knot_tube.hpp"
+#include "petersen/generators/mesh_class_generators.hpp"
 #include "petersen/generators/polygon_generators.hpp"
 #include "petersen/generators/surface_generators.hpp"
 #include "petersen/graph/memory.hpp"
@@ -339,7 +340,8 @@ PolygonMesh randomized_plate(const GenerateArgs& args) {
 // radius nx/ny, so it needs nx >= 3 ny for its hole; the trefoil's quads are near square at
 // 8.5 segments per side.
 std::array<std::uint32_t, 2> grid_size(const GenerateArgs& args) {
-  const std::array<std::uint32_t, 2> defaults = args.kind == "jittered-torus" ? std::array{48u, 16u}
+  const bool torus = args.kind == "jittered-torus" || args.kind == "quad-dominant-torus";
+  const std::array<std::uint32_t, 2> defaults = torus                    ? std::array{48u, 16u}
                                                 : args.kind == "trefoil" ? std::array{136u, 16u}
                                                                          : std::array{16u, 16u};
   return {args.nx.value_or(defaults[0]), args.ny.value_or(defaults[1])};
@@ -350,7 +352,7 @@ void check_grid_size(const GenerateArgs& args) {
   const auto [nx, ny] = grid_size(args);
   const std::string size = std::to_string(nx) + " x " + std::to_string(ny);
   const bool grid = args.kind == "klein" || args.kind == "trefoil" || args.kind == "open-grid" ||
-                    args.kind.starts_with("jittered-");
+                    args.kind.starts_with("jittered-") || args.kind.starts_with("quad-dominant");
   if (!grid && (args.nx || args.ny)) {
     throw CLI::ValidationError("--nx, --ny", args.kind +
                                                  " has no grid to size: --nx and --ny "
@@ -361,13 +363,15 @@ void check_grid_size(const GenerateArgs& args) {
     throw CLI::ValidationError("--nx, --ny",
                                args.kind + " needs --nx >= 3 and --ny >= 3, not " + size);
   }
-  if (args.kind == "jittered-torus" && (ny < 3 || nx < 3 * std::uint64_t{ny})) {
+  if (args.kind.ends_with("-torus") && (ny < 3 || nx < 3 * std::uint64_t{ny})) {
     throw CLI::ValidationError("--nx, --ny",
-                               "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny (the ring "
-                               "round its hole), not " +
+                               args.kind +
+                                   " needs --ny >= 3 and --nx >= 3 x --ny (the ring round its "
+                                   "hole), not " +
                                    size);
   }
-  if ((args.kind == "open-grid" || args.kind == "jittered-grid") && (nx == 0 || ny == 0)) {
+  if ((args.kind == "open-grid" || args.kind == "jittered-grid" || args.kind == "quad-dominant") &&
+      (nx == 0 || ny == 0)) {
     throw CLI::ValidationError("--nx, --ny", args.kind + " needs --nx >= 1 and --ny >= 1");
   }
   if (6 * std::uint64_t{nx} * ny > 0xFFFFFFFFull) {
@@ -391,6 +395,19 @@ PolygonMesh generated_surface(const GenerateArgs& args) {
                           .torus = args.kind == "jittered-torus",
                           .seed = args.seed});
   }
+  if (args.kind == "quad-dominant" || args.kind == "quad-dominant-torus") {
+    // One pentagon and one hexagon per 100 squares, at least one each.
+    const std::uint32_t odd =
+        std::max<std::uint32_t>(1, std::uint32_t(std::uint64_t{nx} * ny / 100));
+    return quad_dominant_grid({.nx = nx,
+                               .ny = ny,
+                               .jitter = args.jitter,
+                               .torus = args.kind == "quad-dominant-torus",
+                               .pentagons = odd,
+                               .hexagons = odd,
+                               .seed = args.seed});
+  }
+  if (args.kind == "chamfered-cube") return chamfered_cube();
   return randomized_plate(args);
 }
 
@@ -410,8 +427,8 @@ int generate(const GenerateArgs& args) {
   check_grid_size(args);
   const PolygonMesh mesh = generated_mesh(args);
   write_mesh(args.output, mesh);
-  std::printf("%zu triangles, %zu vertices written to %s\n", mesh.face_count(),
-              mesh.positions.size(), args.output.c_str());
+  std::printf("%zu faces, %zu vertices written to %s\n", mesh.face_count(), mesh.positions.size(),
+              args.output.c_str());
   return 0;
 }
 
@@ -570,10 +587,10 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& render_args) {
 CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
   CLI::App* gen_cmd = app.add_subcommand(
       "generate",
-      "Write a test triangulation: a voxel plate with holes (genus holes-x*holes-y) or dents "
-      "(genus 0), a Klein bottle, a projective plane, an open grid or a jittered grid or torus; "
-      "optionally with holes, "
-      "fins, pinched vertices and flipped faces");
+      "Write a test mesh: a voxel plate with holes (genus holes-x*holes-y) or dents (genus 0), a "
+      "Klein bottle, a projective plane, an open grid or a jittered grid or torus, or a quad "
+      "model (a quad-dominant grid or torus, a chamfered cube); optionally with holes, fins, "
+      "pinched vertices and flipped faces");
   gen_cmd->add_option("OUT", gen_args.output, "mesh to write (.off, .obj, .ply)")
       ->required()
       ->check(in_existing_folder());
@@ -605,10 +622,14 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
                    "made of quads each cut along one diagonal, as exporters do), klein (Klein "
                    "bottle), projective (projective plane), open-grid, jittered-grid or "
                    "jittered-torus (near-square quads cut along random diagonals), "
-                   "streamed-plate (a closed plate of --triangles, written as it is made: any "
-                   "size, binary PLY)")
+                   "quad-dominant or quad-dominant-torus (a quad model: near-square quads, about "
+                   "3 squares in 16 left as two triangles, one pentagon and one hexagon per 100 "
+                   "squares), chamfered-cube (a hard-surface model: 18 quads, 8 corner "
+                   "triangles), streamed-plate (a closed plate of --triangles, written as it is "
+                   "made: any size, binary PLY)")
       ->transform(one_of({"plate", "trefoil", "klein", "projective", "open-grid", "jittered-grid",
-                          "jittered-torus", "streamed-plate"}))
+                          "jittered-torus", "quad-dominant", "quad-dominant-torus",
+                          "chamfered-cube", "streamed-plate"}))
       ->capture_default_str();
   gen_cmd
       ->add_option("--triangles", gen_args.triangles, "about this many triangles (streamed-plate)")
@@ -620,9 +641,10 @@ CLI::App* add_generate_command(CLI::App& app, GenerateArgs& gen_args) {
                       "rows of klein and the grids (default 16, at least 3 for klein and "
                       "jittered-torus), sides round the trefoil's tube (default 16)");
   gen_cmd
-      ->add_option("--jitter", gen_args.jitter,
-                   "jittered grids: how far a vertex may move, a fraction of the spacing, "
-                   "below 0.25")
+      ->add_option(
+          "--jitter", gen_args.jitter,
+          "jittered and quad-dominant grids: how far a vertex may move, a fraction of the spacing, "
+          "below 0.25")
       ->check(finite_in(0, 0.2499))
       ->capture_default_str();
   gen_cmd->add_option("--holes", gen_args.holes, "random patches of faces to remove");

@@ -295,7 +295,8 @@ refuses "an edge-flow weight without --objective quads" "--flow-weight: weighs t
 refuses "--part-triangles alone" "give --memory-limit" \
   "$petersen" quad "$example" "$work/x.obj" --part-triangles 1000
 # Every generator kind works with its defaults.
-for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus; do
+for kind in plate trefoil klein projective open-grid jittered-grid jittered-torus quad-dominant \
+  quad-dominant-torus chamfered-cube; do
   check "generate --kind $kind by default" "$petersen" generate "$work/k-$kind.obj" --kind "$kind"
 done
 check "generate a trefoil PLY" "$petersen" generate "$work/k-trefoil.ply" --kind trefoil
@@ -303,6 +304,10 @@ refuses "--nx for a kind without a grid" "plate has no grid to size" \
   "$petersen" generate "$work/x.obj" --nx 5
 refuses "a torus too thin" "jittered-torus needs --ny >= 3 and --nx >= 3 x --ny" \
   "$petersen" generate "$work/x.obj" --kind jittered-torus --nx 20 --ny 10
+# A quad model converts back: the chamfered cube's 18 quads, its 8 corner triangles left.
+check "quad a chamfered cube" "$petersen" quad "$work/k-chamfered-cube.obj" "$work/cq.obj"
+"$petersen" info "$work/cq.obj" | grep -q "^faces by corners: 3: 8 4: 18$" || {
+  failed=$((failed + 1)); echo "FAILED: the chamfered cube's faces"; "$petersen" info "$work/cq.obj"; }
 # The summary reads as a success: no dangling colon, a written line for each file.
 check "quad --render's written line" "$petersen" quad "$work/k-trefoil.obj" "$work/t.obj" \
   --render "$work/t.png"
