@@ -64,8 +64,9 @@ std::vector<Pair> pairable_pairs(const PolygonMesh& mesh) {
 }
 
 // What leaving each triangle (by its index among the triangles) costs, from its partners alone:
-// `price`, or kOwnTrianglePriceShare of it where every partner u would pay at least
-// kOwnTriangleRegretShare of it over u's own cheapest pair.
+// `price`, or kOwnTrianglePriceShare of it where every partner u has a pair of at most
+// kOwnTriangleNeighbourShare of it and would pay at least kOwnTriangleRegretShare of it over u's
+// own cheapest pair.
 std::vector<Cost> prices_of(const std::vector<std::vector<std::pair<int, Cost>>>& partners,
                             Cost price) {
   std::vector<Cost> prices(partners.size(), price);
@@ -75,8 +76,11 @@ std::vector<Cost> prices_of(const std::vector<std::vector<std::pair<int, Cost>>>
     for (const auto& [u, cost] : partners[t]) {
       Cost cheapest = cost;
       for (const auto& [w, other] : partners[u]) cheapest = std::min(cheapest, other);
-      regrets = regrets && static_cast<double>(cost - cheapest) >=
-                               kOwnTriangleRegretShare * static_cast<double>(price);
+      regrets =
+          regrets &&
+          static_cast<double>(cost - cheapest) >=
+              kOwnTriangleRegretShare * static_cast<double>(price) &&
+          static_cast<double>(cheapest) <= kOwnTriangleNeighbourShare * static_cast<double>(price);
     }
     if (regrets) prices[t] = std::llround(kOwnTrianglePriceShare * static_cast<double>(price));
   }

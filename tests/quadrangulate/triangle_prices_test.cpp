@@ -16,9 +16,9 @@
 namespace petersen {
 namespace {
 
-// A path a–b–c–d with costs 70, 0, 70: b and c are each other's best pair; a and d can only
-// take one of them from it, 70 over its best; a price of 90 is lowered for a and d (70 >= 60),
-// not for b and c (regret 0).
+// A path a–b–c–d with costs 70, 0, 70: b and c are each other's best pair, a good quad; a and d
+// can only take one of them from it, 70 over its best; a price of 90 is lowered for a and d
+// (70 >= 60), not for b and c (regret 0).
 TEST(TrianglePrices, LowersThePriceOfANodeWhoseEveryPairCostsANeighbourItsBest) {
   const std::vector<NodeId> ends = {0, 1, 1, 2, 2, 3};
   const std::vector<Cost> costs = {70, 0, 70};
@@ -31,6 +31,12 @@ TEST(TrianglePrices, LowersThePriceOfANodeWhoseEveryPairCostsANeighbourItsBest) 
   const std::vector<Cost> close = {59, 0, 59};
   const std::pmr::vector<Cost> kept = triangle_prices(5, ends, close, 90);
   EXPECT_TRUE(std::all_of(kept.begin(), kept.end(), [](Cost p) { return p == 90; }));
+  // b and c in a mediocre quad (31 > 90 / 3): a and d protect no good quad and keep the price.
+  const std::vector<Cost> mediocre = {101, 31, 101};
+  const std::pmr::vector<Cost> held = triangle_prices(4, ends, mediocre, 90);
+  EXPECT_TRUE(std::all_of(held.begin(), held.end(), [](Cost p) { return p == 90; }));
+  const std::vector<Cost> good = {100, 30, 100};
+  EXPECT_EQ(triangle_prices(4, ends, good, 90)[0], 54);
 }
 
 TEST(TrianglePrices, AChamferedCubeComesBackWithEveryQuadItsCornersLeft) {
