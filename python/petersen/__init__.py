@@ -209,9 +209,9 @@ def quadrangulate(
     costs its shape (``quad_quality``) plus ``flow_weight`` times its edge flow (how closely the
     edge it removes runs along a smooth cross field; 0, the default, weighs shape alone), and each
     triangle left unpaired ``triangle_cost`` degrees (90 when not given; 0.6 of it for a
-    triangle each of whose pairs would cost its neighbour 2/3 of it over that neighbour's best, a
-    model's own, as a bevel's corner), so a triangle stays where pairing it would break better
-    quads; both weights are read by ``objective="quads"``
+    triangle beside good quads each of whose pairs would cost its neighbour 2/3 of it over that
+    neighbour's best, a model's own, as a bevel's corner), so a triangle stays where pairing it
+    would break better quads; both weights are read by ``objective="quads"``
     only, and ``triangle_cost`` not with ``all_quad`` (which pairs the cheapest maximum), so
     giving one where it would not be read raises ``TypeError``. ``objective="pairs"`` gives a
     certified maximum pairing instead: closed components paired perfectly by ``algorithm`` (auto,
