@@ -12,9 +12,10 @@ by petersen.read_mesh) becomes quad models the way users meet them:
 - "cc1+tri": the level-1 model with 1 % of its edges collapsed (each collapse turns the two quads
   beside the edge into triangles of the model's own, as a quad-dominant artist mesh has them).
 Each model is triangulated as exporters do, one diagonal per quad: a random one ("random") and the
-shorter one ("short"); a larger polygon is fanned. Every operator then runs on a fresh copy with all faces selected:
-Blender's mesh.tris_convert_to_quads with its defaults (40°, 40°) and with both limits off (180°),
-and petersen's mesh.petersen_tris_to_quads with its defaults and with objective PAIRS and QUALITY.
+shorter one ("short"); a larger polygon is fanned. Every operator then runs on a fresh copy with
+all faces selected: Blender's mesh.tris_convert_to_quads with its defaults (40°, 40°) and with
+both limits off (180°), and petersen's mesh.petersen_tris_to_quads with its defaults and with
+objective PAIRS and QUALITY.
 A row gives the share of the model's quads that come back (the same four vertices as one face),
 its triangles left, and the operator's wall time.
 

@@ -190,9 +190,8 @@ def _seams(cut: Dict[str, Any], seams: Sequence[Dict[str, np.ndarray]],
     seam = {k: np.concatenate([s[k] for s in seams]) for k in seams[0]}
     units = sum(f["objective_units"] for f in cut["figures"])
     r = _petersen.pair_seams(seam["faces"], seam["corners"], seam["positions"], seam["sides"],
-                             seam["distance"], seam["partner"], seam["dual"], seam["price"], seam["stay_dual"],
-                             cut["adjacencies"],
-                             units, **costs)
+                             seam["distance"], seam["partner"], seam["dual"], seam["price"],
+                             seam["stay_dual"], cut["adjacencies"], units, **costs)
     figures = {k: v for k, v in r.items() if k != "partner"}
     return _checked_partners(seam["faces"], seam["corners"], r["partner"], figures, "seam step")
 
