@@ -123,6 +123,8 @@ struct PartPairingOptions {
   Augment augment = Augment::local;
   /// The band holds the triangles at most this many steps from the open edges: repair_cuts can
   /// grow its band graph up to here. O(band_radius · open edges) band faces on a regular surface.
+  /// Objective::quads needs 3 or more: pair_seams prices the faces beside a cut from their two
+  /// rings, which must lie in the bands (pair_part throws std::invalid_argument otherwise).
   std::uint32_t band_radius = 16;
   /// Labels the searches that move unpaired triangles to the border may give in all, before the
   /// rest give up (their triangles then stay where they are, counted in PartPairing::stranded).
