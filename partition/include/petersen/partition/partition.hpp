@@ -167,7 +167,8 @@ struct PartPairing {
 /// Pairs the triangles of one part (see the top of this file). Throws std::invalid_argument when
 /// carried_partner does not have `carried` entries or names a partner that does not name it back
 /// (both inside the part), and with a cost objective when triangles are carried or the corner
-/// positions are missing (and for a sharp angle without them). Throws MeshError naming the
+/// positions are missing (and for a sharp angle without them), and with Objective::quads for a
+/// band radius under 3. Throws MeshError naming the
 /// global face for a corner equal to 2^32 - 1 or a part past 2^32 - 1 faces; throws
 /// std::logic_error if the pairing fails its verifier. O(m log m) for m triangles (the vertex
 /// renumbering), plus the pairable graph and the matching (maximum_matching, augment.hpp; with a
