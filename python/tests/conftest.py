@@ -3,9 +3,12 @@
 import os
 import pathlib
 import shutil
+import subprocess
 
 import numpy as np
 import pytest
+
+import petersen
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 
@@ -62,38 +65,22 @@ def open_grid(nx, ny):
     return V, F
 
 
-def chamfered_cubes(count):
-    """`count` cubes side by side, each with every edge chamfered (6 squares, 12 bevels, 8 corner
-    triangles) and exported triangulated, each quad cut along the diagonal from its first corner
-    (even cubes) or its second (odd): a hard-surface model whose own triangles are its corners."""
-    points = []
-    for axis in range(3):
-        for signs in np.ndindex(2, 2, 2):
-            if signs[axis]:
-                continue
-            for sign in (-1.0, 1.0):
-                p = [0.6 if s else -0.6 for s in signs]
-                p[axis] = sign
-                points.append(p)
-    P = np.array(points)
-    faces = []
-    for n in np.ndindex(3, 3, 3):
-        n = np.array(n) - 1.0
-        if not n.any():
-            continue
-        along = P @ n
-        face = np.flatnonzero(along > along.max() - 1e-9)
-        centre = P[face].mean(0)
-        u = P[face[0]] - centre
-        w = np.cross(n, u)
-        d = P[face] - centre
-        faces.append(face[np.argsort(np.arctan2(d @ w, d @ u))])
+def chamfered_cubes(cli, folder, count):
+    """`count` of the generators' chamfered cubes (`petersen generate --kind chamfered-cube`: 6
+    squares, 12 bevels, 8 corner triangles) side by side, exported triangulated: each quad cut
+    along the diagonal from its first corner (even cubes) or its second (odd). A hard-surface
+    model whose own triangles are its corners."""
+    path = pathlib.Path(folder) / "chamfered-cube.obj"
+    subprocess.run([cli, "generate", str(path), "--kind", "chamfered-cube"], check=True,
+                   capture_output=True)
+    cube = petersen.read_mesh(str(path))
+    P, faces = np.asarray(cube.V, np.float64), [np.asarray(f) for f in cube.F]
     V, F = [], []
     for i in range(count):
         V.append(P + [3.0 * i, 0, 0])
         k = i % 2
         for c in faces:
-            c = c + 24 * i
+            c = c + len(P) * i
             if len(c) == 3:
                 F.append(c)
             else:

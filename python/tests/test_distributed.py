@@ -439,11 +439,11 @@ def test_all_quad_without_parts_of_the_out_of_core_sizes_is_all_quads(jittered_o
     assert stats["all_quad_parts"] == 3 and stats["all_quad_parts_certified"] is True
 
 
-def test_own_triangles_beside_the_cuts_are_priced_as_in_memory(client, tmp_path):
+def test_own_triangles_beside_the_cuts_are_priced_as_in_memory(client, cli, tmp_path):
     # A model's own triangles (the cubes' corners) may stay for less than the price; a part sees
     # the pairs across its cuts only in the seam step, which prices them again: every cube comes
     # back whole with its corners left, at the in-memory optimum.
-    V, F = chamfered_cubes(12)
+    V, F = chamfered_cubes(cli, tmp_path, 12)
     path, out = tmp_path / "cubes.ply", tmp_path / "quads.ply"
     petersen.write_mesh(str(path), V, F)
     memory = petersen.quadrangulate(V, F)
