@@ -742,6 +742,10 @@ def quadrangulate(in_path: str, out_path: str, client: Any,
         # Every triangle left is split into quads anyway: the cheapest maximum pairing, as
         # petersen.quadrangulate and `petersen quad --memory-limit` pair with all_quad.
         costs = dict(costs, objective="quality")
+    if costs["objective"] == "quads" and band_radius < 3:
+        # The seams price a face beside a cut from its two rings, which must lie in the bands.
+        raise ValueError(f"petersen.distributed.quadrangulate: objective quads needs band_radius "
+                         f">= 3, not {band_radius}")
     clock = time.perf_counter()
     layout = read_layout(in_path)
     if layout.face_count == 0:

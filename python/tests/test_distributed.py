@@ -455,3 +455,10 @@ def test_own_triangles_beside_the_cuts_are_priced_as_in_memory(client, cli, tmp_
     assert len(triangles) == stats["triangles_left"] == 8 * 12
     assert stats["objective_total"] == pytest.approx(memory.stats["objective_total"], abs=1e-6)
     assert stats["lower_bound"] <= memory.stats["objective_total"] + 1e-6
+
+
+def test_a_band_too_thin_for_the_seams_prices_is_refused_before_any_work(client, tmp_path):
+    with pytest.raises(ValueError, match="band_radius >= 3, not 2"):
+        pd.quadrangulate(str(tmp_path / "absent.ply"), str(tmp_path / "out.ply"), client,
+                         band_radius=2)
+    assert not (tmp_path / "out.ply").exists()
